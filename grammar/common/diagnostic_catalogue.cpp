@@ -1,0 +1,99 @@
+#include "grammar/common/diagnostic_catalogue.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace lmgc::grammar {
+namespace {
+
+using enum Severity;
+
+// Sorted by code. Wording rules: lower-case start, no final period.
+constexpr std::array kCatalogue = {
+    // L1xxx — syntax: what the grammar of a file kind rejects or warns about.
+    DiagnosticKind{"L1001", error, "unknown keyword",
+                   "A card, body, element, node, contactor, law or command keyword is not one that "
+                   "LMGC90 knows for this file and place. Keywords are case-sensitive and are read "
+                   "from fixed columns (columns 2-6 for most cards)."},
+    DiagnosticKind{"L1002", error, "malformed number",
+                   "A numeric field does not hold a Fortran real: an optional sign, digits with at "
+                   "most one decimal point, and an optional exponent written with D, d, E or e (or a "
+                   "bare signed exponent). Blanks inside the field are ignored; an all-blank field "
+                   "reads as zero."},
+    DiagnosticKind{"L1003", error, "number out of range",
+                   "The value does not fit: a real overflows double precision, or an integer does "
+                   "not fit its field or is outside the range the card allows."},
+    DiagnosticKind{"L1004", error, "malformed integer",
+                   "An integer field holds something other than an optional sign and digits."},
+    DiagnosticKind{"L1005", error, "missing end of block",
+                   "A block (a body in BODIES.DAT, a body in DRV_DOF.DAT, DOF.INI or GPV.INI) is not "
+                   "closed by its '$$$$$$' line before the next block or the end of the file."},
+    DiagnosticKind{"L1006", error, "unexpected end of file",
+                   "The file ends in the middle of a card that needs more lines (continuation lines "
+                   "of a polygon, a node with more than three values, a law parameter line, ...)."},
+    DiagnosticKind{"L1007", warning, "tab character in a read field",
+                   "A tab sits inside columns that LMGC90 reads. Fortran's treatment of tabs in "
+                   "fixed-column input depends on the compiler; lmgc reads it as a blank. Replace "
+                   "tabs by spaces."},
+    DiagnosticKind{"L1008", error, "non-ASCII byte",
+                   "LMGC90 files are plain ASCII; a byte above 127 (often a UTF-8 character pasted "
+                   "from a document) is not allowed."},
+    DiagnosticKind{"L1009", error, "empty file",
+                   "The file holds no card at all (only blank or comment lines, or nothing)."},
+    DiagnosticKind{"L1010", warning, "text beyond column 180",
+                   "LMGC90 reads records of 180 characters: what is written past column 180 is "
+                   "silently ignored."},
+    DiagnosticKind{"L1011", error, "value outside its columns",
+                   "A value spills over the fixed columns it must occupy (for instance a real "
+                   "shifted right by one column). LMGC90 reads only the field's columns and would "
+                   "see a different number."},
+    DiagnosticKind{"L1012", error, "missing section",
+                   "A mandatory section or line is absent: '$gravy' in BULK_BEHAV.DAT, '$steps' in "
+                   "DOF.INI, '$nodty' in a body, the title line of a '$seety' block, ..."},
+    DiagnosticKind{"L1013", error, "unexpected line",
+                   "A line appears where the file's structure requires another card (for instance "
+                   "a data line outside any block)."},
+    DiagnosticKind{"L1014", error, "wrong number of items",
+                   "A card has the wrong number of items: an RBDY2 or RBDY3 body with other than one "
+                   "node, a polygon with fewer than three vertices, ..."},
+    DiagnosticKind{"L1015", error, "missing value",
+                   "A value that LMGC90 reads list-directed (polyhedron counts and face indices, "
+                   "evolution pairs, ...) is blank; Fortran stops with a runtime error there."},
+    DiagnosticKind{"L1016", error, "wrong label",
+                   "A label that LMGC90 checks is not the expected one ('elas:', 'ani_:', 'model', "
+                   "'I1', 'localframe', 'n(1)=', ...)."},
+    DiagnosticKind{"L1017", error, "invalid option value",
+                   "A word is not one of the values allowed at this place (an anisotropy, a model "
+                   "option, a driven dof kind, ...)."},
+    DiagnosticKind{"L1018", note, "user's guide spelling accepted",
+                   "The file uses the spelling of LMGC90's 2012 user's guide where LMGC90's source "
+                   "reads another ('$gravity' for '$gravy', ...). lmgc reads both and writes "
+                   "LMGC90's form; LMGC90 itself would reject the guide's form."},
+    DiagnosticKind{"L1019", warning, "text ignored by LMGC90",
+                   "A line sits outside every structure LMGC90 recognises (between two blocks, "
+                   "after the last one): LMGC90 skips it silently. It is kept and echoed."},
+    DiagnosticKind{"L1020", error, "mismatched header",
+                   "The '$steps' header of an initial-state file does not match DOF.INI (step "
+                   "number or time)."},
+    // L9xxx — input/output.
+    DiagnosticKind{"L9001", error, "cannot read file",
+                   "A file that the case needs does not exist or cannot be read."},
+    DiagnosticKind{"L9002", error, "not a case folder",
+                   "The folder given does not exist or has no DATBOX/ sub-folder."},
+    DiagnosticKind{"L9003", error, "cannot write output",
+                   "An output file could not be written (folder not writable, disk full, ...). "
+                   "Existing outputs are left as they were."},
+};
+
+}  // namespace
+
+std::span<const DiagnosticKind> diagnostic_catalogue() { return kCatalogue; }
+
+const DiagnosticKind* find_diagnostic_kind(std::string_view code) {
+  auto it = std::lower_bound(kCatalogue.begin(), kCatalogue.end(), code,
+                             [](const DiagnosticKind& k, std::string_view c) { return k.code < c; });
+  if (it == kCatalogue.end() || it->code != code) return nullptr;
+  return &*it;
+}
+
+}  // namespace lmgc::grammar

@@ -1,0 +1,24 @@
+#pragma once
+// The one table of diagnostic codes. A code is never reused or renumbered; a retired code
+// stays here marked `removed`. Families: L1xxx syntax (grammar), L2xxx references,
+// L3xxx physical sanity, L4xxx run setup (COMMAND.DAT), L9xxx input/output.
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "grammar/common/diagnostic.hpp"
+
+namespace lmgc::grammar {
+
+struct DiagnosticKind {
+  std::string_view code;
+  Severity severity;
+  std::string_view summary;      // one line, used by --explain and docs/diagnostics.md
+  std::string_view explanation;  // longer text for --explain
+  bool removed = false;
+};
+
+std::span<const DiagnosticKind> diagnostic_catalogue();
+const DiagnosticKind* find_diagnostic_kind(std::string_view code);
+
+}  // namespace lmgc::grammar

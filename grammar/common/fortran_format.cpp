@@ -1,0 +1,102 @@
+#include "grammar/common/fortran_format.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace lmgc::grammar {
+
+void append_fortran_d(std::string& out, double value, int width, int digits) {
+  std::string field;
+  if (std::isnan(value) || std::isinf(value)) {
+    field = std::isnan(value) ? "NaN" : (value > 0 ? "Infinity" : "-Infinity");
+  } else {
+    const bool negative = std::signbit(value) && value != 0.0;
+    std::string mantissa(static_cast<std::size_t>(digits), '0');
+    long exponent = 0;
+    if (value != 0.0) {
+      // printf rounds to `digits` significant digits: d.dddddde±x → 0.ddddddd × 10^(x+1).
+      char buffer[64];
+      std::snprintf(buffer, sizeof buffer, "%.*e", digits - 1, std::fabs(value));
+      std::string text(buffer);
+      const std::size_t e = text.find('e');
+      mantissa.clear();
+      for (std::size_t i = 0; i < e; ++i)
+        if (text[i] != '.') mantissa.push_back(text[i]);
+      exponent = std::strtol(text.c_str() + e + 1, nullptr, 10) + 1;
+    }
+    field.push_back(negative ? '-' : ' ');
+    field += "0.";
+    field += mantissa;
+    const long magnitude = std::labs(exponent);
+    char exponent_text[32];
+    if (magnitude <= 99)
+      std::snprintf(exponent_text, sizeof exponent_text, "D%c%02ld", exponent < 0 ? '-' : '+', magnitude);
+    else
+      std::snprintf(exponent_text, sizeof exponent_text, "%c%03ld", exponent < 0 ? '-' : '+', magnitude);
+    field += exponent_text;
+    // A positive value's leading blank is the optional sign position: drop it if too wide.
+    if (static_cast<int>(field.size()) > width && field[0] == ' ') field.erase(0, 1);
+  }
+  if (static_cast<int>(field.size()) > width) {
+    out.append(static_cast<std::size_t>(width), '*');
+    return;
+  }
+  out.append(static_cast<std::size_t>(width) - field.size(), ' ');
+  out += field;
+}
+
+std::string fortran_d(double value, int width, int digits) {
+  std::string out;
+  append_fortran_d(out, value, width, digits);
+  return out;
+}
+
+void append_fortran_es(std::string& out, double value, int width, int digits) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*E", digits, value);
+  std::string field(buffer);
+  // C prints at least two exponent digits, as Fortran does for |e| <= 99.
+  if (static_cast<int>(field.size()) > width) {
+    out.append(static_cast<std::size_t>(width), '*');
+    return;
+  }
+  out.append(static_cast<std::size_t>(width) - field.size(), ' ');
+  out += field;
+}
+
+void append_fortran_i(std::string& out, std::int64_t value, int width) {
+  const std::string text = std::to_string(value);
+  if (static_cast<int>(text.size()) > width) {
+    out.append(static_cast<std::size_t>(width), '*');
+    return;
+  }
+  out.append(static_cast<std::size_t>(width) - text.size(), ' ');
+  out += text;
+}
+
+void append_fortran_a(std::string& out, std::string_view text, int width) {
+  const std::size_t w = static_cast<std::size_t>(width);
+  if (text.size() >= w) {
+    out.append(text.substr(0, w));
+  } else {
+    out.append(text);
+    out.append(w - text.size(), ' ');
+  }
+}
+
+std::string_view trim_right(std::string_view text) {
+  std::size_t end = text.size();
+  while (end > 0 && (text[end - 1] == ' ' || text[end - 1] == '\t')) --end;
+  return text.substr(0, end);
+}
+
+std::string_view trim(std::string_view text) {
+  text = trim_right(text);
+  std::size_t begin = 0;
+  while (begin < text.size() && (text[begin] == ' ' || text[begin] == '\t')) ++begin;
+  return text.substr(begin);
+}
+
+}  // namespace lmgc::grammar

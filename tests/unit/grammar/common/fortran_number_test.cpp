@@ -1,0 +1,94 @@
+#include "grammar/common/fortran_number.hpp"
+
+#include <gtest/gtest.h>
+
+#include "grammar/common/fortran_format.hpp"
+
+namespace lmgc::grammar {
+namespace {
+
+TEST(FortranReal, ReadsDExponent) {
+  auto r = read_fortran_real(" 0.1600000D-02", 7);
+  EXPECT_EQ(r.error, NumberError::none);
+  EXPECT_DOUBLE_EQ(r.value, 0.0016);
+}
+
+TEST(FortranReal, ReadsLowerCaseAndEExponents) {
+  EXPECT_DOUBLE_EQ(read_fortran_real("1.6000000E-03", 7).value, 0.0016);
+  EXPECT_DOUBLE_EQ(read_fortran_real("0.0000000e+00", 7).value, 0.0);
+  EXPECT_DOUBLE_EQ(read_fortran_real("3.0788939d-01", 7).value, 0.30788939);
+}
+
+TEST(FortranReal, ReadsBareSignedExponent) { EXPECT_DOUBLE_EQ(read_fortran_real("1.0+05", 7).value, 1.0e5); }
+
+TEST(FortranReal, BlankFieldIsZeroAndFlagged) {
+  auto r = read_fortran_real("              ", 7);
+  EXPECT_TRUE(r.blank);
+  EXPECT_EQ(r.value, 0.0);
+}
+
+TEST(FortranReal, EmbeddedBlanksAreIgnored) { EXPECT_DOUBLE_EQ(read_fortran_real(" 1. 5 D+0 1", 7).value, 15.0); }
+
+TEST(FortranReal, MantissaWithoutPointUsesImpliedDecimal) {
+  EXPECT_DOUBLE_EQ(read_fortran_real("           100", 7).value, 1.0e-5);
+}
+
+TEST(FortranReal, RejectsGarbage) {
+  EXPECT_EQ(read_fortran_real("abc", 7).error, NumberError::malformed);
+  EXPECT_EQ(read_fortran_real("1.2.3", 7).error, NumberError::malformed);
+  EXPECT_EQ(read_fortran_real("1.0D", 7).error, NumberError::malformed);
+  EXPECT_EQ(read_fortran_real("--1", 7).error, NumberError::malformed);
+}
+
+TEST(FortranReal, OverflowIsOutOfRange) {
+  EXPECT_EQ(read_fortran_real("0.1D+999", 7).error, NumberError::out_of_range);
+}
+
+TEST(FortranInteger, ReadsLeftJustifiedAndSplitDigits) {
+  EXPECT_EQ(read_fortran_integer("1025   ").value, 1025);
+  EXPECT_EQ(read_fortran_integer(" 1 0").value, 10);
+  EXPECT_EQ(read_fortran_integer("  -7").value, -7);
+}
+
+TEST(FortranInteger, RejectsRealAndOverflow) {
+  EXPECT_EQ(read_fortran_integer("1.5").error, NumberError::malformed);
+  EXPECT_EQ(read_fortran_integer("99999999999").error, NumberError::out_of_range);
+}
+
+TEST(ListDirected, StopsAtBlankCommaSlash) {
+  EXPECT_EQ(read_list_directed_integer("   12  ")->value, 12);
+  EXPECT_EQ(read_list_directed_integer(" 7,8")->value, 7);
+  EXPECT_FALSE(read_list_directed_integer("   ").has_value());
+  EXPECT_FALSE(read_list_directed_integer(" / 3").has_value());
+}
+
+TEST(FortranD, WritesLmgc90Layout) {
+  EXPECT_EQ(fortran_d(0.0016), " 0.1600000D-02");
+  EXPECT_EQ(fortran_d(-0.5175621), "-0.5175621D+00");
+  EXPECT_EQ(fortran_d(0.0), " 0.0000000D+00");
+  EXPECT_EQ(fortran_d(1.0), " 0.1000000D+01");
+  EXPECT_EQ(fortran_d(0.1e-100), " 0.1000000-100");
+}
+
+TEST(FortranD, RoundsToSevenSignificantDigits) {
+  EXPECT_EQ(fortran_d(0.99999999), " 0.1000000D+01");
+  EXPECT_EQ(fortran_d(1.23456789e-3), " 0.1234568D-02");
+}
+
+TEST(FortranI, RightJustifiesAndOverflowsToStars) {
+  std::string s;
+  append_fortran_i(s, 42, 7);
+  EXPECT_EQ(s, "     42");
+  s.clear();
+  append_fortran_i(s, 123456, 5);
+  EXPECT_EQ(s, "*****");
+}
+
+TEST(FortranEs, WritesScientific) {
+  std::string s;
+  append_fortran_es(s, 1.0e-3, 15, 8);
+  EXPECT_EQ(s, " 1.00000000E-03");
+}
+
+}  // namespace
+}  // namespace lmgc::grammar
