@@ -90,7 +90,9 @@ struct Contactor {
   std::vector<std::array<Real, 3>> vertices;  // POLYG (third component 0), POLYR, POLYD
   std::vector<std::array<Integer, 3>> faces;  // POLYR, POLYD
   std::vector<PolyhedronPatch> patches;       // POLYF
-  LocalFrame frame;                           // CYLND, PLANx
+  // CYLND, PLANx: a 'localframe' block other than the identity (at most one element; kept out
+  // of line so that the other contactors do not carry 200 bytes of frame each).
+  std::vector<LocalFrame> frame;
   std::vector<ContactorContinuation> continuations;  // '+ALpxx', '+CSpxx', '+ASpxx' lines
   friend bool operator==(const Contactor&, const Contactor&) = default;
 };

@@ -1,6 +1,7 @@
 // BODIES.DAT reader. spec: datbox-inputs.md §1 (structure, cards), §0 (record rules), §9, §10.
 #include "grammar/bodies/parser.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "grammar/bodies/contactor_catalogue.hpp"
@@ -48,9 +49,9 @@ class BodiesParser {
       }
     }
     // LMGC90 numbers bodies within their type and echoes MAILx, then rigid bodies (§1.6).
-    for (BodyType type : {BodyType::mailx, BodyType::rbdy2, BodyType::rbdy3})
-      for (Body& body : bodies)
-        if (body.type == type) file.bodies.push_back(std::move(body));
+    const auto by_type = [](const Body& a, const Body& b) { return a.type < b.type; };
+    if (!std::is_sorted(bodies.begin(), bodies.end(), by_type)) std::stable_sort(bodies.begin(), bodies.end(), by_type);
+    file.bodies = std::move(bodies);
     return file;
   }
 
@@ -313,12 +314,15 @@ class BodiesParser {
         read_values(line, kind->value_count, c.values);
         if (!reader_.at_end() && columns(reader_.peek().text, 30, 39) == "localframe") {
           reader_.next();
-          std::array<Real, 3>* rows[] = {&c.frame.alpha, &c.frame.beta, &c.frame.gamma, &c.frame.shift};
+          LocalFrame frame;
+          std::array<Real, 3>* rows[] = {&frame.alpha, &frame.beta, &frame.gamma, &frame.shift};
           for (auto* row : rows) {
             const Line* frame_line = continuation("a 'localframe' line");
             if (!frame_line) return;
             *row = read_triple(*frame_line);
           }
+          // The identity frame is LMGC90's default: stored as "no frame" (same echo).
+          if (!(frame == LocalFrame{})) c.frame.push_back(frame);
         }
         break;
       case ContactorLayout::polygon: {

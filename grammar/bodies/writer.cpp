@@ -117,7 +117,7 @@ void append_contactor(std::string& out, const Contactor& c, std::int64_t rank) {
       append_pairs(out, kind->labels.data(), c.values.data(), kind->value_count);
       out += '\n';
       // LMGC90 always echoes the frame block (identity and no shift when none was given).
-      const LocalFrame& frame = c.frame;
+      const LocalFrame frame = c.frame.empty() ? LocalFrame{} : c.frame.front();
       append_blanks(out, 29);
       out += "localframe\n";
       static constexpr std::string_view kRows[4][3] = {{"alp1=", "alp2=", "alp3="},

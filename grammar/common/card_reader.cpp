@@ -1,6 +1,7 @@
 #include "grammar/common/card_reader.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <string>
 
 #include "grammar/common/fortran_format.hpp"
@@ -33,7 +34,14 @@ bool CardReader::check_records() {
   bool any = false;
   for (const Line& line : source_.lines()) {
     const std::string_view text = line.text;
-    for (std::size_t i = 0; i < text.size(); ++i) {
+    // Eight bytes at a time: any byte with its high bit set is non-ASCII.
+    std::size_t start = 0;
+    for (; start + 8 <= text.size(); start += 8) {
+      std::uint64_t word;
+      std::memcpy(&word, text.data() + start, 8);
+      if (word & 0x8080808080808080ull) break;
+    }
+    for (std::size_t i = start; i < text.size(); ++i) {
       if (static_cast<unsigned char>(text[i]) > 127) {
         const int col = static_cast<int>(i) + 1;
         report("L1008", line, col, col,
@@ -80,7 +88,7 @@ const Line& CardReader::next() {
 }
 
 SourceSpan CardReader::span(const Line& line, int first, int last) const {
-  return SourceSpan{line.number, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last + 1)};
+  return make_span(line.number, static_cast<std::size_t>(first), static_cast<std::size_t>(last));
 }
 
 Location CardReader::location(const Line& line, int first, int last) const {
@@ -95,8 +103,10 @@ void CardReader::report(std::string_view code, const Line& line, int first, int 
 void CardReader::report_at_end(std::string_view code, std::string message) {
   const auto& lines = source_.lines();
   const std::uint32_t last_line = lines.empty() ? 0 : lines.back().number;
-  const std::uint32_t col = lines.empty() ? 0 : static_cast<std::uint32_t>(lines.back().text.size() + 1);
-  sink_.report(code, Location{source_.path(), SourceSpan{last_line, col, col}}, std::move(message));
+  const std::size_t col = lines.empty() ? 0 : lines.back().text.size() + 1;
+  SourceSpan span = make_span(last_line, col, col);
+  span.end_column = span.column;
+  sink_.report(code, Location{source_.path(), span}, std::move(message));
 }
 
 void CardReader::check_tabs(const Line& line, int first, int last) {

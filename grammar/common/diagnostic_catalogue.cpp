@@ -75,6 +75,9 @@ constexpr std::array kCatalogue = {
     DiagnosticKind{"L1020", error, "mismatched header",
                    "The '$steps' header of an initial-state file does not match DOF.INI (step "
                    "number or time)."},
+    DiagnosticKind{"L1021", note, "file not read by LMGC90",
+                   "DATBOX/ holds a file that LMGC90's current reader never opens (a legacy or "
+                   "pre-processor file such as SAMPLE.DAT or BEHAVIOURS.DAT). It is not checked."},
     // L9xxx — input/output.
     DiagnosticKind{"L9001", error, "cannot read file",
                    "A file that the case needs does not exist or cannot be read."},

@@ -10,12 +10,20 @@ namespace lmgc::grammar {
 
 // Position of a value in its file: 1-based line, 1-based first and one-past-last byte column.
 // Spans are metadata: two spans always compare equal, so ASTs compare by value only.
+// Columns are 16-bit (LMGC90 reads 180 columns; longer lines are clamped), which keeps a span
+// at 8 bytes: every value of an AST carries one.
 struct SourceSpan {
   std::uint32_t line = 0;
-  std::uint32_t column = 0;
-  std::uint32_t end_column = 0;
+  std::uint16_t column = 0;
+  std::uint16_t end_column = 0;
   friend bool operator==(const SourceSpan&, const SourceSpan&) { return true; }
 };
+
+// Span of columns first..last (1-based, inclusive) of a line, clamped to 16-bit columns.
+inline SourceSpan make_span(std::uint32_t line, std::size_t first, std::size_t last) {
+  auto clamp = [](std::size_t c) { return static_cast<std::uint16_t>(c > 65535 ? 65535 : c); };
+  return SourceSpan{line, clamp(first), clamp(last + 1)};
+}
 
 // One record of the file: the bytes of the line without its terminator ("\n" or "\r\n").
 struct Line {

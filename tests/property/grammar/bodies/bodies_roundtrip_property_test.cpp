@@ -41,9 +41,11 @@ Contactor contactor_of(const ContactorKind& kind) {
     case ContactorLayout::values_offset: c.values = reals(kind.value_count + kind.offset_count); break;
     case ContactorLayout::values_frame:
       c.values = reals(kind.value_count);
-      if (*rc::gen::arbitrary<bool>())
-        for (auto* row : {&c.frame.alpha, &c.frame.beta, &c.frame.gamma, &c.frame.shift})
-          *row = {real(), real(), real()};
+      if (*rc::gen::arbitrary<bool>()) {
+        LocalFrame frame;
+        for (auto* row : {&frame.alpha, &frame.beta, &frame.gamma, &frame.shift}) *row = {real(), real(), real()};
+        if (!(frame == LocalFrame{})) c.frame.push_back(frame);
+      }
       break;
     case ContactorLayout::polygon:
       for (int i = 0, n = *rc::gen::inRange(3, 8); i < n; ++i) c.vertices.push_back(vertex());

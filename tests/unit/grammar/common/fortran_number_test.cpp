@@ -92,3 +92,19 @@ TEST(FortranEs, WritesScientific) {
 
 }  // namespace
 }  // namespace lmgc::grammar
+
+namespace lmgc::grammar {
+namespace {
+
+// The fast path and the general path must agree with a correctly rounded conversion.
+TEST(FortranReal, FastPathIsCorrectlyRounded) {
+  EXPECT_EQ(read_fortran_real(" 0.1234567D-02", 7).value, 0.1234567e-2);
+  EXPECT_EQ(read_fortran_real("-0.9999999D+22", 7).value, -0.9999999e22);
+  EXPECT_EQ(read_fortran_real(" 0.1000000D-30", 7).value, 1e-31);
+  EXPECT_EQ(read_fortran_real("1.2345678901234567890", 7).value, 1.2345678901234567890);
+  EXPECT_EQ(read_fortran_real("0.5D-320", 7).value, 0.5e-320);  // subnormal, general path
+  EXPECT_EQ(read_fortran_real("0.1D-400", 7).value, 0.0);       // underflow reads as zero
+}
+
+}  // namespace
+}  // namespace lmgc::grammar
