@@ -139,9 +139,13 @@ void CardReader::check_spill(const Line& line, int first, int last) {
                            ((text[before] >= '0' && text[before] <= '9') || text[before] == '.') &&
                            field.front() != ' ';
   if (spills_right || spills_left) {
+    // The whole token as written, to show what LMGC90 cuts it to.
+    std::size_t begin = static_cast<std::size_t>(first - 1), end = std::min(text.size(), static_cast<std::size_t>(last));
+    while (begin > 0 && (is_number_char(text[begin - 1]) || text[begin - 1] == '-' || text[begin - 1] == '+')) --begin;
+    while (end < text.size() && (is_number_char(text[end]) || text[end] == '-' || text[end] == '+')) ++end;
     report("L1011", line, first, last,
-           "value '" + std::string(trim(field)) + "' spills out of columns " + std::to_string(first) + "-" +
-               std::to_string(last),
+           "value '" + std::string(trim(text.substr(begin, end - begin))) + "' spills out of columns " +
+               std::to_string(first) + "-" + std::to_string(last) + "; LMGC90 reads '" + std::string(trim(field)) + "'",
            "align the value on columns " + std::to_string(first) + "-" + std::to_string(last) +
                " (LMGC90 reads only those columns)");
   }

@@ -43,10 +43,11 @@ constexpr std::array kCatalogue = {
     DiagnosticKind{"L1010", warning, "text beyond column 180",
                    "LMGC90 reads records of 180 characters: what is written past column 180 is "
                    "silently ignored."},
-    DiagnosticKind{"L1011", error, "value outside its columns",
+    DiagnosticKind{"L1011", warning, "value outside its columns",
                    "A value spills over the fixed columns it must occupy (for instance a real "
-                   "shifted right by one column). LMGC90 reads only the field's columns and would "
-                   "see a different number."},
+                   "shifted right by one column). LMGC90 reads only the field's columns and so "
+                   "sees a different number than the one written; lmgc reads what LMGC90 reads "
+                   "and says so. Align the value on its columns."},
     DiagnosticKind{"L1012", error, "missing section",
                    "A mandatory section or line is absent: '$gravy' in BULK_BEHAV.DAT, '$steps' in "
                    "DOF.INI, '$nodty' in a body, the title line of a '$seety' block, ..."},
