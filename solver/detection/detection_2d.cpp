@@ -1,0 +1,235 @@
+#include "solver/detection/detection_2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+#include "solver/detection/pair_geometry_2d.hpp"
+
+namespace lmgc::solver {
+namespace {
+
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+Eigen::Matrix2d rotation(double angle) {
+  Eigen::Matrix2d R;
+  R << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+  return R;
+}
+
+bool is_disk(const std::string& t) { return t == "DISKx" || t == "DISKb"; }
+
+}  // namespace
+
+bool pair_family_of(const std::string& cd, const std::string& an, PairFamily2D& family) {
+  if (is_disk(cd) && is_disk(an)) family = PairFamily2D::DKDKx;
+  else if (is_disk(cd) && an == "xKSID") family = PairFamily2D::DKKDx;
+  else if (is_disk(cd) && an == "JONCx") family = PairFamily2D::DKJCx;
+  else if (is_disk(cd) && an == "POLYG") family = PairFamily2D::DKPLx;
+  else if (cd == "PT2Dx" && an == "PT2Dx") family = PairFamily2D::PTPT2;
+  else if (cd == "POLYG" && an == "POLYG") family = PairFamily2D::PLPLx;
+  else if (cd == "POLYG" && an == "JONCx") family = PairFamily2D::PLJCx;
+  else return false;
+  return true;
+}
+
+VisibilityIndex2D build_visibility_index(const Scene2D& scene) {
+  VisibilityIndex2D index;
+  std::map<std::pair<std::string, std::string>, std::int32_t> classes;
+  std::vector<std::pair<std::string, std::string>> class_keys;
+  index.contactor_class.reserve(scene.contactors.size());
+  for (const Contactor2D& c : scene.contactors) {
+    auto key = std::make_pair(c.type, c.color);
+    auto [it, inserted] = classes.emplace(key, static_cast<std::int32_t>(class_keys.size()));
+    if (inserted) class_keys.push_back(key);
+    index.contactor_class.push_back(it->second);
+  }
+  index.class_count = static_cast<std::int32_t>(class_keys.size());
+  index.row.assign(static_cast<std::size_t>(index.class_count * index.class_count), -1);
+  // First matching row wins, looked up in either order; the pair family fixes the roles
+  // (contact-laws.md §1.2).
+  for (std::int32_t a = 0; a < index.class_count; ++a)
+    for (std::int32_t b = 0; b < index.class_count; ++b) {
+      const auto& [ta, ca] = class_keys[static_cast<std::size_t>(a)];
+      const auto& [tb, cb] = class_keys[static_cast<std::size_t>(b)];
+      PairFamily2D family;
+      if (!pair_family_of(ta, tb, family)) continue;
+      for (std::size_t v = 0; v < scene.visibility.size(); ++v) {
+        const Visibility2D& s = scene.visibility[v];
+        const bool direct = s.candidate_type == ta && s.candidate_color == ca && s.antagonist_type == tb &&
+                            s.antagonist_color == cb;
+        const bool swapped = s.candidate_type == tb && s.candidate_color == cb && s.antagonist_type == ta &&
+                             s.antagonist_color == ca;
+        if (direct || swapped) {
+          index.row[static_cast<std::size_t>(a * index.class_count + b)] = static_cast<std::int32_t>(v);
+          index.max_alert = std::max(index.max_alert, s.alert);
+          break;
+        }
+      }
+    }
+  return index;
+}
+
+void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, std::span<const Vector3d> coordinates,
+                        std::vector<Interaction2D>& out) {
+  out.clear();
+  const std::size_t n = scene.contactors.size();
+  if (n == 0) return;
+  // World placement of every contactor at this configuration.
+  std::vector<Vector2d> centre(n);
+  std::vector<Eigen::Matrix2d> orientation(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Contactor2D& c = scene.contactors[i];
+    const Vector3d& q = coordinates[static_cast<std::size_t>(c.body)];
+    orientation[i] = rotation(q.z());
+    centre[i] = q.head<2>() + orientation[i] * c.shift;
+  }
+  auto world_polygon = [&](std::size_t i, std::vector<Vector2d>& vertices) {
+    const Contactor2D& c = scene.contactors[i];
+    const Vector3d& q = coordinates[static_cast<std::size_t>(c.body)];
+    vertices.resize(static_cast<std::size_t>(c.vertex_count));
+    for (std::int32_t k = 0; k < c.vertex_count; ++k)
+      vertices[static_cast<std::size_t>(k)] =
+          q.head<2>() + orientation[i] * scene.vertices[static_cast<std::size_t>(c.first_vertex + k)];
+  };
+
+  // Rough detection: grid of cells of size 2·R_typical + alert; contactors larger than a cell are
+  // "big" and tested against every other (as LMGC90 does for big disks).
+  std::vector<double> radii;
+  radii.reserve(n);
+  for (const auto& c : scene.contactors) radii.push_back(c.bounding_radius);
+  std::vector<double> sorted = radii;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(n / 2), sorted.end());
+  const double typical = std::max(sorted[n / 2], 1e-12);
+  const double cell = 2.0 * 1.5 * typical + index.max_alert;
+  std::vector<std::size_t> small, big;
+  for (std::size_t i = 0; i < n; ++i) (radii[i] * 2.0 > cell ? big : small).push_back(i);
+
+  std::vector<std::pair<std::size_t, std::size_t>> rough;
+  auto consider = [&](std::size_t i, std::size_t j) {
+    const Contactor2D& a = scene.contactors[i];
+    const Contactor2D& b = scene.contactors[j];
+    if (a.body == b.body) return;
+    const std::int32_t ci = index.contactor_class[i], cj = index.contactor_class[j];
+    const bool ij = index.row[static_cast<std::size_t>(ci * index.class_count + cj)] >= 0;
+    const bool ji = index.row[static_cast<std::size_t>(cj * index.class_count + ci)] >= 0;
+    if (!ij && !ji) return;
+    const double reach = radii[i] + radii[j] + index.max_alert;
+    if ((centre[i] - centre[j]).squaredNorm() > reach * reach) return;
+    rough.emplace_back(std::min(i, j), std::max(i, j));
+  };
+  if (!small.empty()) {
+    Vector2d lo = centre[small[0]], hi = lo;
+    for (std::size_t i : small) {
+      lo = lo.cwiseMin(centre[i]);
+      hi = hi.cwiseMax(centre[i]);
+    }
+    const auto nx = static_cast<std::int64_t>(std::floor((hi.x() - lo.x()) / cell)) + 1;
+    const auto ny = static_cast<std::int64_t>(std::floor((hi.y() - lo.y()) / cell)) + 1;
+    std::unordered_map<std::int64_t, std::vector<std::size_t>> cells;
+    cells.reserve(small.size());
+    auto key = [&](std::int64_t x, std::int64_t y) { return x * (ny + 2) + y; };
+    std::vector<std::pair<std::int64_t, std::int64_t>> where(n);
+    for (std::size_t i : small) {
+      const auto x = static_cast<std::int64_t>(std::floor((centre[i].x() - lo.x()) / cell));
+      const auto y = static_cast<std::int64_t>(std::floor((centre[i].y() - lo.y()) / cell));
+      where[i] = {x, y};
+      cells[key(x, y)].push_back(i);
+    }
+    (void)nx;
+    for (std::size_t i : small) {
+      const auto [x, y] = where[i];
+      for (std::int64_t dx = -1; dx <= 1; ++dx)
+        for (std::int64_t dy = -1; dy <= 1; ++dy) {
+          auto it = cells.find(key(x + dx, y + dy));
+          if (it == cells.end()) continue;
+          for (std::size_t j : it->second)
+            if (j > i) consider(i, j);
+        }
+    }
+  }
+  for (std::size_t b : big)
+    for (std::size_t j = 0; j < n; ++j)
+      if (j != b && !(std::find(big.begin(), big.end(), j) != big.end() && j < b)) consider(std::min(b, j), std::max(b, j));
+  std::sort(rough.begin(), rough.end());
+  rough.erase(std::unique(rough.begin(), rough.end()), rough.end());
+
+  // Fine detection, with the roles of the pair family.
+  std::vector<Vector2d> poly_cd, poly_an;
+  for (auto [i, j] : rough) {
+    const std::int32_t ci = index.contactor_class[i], cj = index.contactor_class[j];
+    std::int32_t v = index.row[static_cast<std::size_t>(ci * index.class_count + cj)];
+    std::size_t cd = i, an = j;
+    PairFamily2D family;
+    if (v < 0 || !pair_family_of(scene.contactors[i].type, scene.contactors[j].type, family)) {
+      v = index.row[static_cast<std::size_t>(cj * index.class_count + ci)];
+      cd = j;
+      an = i;
+      if (v < 0 || !pair_family_of(scene.contactors[cd].type, scene.contactors[an].type, family)) continue;
+    } else if (family == PairFamily2D::DKDKx || family == PairFamily2D::PLPLx || family == PairFamily2D::PTPT2) {
+      // Same-type pairs: the lower contactor index is the candidate (numerics.md §5.2).
+      cd = i;
+      an = j;
+    }
+    const Visibility2D& see = scene.visibility[static_cast<std::size_t>(v)];
+    const Contactor2D& C = scene.contactors[cd];
+    const Contactor2D& A = scene.contactors[an];
+    std::array<PairContact2D, 2> found;
+    int count = 0;
+    auto joncx_of = [&](std::size_t k) {
+      return Joncx{centre[k], orientation[k].col(0), scene.contactors[k].half_length, scene.contactors[k].half_width};
+    };
+    switch (family) {
+      case PairFamily2D::DKDKx: count = disk_disk(centre[cd], C.radius, centre[an], A.radius, found[0]); break;
+      case PairFamily2D::DKKDx: count = disk_in_hollow_disk(centre[cd], C.radius, centre[an], A.radius, found[0]); break;
+      case PairFamily2D::DKJCx: count = disk_joncx(centre[cd], C.radius, joncx_of(an), found[0]); break;
+      case PairFamily2D::DKPLx:
+        world_polygon(an, poly_an);
+        count = disk_polygon(centre[cd], C.radius, poly_an, found[0]);
+        break;
+      case PairFamily2D::PTPT2: count = point_point(centre[cd], centre[an], found[0]); break;
+      case PairFamily2D::PLPLx:
+        world_polygon(cd, poly_cd);
+        world_polygon(an, poly_an);
+        count = polygon_polygon(poly_cd, poly_an, see.alert, found);
+        break;
+      case PairFamily2D::PLJCx:
+        world_polygon(cd, poly_cd);
+        count = polygon_joncx(poly_cd, joncx_of(an), see.alert, found);
+        break;
+    }
+    for (int k = 0; k < count; ++k) {
+      const PairContact2D& f = found[static_cast<std::size_t>(k)];
+      if (f.gap > see.alert && family != PairFamily2D::PTPT2) continue;
+      Interaction2D c;
+      c.family = family;
+      c.candidate = static_cast<std::int32_t>(cd);
+      c.antagonist = static_cast<std::int32_t>(an);
+      c.candidate_body = C.body;
+      c.antagonist_body = A.body;
+      c.candidate_vertex = f.candidate_vertex;
+      c.antagonist_segment = f.antagonist_segment;
+      c.law = see.law;
+      c.visibility = v;
+      c.normal = f.normal;
+      c.tangent = Vector2d(f.normal.y(), -f.normal.x());
+      c.point = f.point;
+      c.gap_begin = f.gap;
+      c.length = f.length;
+      const Vector2d lever_cd = f.point - coordinates[static_cast<std::size_t>(C.body)].head<2>();
+      const Vector2d lever_an = f.point - coordinates[static_cast<std::size_t>(A.body)].head<2>();
+      auto cross = [](const Vector2d& a, const Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); };
+      c.lever_candidate = Vector2d(cross(lever_cd, c.tangent), cross(lever_cd, c.normal));
+      c.lever_antagonist = Vector2d(cross(lever_an, c.tangent), cross(lever_an, c.normal));
+      out.push_back(c);
+    }
+  }
+  std::sort(out.begin(), out.end(), [](const Interaction2D& a, const Interaction2D& b) {
+    return std::tie(a.family, a.candidate, a.antagonist, a.candidate_vertex) <
+           std::tie(b.family, b.candidate, b.antagonist, b.candidate_vertex);
+  });
+}
+
+}  // namespace lmgc::solver

@@ -1,0 +1,34 @@
+#pragma once
+// Contact detection of a rigid 2D scene: rough detection on a uniform grid of bounding circles
+// (linear in the number of contactors), then fine detection per pair family.
+// spec: numerics.md §5.1-5.3.
+#include <Eigen/Core>
+#include <span>
+#include <vector>
+
+#include "solver/model/scene_2d.hpp"
+
+namespace lmgc::solver {
+
+// Per-scene lookup built once: which '$seety' row applies to a pair of contactors.
+struct VisibilityIndex2D {
+  std::vector<std::int32_t> contactor_class;  // (contactors) class = distinct (type, colour)
+  std::int32_t class_count = 0;
+  // (class_count²) visibility row for (candidate class, antagonist class), -1 when not visible;
+  // the roles are already resolved: entry (a, b) means a is the candidate.
+  std::vector<std::int32_t> row;
+  double max_alert = 0.0;
+};
+
+VisibilityIndex2D build_visibility_index(const Scene2D& scene);
+
+// The family of a (candidate type, antagonist type) pair, or false when LMGC90 has none.
+bool pair_family_of(const std::string& candidate_type, const std::string& antagonist_type, PairFamily2D& family);
+
+// Detects the interactions at `coordinates` (per body: x, y, θ in the world frame). The result
+// is sorted by (family, candidate, antagonist, candidate vertex): the order of the NLGS sweep and
+// of Vloc_Rloc files.
+void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
+                        std::span<const Eigen::Vector3d> coordinates, std::vector<Interaction2D>& out);
+
+}  // namespace lmgc::solver

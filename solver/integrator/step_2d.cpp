@@ -1,0 +1,132 @@
+#include "solver/integrator/step_2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lmgc::solver {
+
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+double DrivenDof2D::value(double t) const {
+  if (!evolution.empty()) {
+    // Linear interpolation, and linear extrapolation outside (datbox-inputs.md §5).
+    if (evolution.size() == 1) return evolution[0][1];
+    std::size_t i = 1;
+    while (i + 1 < evolution.size() && evolution[i][0] < t) ++i;
+    const auto& a = evolution[i - 1];
+    const auto& b = evolution[i];
+    const double span = b[0] - a[0];
+    return span != 0.0 ? a[1] + (b[1] - a[1]) * (t - a[0]) / span : a[1];
+  }
+  const auto& k = coefficients;  // CT AMP OMEGA PHI RAMPI RAMP
+  return (k[0] + k[1] * std::cos(k[2] * t + k[3])) * std::min(1.0, k[4] + k[5] * t);
+}
+
+void increment_step(Scene2D& scene, RunState2D& state) {
+  state.time += state.h;
+  ++state.step;
+  RigidBodies2D& b = scene.bodies;
+  std::fill(b.impulse.begin(), b.impulse.end(), Vector3d::Zero());
+  b.velocity = b.velocity_begin;
+}
+
+void compute_external_forces(Scene2D& scene, const RunState2D& state) {
+  RigidBodies2D& b = scene.bodies;
+  for (std::size_t i = 0; i < b.size(); ++i) b.external_force[i] = Vector3d(b.mass[i] * scene.gravity.x(), b.mass[i] * scene.gravity.y(), 0.0);
+  // Imposed forces, θ-averaged over the step (numerics.md §1.1).
+  for (const DrivenDof2D& d : scene.driven)
+    if (d.is_force)
+      b.external_force[static_cast<std::size_t>(d.body)](d.dof) +=
+          (1.0 - state.theta) * d.value(state.time - state.h) + state.theta * d.value(state.time);
+}
+
+void compute_free_velocity(Scene2D& scene, const RunState2D& state) {
+  RigidBodies2D& b = scene.bodies;
+  for (std::size_t i = 0; i < b.size(); ++i)
+    b.velocity_free[i] = b.velocity_begin[i] + state.h * b.inverse_mass[i].cwiseProduct(b.external_force[i]);
+  for (const DrivenDof2D& d : scene.driven)
+    if (!d.is_force) b.velocity_free[static_cast<std::size_t>(d.body)](d.dof) = d.value(state.time);
+}
+
+void select_prox_tactors(Scene2D& scene, RunState2D& state) {
+  RigidBodies2D& b = scene.bodies;
+  std::vector<Vector3d> coordinates(b.size());
+  for (std::size_t i = 0; i < b.size(); ++i)
+    coordinates[i] = b.reference[i] + b.displacement_begin[i] + (1.0 - state.theta) * state.h * b.velocity_begin[i];
+  if (scene.x_period > 0.0)
+    for (auto& c : coordinates) c.x() -= scene.x_period * std::floor(c.x() / scene.x_period);
+  detect_contacts_2d(scene, state.visibility, coordinates, state.contacts);
+  // Local relative velocity at the beginning of the step (used by restitution laws).
+  for (Interaction2D& c : state.contacts) {
+    const Vector3d& vc = b.velocity_begin[static_cast<std::size_t>(c.candidate_body)];
+    const Vector3d& va = b.velocity_begin[static_cast<std::size_t>(c.antagonist_body)];
+    const Vector3d tc(c.tangent.x(), c.tangent.y(), c.lever_candidate(0)), nc(c.normal.x(), c.normal.y(), c.lever_candidate(1));
+    const Vector3d ta(c.tangent.x(), c.tangent.y(), c.lever_antagonist(0)), na(c.normal.x(), c.normal.y(), c.lever_antagonist(1));
+    c.velocity_begin = Vector2d(tc.dot(vc) - ta.dot(va), nc.dot(vc) - na.dot(va));
+  }
+}
+
+void recup_rloc(RunState2D& state) {
+  // Both lists are sorted by the same key: a merge finds the matches in linear time.
+  auto key = [](const Interaction2D& c) {
+    return std::make_tuple(c.family, c.candidate, c.antagonist, c.candidate_vertex);
+  };
+  std::size_t j = 0;
+  for (Interaction2D& c : state.contacts) {
+    while (j < state.previous.size() && key(state.previous[j]) < key(c)) ++j;
+    if (j < state.previous.size() && key(state.previous[j]) == key(c)) {
+      const Interaction2D& p = state.previous[j];
+      c.r = p.r;
+      c.status_begin = p.status;
+      c.internal = p.internal;
+    } else {
+      c.r.setZero();
+      c.status_begin = ContactStatus::nknow;
+    }
+    c.status = c.status_begin;
+  }
+}
+
+NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& options) {
+  return solve_nlgs_2d(scene, scene.bodies, state.contacts, state.h, options);
+}
+
+void stock_rloc(RunState2D& state) { state.previous = state.contacts; }
+
+void compute_dof(Scene2D& scene, const RunState2D& state) {
+  RigidBodies2D& b = scene.bodies;
+  for (std::size_t i = 0; i < b.size(); ++i)
+    b.displacement[i] =
+        b.displacement_begin[i] + state.h * ((1.0 - state.theta) * b.velocity_begin[i] + state.theta * b.velocity[i]);
+}
+
+void update_step(Scene2D& scene) {
+  RigidBodies2D& b = scene.bodies;
+  b.displacement_begin = b.displacement;
+  b.velocity_begin = b.velocity;
+}
+
+NlgsResult step_2d(Scene2D& scene, RunState2D& state, const NlgsOptions& options) {
+  increment_step(scene, state);
+  compute_external_forces(scene, state);
+  compute_free_velocity(scene, state);
+  select_prox_tactors(scene, state);
+  recup_rloc(state);
+  NlgsResult result = solve_contacts(scene, state, options);
+  stock_rloc(state);
+  compute_dof(scene, state);
+  update_step(scene);
+  return result;
+}
+
+double kinetic_energy(const RigidBodies2D& b) {
+  double e = 0.0;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    const Vector3d& v = b.velocity[i];
+    e += 0.5 * b.mass[i] * (v.x() * v.x() + v.y() * v.y()) + 0.5 * b.inertia[i] * v.z() * v.z();
+  }
+  return e;
+}
+
+}  // namespace lmgc::solver

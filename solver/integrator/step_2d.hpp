@@ -1,0 +1,43 @@
+#pragma once
+// One Moreau–Jean θ-scheme step of a rigid 2D scene, as the stages of LMGC90's step
+// (spec: numerics.md §1.1, state-and-outputs.md §2.2): each stage is a plain function over the
+// scene's flat arrays, so a driver can call them one by one as LMGC90's command.py does.
+#include <vector>
+
+#include "solver/detection/detection_2d.hpp"
+#include "solver/model/scene_2d.hpp"
+#include "solver/nlgs/nlgs_2d.hpp"
+
+namespace lmgc::solver {
+
+struct RunState2D {
+  double time = 0.0;         // TPS at the end of the current step
+  long step = 0;             // Nstep
+  double h = 1e-3;           // time step
+  double theta = 0.5;
+  std::vector<Interaction2D> contacts;  // this step's interactions
+  std::vector<Interaction2D> previous;  // last step's (the "verlet" list used for warm start)
+  VisibilityIndex2D visibility;
+};
+
+void increment_step(Scene2D& scene, RunState2D& state);
+void compute_external_forces(Scene2D& scene, const RunState2D& state);
+void compute_free_velocity(Scene2D& scene, const RunState2D& state);
+// Detection on the θ configuration: coor = reference + X_begin + (1-θ) h V_begin.
+void select_prox_tactors(Scene2D& scene, RunState2D& state);
+// Warm start: reactions, statuses and internal variables of the matching previous interaction.
+void recup_rloc(RunState2D& state);
+NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& options);
+void stock_rloc(RunState2D& state);
+// X = X_begin + h((1-θ) V_begin + θ V).
+void compute_dof(Scene2D& scene, const RunState2D& state);
+// End of step: begin ← end.
+void update_step(Scene2D& scene);
+
+// All stages in LMGC90's order; returns the solver statistics of the step.
+NlgsResult step_2d(Scene2D& scene, RunState2D& state, const NlgsOptions& options);
+
+// Kinetic energy Σ ½ m |v|² + ½ I ω² at the end of the step [J].
+double kinetic_energy(const RigidBodies2D& bodies);
+
+}  // namespace lmgc::solver

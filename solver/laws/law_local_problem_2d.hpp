@@ -1,0 +1,29 @@
+#pragma once
+// Every 2D law reduced to one Signorini–Coulomb problem in auxiliary variables
+// (contact-laws.md §2): uu = ufree_loc + covfree + WW rr, r = rr + correction.
+// One std::visit per verb: prepare (once per step), solve (each sweep), residual (checks),
+// finish (end of step: statuses and internal variables).
+#include <Eigen/Core>
+
+#include "solver/laws/contact_law.hpp"
+#include "solver/model/interaction_2d.hpp"
+#include "solver/nlgs/local_solver_2d.hpp"
+
+namespace lmgc::solver {
+
+// Sets c.WW, c.covfree, c.correction, c.mu, c.inactive from c.W, c.gap_begin, c.velocity_begin,
+// c.status_begin and the law (contact-laws.md §3). `h` is the time step.
+void prepare_local_problem_2d(const ContactLaw& law, Interaction2D& c, double h);
+
+// The law's reaction for the current local free velocity (u = ufree_loc + W r), correction included.
+LocalSolution2D solve_local_problem_2d(const ContactLaw& law, const Interaction2D& c, const Eigen::Vector2d& ufree_loc);
+
+// Squared residual of the law at (r, ufree_loc): the natural map of the Signorini–Coulomb problem
+// in auxiliary variables for Coulomb laws, |uu| for glued dofs, |r| for inactive contacts.
+double local_residual_squared_2d(const ContactLaw& law, const Interaction2D& c, const Eigen::Vector2d& r,
+                                 const Eigen::Vector2d& ufree_loc);
+
+// End of step: law statuses (wet, Mohr) and internal variables.
+void finish_step_2d(const ContactLaw& law, Interaction2D& c, double h);
+
+}  // namespace lmgc::solver

@@ -1,0 +1,23 @@
+#pragma once
+// Contact statuses, written as LMGC90's 5-character names. spec: state-and-outputs.md §1.4.3.
+#include <cstdint>
+#include <string_view>
+
+namespace lmgc::solver {
+
+enum class ContactStatus : std::uint8_t {
+  vnish, nknow, noctc, stick, slide, slibw, slifw,  // plain
+  Cnnow, Cnctc, Cstck, Cslid, Cslbw, Cslfw,          // cohesive
+  Wnnow, Wnctc, Wstck, Wslid, Wslbw, Wslfw,          // wet
+  Mnnow, Mnctc, Mstck, Mslid, Mslbw, Mslfw,          // Mohr–Coulomb
+  RGR,                                               // '_RGR_' gap rescue
+};
+
+std::string_view status_name(ContactStatus status);
+// nullopt-like: returns false when `name` is not a status.
+bool status_from_name(std::string_view name, ContactStatus& status);
+
+// True for the sliding statuses (any prefix): dynamic friction applies (contact-laws.md §1.3).
+bool is_sliding(ContactStatus status);
+
+}  // namespace lmgc::solver

@@ -1,0 +1,57 @@
+#pragma once
+// A 2D interaction (one contact point between a candidate and an antagonist contactor), with
+// its local frame, its Delassus block and the unknowns of the step. spec: numerics.md §2-§4.
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+
+#include "solver/model/contact_status.hpp"
+
+namespace lmgc::solver {
+
+// 2D interaction families, in the order LMGC90 sweeps and writes them (numerics.md §4 step 2:
+// DKDKx, DKKDx, DKJCx, DKPLx, PTPT2, PLPLx, PLJCx).
+enum class PairFamily2D : std::uint8_t { DKDKx, DKKDx, DKJCx, DKPLx, PTPT2, PLPLx, PLJCx };
+
+struct Interaction2D {
+  PairFamily2D family = PairFamily2D::DKDKx;
+  std::int32_t candidate = 0;   // contactor ids (Scene2D::contactors)
+  std::int32_t antagonist = 0;
+  std::int32_t candidate_body = 0;
+  std::int32_t antagonist_body = 0;
+  std::int32_t candidate_vertex = 0;   // PLPLx/PLJCx: vertex of the candidate polygon (1-based, 0 none)
+  std::int32_t antagonist_segment = 0; // PLPLx: segment of the antagonist polygon
+  std::int32_t law = 0;                // index into Scene2D::laws
+  std::int32_t visibility = 0;         // index into Scene2D::visibility
+  std::int32_t periodic_shift = 0;     // antagonist shifted by this many periods in x
+
+  // Geometry at the detection configuration (θ-scheme "TT" configuration).
+  Eigen::Vector2d normal = Eigen::Vector2d::Zero();   // from antagonist to candidate
+  Eigen::Vector2d tangent = Eigen::Vector2d::Zero();  // (n_y, -n_x)
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();    // contact point
+  double gap_begin = 0.0;                             // signed distance at detection [m]
+  double length = 1.0;                                // contact length used by cohesive laws
+  // Lever-arm products ℓ×t and ℓ×n of each body (H rows of the rotational dof).
+  Eigen::Vector2d lever_candidate = Eigen::Vector2d::Zero();
+  Eigen::Vector2d lever_antagonist = Eigen::Vector2d::Zero();
+  Eigen::Vector2d velocity_begin = Eigen::Vector2d::Zero();  // local (t, n) relative velocity at t_begin
+
+  // Step unknowns: impulse (t, n) over the step and relative velocity at the end of the step.
+  Eigen::Vector2d r = Eigen::Vector2d::Zero();
+  Eigen::Vector2d u = Eigen::Vector2d::Zero();
+  ContactStatus status = ContactStatus::nknow;
+  ContactStatus status_begin = ContactStatus::nknow;
+  std::array<double, 6> internal{};  // law internal variables (contact-laws.md, state-and-outputs §1.4.4)
+
+  // Local problem of the law (contact-laws.md §2): Delassus block, modified block, shift, μ.
+  Eigen::Matrix2d W = Eigen::Matrix2d::Zero();
+  Eigen::Matrix2d WW = Eigen::Matrix2d::Zero();
+  Eigen::Vector2d covfree = Eigen::Vector2d::Zero();
+  Eigen::Vector2d correction = Eigen::Vector2d::Zero();  // corr added to the auxiliary reaction
+  double mu = 0.0;
+  bool inactive = false;  // forecast inactive ("noact"): r = 0, skipped by the sweeps
+  std::int32_t skip_count = 0;  // vanishing-contact skip heuristic (numerics.md §4)
+  std::int32_t skip_threshold = 1;
+};
+
+}  // namespace lmgc::solver
