@@ -157,7 +157,17 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
   rough.erase(std::unique(rough.begin(), rough.end()), rough.end());
 
   // Fine detection, with the roles of the pair family.
-  std::vector<Vector2d> poly_cd, poly_an;
+  std::vector<Vector2d> vertices_cd, normals_cd, vertices_an, normals_an;
+  auto polygon_view = [&](std::size_t k, std::vector<Vector2d>& vertices, std::vector<Vector2d>& normals) {
+    world_polygon(k, vertices);
+    const std::size_t m = vertices.size();
+    normals.resize(m);
+    for (std::size_t i = 0; i < m; ++i) {
+      const Vector2d e = vertices[(i + 1) % m] - vertices[i];
+      normals[i] = Vector2d(e.y(), -e.x()).normalized();
+    }
+    return PolygonView{vertices, normals, centre[k]};
+  };
   for (auto [i, j] : rough) {
     const std::int32_t ci = index.contactor_class[i], cj = index.contactor_class[j];
     std::int32_t v = index.row[static_cast<std::size_t>(ci * index.class_count + cj)];
@@ -168,10 +178,6 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
       cd = j;
       an = i;
       if (v < 0 || !pair_family_of(scene.contactors[cd].type, scene.contactors[an].type, family)) continue;
-    } else if (family == PairFamily2D::DKDKx || family == PairFamily2D::PLPLx || family == PairFamily2D::PTPT2) {
-      // Same-type pairs: the lower contactor index is the candidate (numerics.md §5.2).
-      cd = i;
-      an = j;
     }
     const Visibility2D& see = scene.visibility[static_cast<std::size_t>(v)];
     const Contactor2D& C = scene.contactors[cd];
@@ -186,29 +192,32 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
       case PairFamily2D::DKKDx: count = disk_in_hollow_disk(centre[cd], C.radius, centre[an], A.radius, found[0]); break;
       case PairFamily2D::DKJCx: count = disk_joncx(centre[cd], C.radius, joncx_of(an), found[0]); break;
       case PairFamily2D::DKPLx:
-        world_polygon(an, poly_an);
-        count = disk_polygon(centre[cd], C.radius, poly_an, found[0]);
+        count = disk_polygon(centre[cd], C.radius, polygon_view(an, vertices_an, normals_an), see.alert, found[0]);
         break;
       case PairFamily2D::PTPT2: count = point_point(centre[cd], centre[an], found[0]); break;
       case PairFamily2D::PLPLx:
-        world_polygon(cd, poly_cd);
-        world_polygon(an, poly_an);
-        count = polygon_polygon(poly_cd, poly_an, see.alert, found);
+        count = polygon_polygon(polygon_view(cd, vertices_cd, normals_cd), polygon_view(an, vertices_an, normals_an),
+                                see.alert, found);
         break;
       case PairFamily2D::PLJCx:
-        world_polygon(cd, poly_cd);
-        count = polygon_joncx(poly_cd, joncx_of(an), see.alert, found);
+        count = polygon_joncx(polygon_view(cd, vertices_cd, normals_cd), joncx_of(an), see.alert, found);
         break;
     }
+    // Fine tests that keep a contact (docs/lmgc90-facts/rigid-2d.md §3.3).
+    const bool keep_at_alert = family == PairFamily2D::DKDKx || family == PairFamily2D::DKKDx ||
+                               family == PairFamily2D::DKJCx;
     for (int k = 0; k < count; ++k) {
       const PairContact2D& f = found[static_cast<std::size_t>(k)];
-      if (f.gap > see.alert && family != PairFamily2D::PTPT2) continue;
+      if (keep_at_alert && f.gap > see.alert) continue;
+      const std::size_t ccd = f.swapped ? an : cd, can = f.swapped ? cd : an;
+      const Contactor2D& Ccd = scene.contactors[ccd];
+      const Contactor2D& Can = scene.contactors[can];
       Interaction2D c;
       c.family = family;
-      c.candidate = static_cast<std::int32_t>(cd);
-      c.antagonist = static_cast<std::int32_t>(an);
-      c.candidate_body = C.body;
-      c.antagonist_body = A.body;
+      c.candidate = static_cast<std::int32_t>(ccd);
+      c.antagonist = static_cast<std::int32_t>(can);
+      c.candidate_body = Ccd.body;
+      c.antagonist_body = Can.body;
       c.candidate_vertex = f.candidate_vertex;
       c.antagonist_segment = f.antagonist_segment;
       c.law = see.law;
@@ -218,11 +227,18 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
       c.point = f.point;
       c.gap_begin = f.gap;
       c.length = f.length;
-      const Vector2d lever_cd = f.point - coordinates[static_cast<std::size_t>(C.body)].head<2>();
-      const Vector2d lever_an = f.point - coordinates[static_cast<std::size_t>(A.body)].head<2>();
-      auto cross = [](const Vector2d& a, const Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); };
-      c.lever_candidate = Vector2d(cross(lever_cd, c.tangent), cross(lever_cd, c.normal));
-      c.lever_antagonist = Vector2d(cross(lever_an, c.tangent), cross(lever_an, c.normal));
+      // Levers from the body centres: add the contactor's offset on its body, except for JONCx and
+      // xKSID antagonists, measured from the contactor itself in LMGC90.
+      const Vector2d offset_cd = centre[ccd] - coordinates[static_cast<std::size_t>(Ccd.body)].head<2>();
+      const bool antagonist_from_contactor = Can.shape == ContactorShape2D::joncx ||
+                                             Can.shape == ContactorShape2D::hollow_disk;
+      const Vector2d offset_an =
+          antagonist_from_contactor ? Vector2d::Zero()
+                                    : Vector2d(centre[can] - coordinates[static_cast<std::size_t>(Can.body)].head<2>());
+      const Vector2d lever_cd = f.candidate_lever + offset_cd;
+      const Vector2d lever_an = f.antagonist_lever + offset_an;
+      c.lever_candidate = Vector2d(cross_2d(lever_cd, c.tangent), cross_2d(lever_cd, c.normal));
+      c.lever_antagonist = Vector2d(cross_2d(lever_an, c.tangent), cross_2d(lever_an, c.normal));
       out.push_back(c);
     }
   }

@@ -92,7 +92,8 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   std::iota(order.begin(), order.end(), 0);
   std::mt19937 random(12345u);
 
-  auto sweep = [&]() {
+  // One Gauss–Seidel pass; the post pass never skips and is not counted as an iteration.
+  auto sweep = [&](bool post) {
     for (std::size_t k : order) {
       Interaction2D& c = contacts[k];
       const ContactLaw& law = scene.laws[static_cast<std::size_t>(c.law)].law;
@@ -105,7 +106,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
         continue;
       }
       // Vanishing contacts are visited less and less often (numerics.md §4 skip heuristic).
-      if (c.r.isZero(0.0)) {
+      if (!post && c.r.isZero(0.0)) {
         if (++c.skip_count < c.skip_threshold * (c.skip_threshold + 1) / 2) continue;
         ++c.skip_threshold;
       }
@@ -124,7 +125,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
         c.skip_threshold = 1;
       }
     }
-    ++result.iterations;
+    if (!post) ++result.iterations;
   };
 
   // One check pass: the local solve applied to the current state without updating it.
@@ -134,7 +135,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     std::size_t vanishing = 0;
     result.active = 0;
     for (std::size_t k = 0; k < count; ++k) {
-      const Interaction2D& c = contacts[k];
+      Interaction2D& c = contacts[k];
+      // The skip heuristic restarts after every check.
+      c.skip_count = 0;
+      c.skip_threshold = 1;
       const ContactLaw& law = scene.laws[static_cast<std::size_t>(c.law)].law;
       const Vector2d u = relative_velocity(c, v);
       const Vector2d ufree_loc = u - c.W * c.r;
@@ -183,7 +187,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   if (count > 0) {
     for (int block = 0; block < options.gs_it2; ++block) {
       if (options.quick_scramble) std::shuffle(order.begin(), order.end(), random);
-      for (int i = 0; i < options.gs_it1; ++i) sweep();
+      for (int i = 0; i < options.gs_it1; ++i) sweep(false);
       result.converged = check();
       if (result.converged || result.diverged) break;
     }
@@ -191,10 +195,12 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     result.converged = true;
   }
 
-  // Post: velocities rebuilt from scratch (Rnod = H r), then local velocities and statuses.
+  // Post (docs/lmgc90-facts/rigid-2d.md §5.3): velocities rebuilt from scratch (Rnod = H r),
+  // one more relaxed sweep, then the final local velocities and statuses.
   v = bodies.velocity_free;
   for (const Interaction2D& c : contacts)
     if (!c.r.isZero(0.0)) inject(c, c.r, bodies.inverse_mass, v);
+  if (count > 0) sweep(true);
   for (Interaction2D& c : contacts) {
     c.u = relative_velocity(c, v);
     if (c.inactive || c.r.isZero(0.0)) {
