@@ -201,6 +201,17 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   for (const Interaction2D& c : contacts)
     if (!c.r.isZero(0.0)) inject(c, c.r, bodies.inverse_mass, v);
   if (count > 0) sweep(true);
+  // The achieved error is the one of the reactions actually returned (after the post sweep).
+  double residual2 = 0.0;
+  result.active = 0;
+  for (const Interaction2D& c : contacts) {
+    const Vector2d u = relative_velocity(c, v);
+    residual2 += local_residual_squared_2d(scene.laws[static_cast<std::size_t>(c.law)].law, c, c.r, u - c.W * c.r);
+    if (!c.r.isZero(0.0)) ++result.active;
+  }
+  result.residual_absolute = std::sqrt(residual2);
+  result.residual_relative =
+      result.free_velocity_norm > 0.0 ? result.residual_absolute / result.free_velocity_norm : result.residual_absolute;
   for (Interaction2D& c : contacts) {
     c.u = relative_velocity(c, v);
     if (c.inactive || c.r.isZero(0.0)) {
