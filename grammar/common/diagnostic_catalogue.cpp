@@ -79,6 +79,22 @@ constexpr std::array kCatalogue = {
     DiagnosticKind{"L1021", note, "file not read by LMGC90",
                    "DATBOX/ holds a file that LMGC90's current reader never opens (a legacy or "
                    "pre-processor file such as SAMPLE.DAT or BEHAVIOURS.DAT). It is not checked."},
+    // L2xxx — cross references between files.
+    DiagnosticKind{"L2001", error, "unknown bulk behaviour",
+                   "A body names a bulk behaviour ('behav' of its PLAIN or model line) that "
+                   "BULK_BEHAV.DAT does not define."},
+    DiagnosticKind{"L2002", error, "unknown contact law",
+                   "A '$seety' row names a law nickname that TACT_BEHAV.DAT does not define."},
+    DiagnosticKind{"L2003", error, "unknown body",
+                   "A body number in DRV_DOF.DAT, DOF.INI, Vloc_Rloc.INI, GPV.INI or POSTPRO.DAT does not "
+                   "exist among the bodies of that type in BODIES.DAT."},
+    // L4xxx — run setup: what lmgc-solve needs to run the case.
+    DiagnosticKind{"L4001", error, "contactor not handled by the solver",
+                   "The case uses a contactor kind that the solver for this dimension does not provide "
+                   "yet; lmgc-solve stops before running."},
+    DiagnosticKind{"L4002", error, "contact law not handled by the solver",
+                   "A '$seety' row uses a contact law that the solver does not solve yet; lmgc-solve "
+                   "stops before running rather than silently using another law."},
     // L9xxx — input/output.
     DiagnosticKind{"L9001", error, "cannot read file",
                    "A file that the case needs does not exist or cannot be read."},

@@ -1,0 +1,229 @@
+#include "solver/model/build_scene_2d.hpp"
+
+#include <cmath>
+
+#include "grammar/tact_behav/law_catalogue.hpp"
+#include "solver/bodies/rigid_2d_properties.hpp"
+#include "solver/model/scene_builder_2d.hpp"
+
+namespace lmgc::solver {
+namespace {
+
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+// Parameter `name` of a law card, by the catalogue's parameter order.
+double parameter(const grammar::TactLaw& card, const grammar::LawKind& kind, std::string_view name) {
+  for (std::size_t i = 0; i < kind.parameters.size(); ++i)
+    if (kind.parameters[i] == name) return i < card.parameters.size() ? card.parameters[i].value : 0.0;
+  return 0.0;
+}
+
+}  // namespace
+
+bool contact_law_of(const grammar::TactLaw& card, ContactLaw& law) {
+  const grammar::LawKind* kind = grammar::find_law_kind(card.keyword.value);
+  if (!kind) return false;
+  auto p = [&](std::string_view name) { return parameter(card, *kind, name); };
+  const std::string& k = card.keyword.value;
+  if (k == "IQS_CLB") law = IqsClb{p("sfric")};
+  else if (k == "IQS_DS_CLB") law = IqsDsClb{p("dfric"), p("sfric")};
+  else if (k == "IQS_CLB_g0") law = IqsClbG0{p("sfric")};
+  else if (k == "RST_CLB") law = RstClb{p("restn"), p("restt"), p("sfric")};
+  else if (k == "RST_DS_CLB") law = RstDsClb{p("restn"), p("restt"), p("dfric"), p("sfric")};
+  else if (k == "GAP_SGR_CLB") law = GapSgrClb{p("sfric")};
+  else if (k == "GAP_SGR_DS_CLB") law = GapSgrDsClb{p("dfric"), p("sfric")};
+  else if (k == "VEL_SGR_CLB") law = VelSgrClb{p("sfric")};
+  else if (k == "VEL_SGR_DS_CLB") law = VelSgrDsClb{p("dfric"), p("sfric")};
+  else if (k == "ELASTIC_REPELL_CLB") law = ElasticRepellClb{p("F/gap"), p("sfric")};
+  else if (k == "IQS_MOHR_DS_CLB") law = IqsMohrDsClb{p("cohen"), p("cohet"), p("dfric"), p("sfric")};
+  else if (k == "IQS_WET_DS_CLB") law = IqsWetDsClb{p("cohen"), p("cohet"), p("Wethk"), p("dfric"), p("sfric")};
+  else if (k == "COUPLED_DOF") law = CoupledDof{};
+  else return false;
+  return true;
+}
+
+bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticSink& sink) {
+  bool ok = true;
+  scene = Scene2D{};
+  scene.gravity = in.gravity;
+  std::vector<std::int32_t> body_of_rank;  // RBDY2 rank (1-based) -> body index
+  for (grammar::Body body : in.bodies->bodies) {
+    if (body.type != grammar::BodyType::rbdy2) continue;
+    normalise_rigid_body_2d(body);
+    const auto index = static_cast<std::int32_t>(scene.bodies.size());
+    body_of_rank.push_back(index);
+    const grammar::RigidBulk& bulk = *body.rigid_bulk;
+    const auto& x = body.nodes.front().coordinates;
+    RigidBodies2D& b = scene.bodies;
+    b.reference.push_back(Vector3d(x[0].value, x[1].value, x.size() > 2 ? x[2].value : 0.0));
+    for (auto* v : {&b.displacement_begin, &b.displacement, &b.velocity_begin, &b.velocity, &b.velocity_free,
+                    &b.inverse_mass, &b.external_force, &b.impulse})
+      v->push_back(Vector3d::Zero());
+    auto density = in.densities.find(bulk.behav.value);
+    if (density == in.densities.end()) {
+      sink.report("L2001", grammar::Location{in.bodies_path, bulk.behav.span},
+                  "bulk behaviour '" + bulk.behav.value + "' is not defined in BULK_BEHAV.DAT");
+      ok = false;
+    }
+    const double rho = density == in.densities.end() ? 0.0 : density->second;
+    const double mass = rho * M_PI * bulk.avrd.value * bulk.avrd.value;
+    b.mass.push_back(mass);
+    b.inertia.push_back(mass * bulk.gyrd.value * bulk.gyrd.value);
+    b.avrd.push_back(bulk.avrd.value);
+    b.gyrd.push_back(bulk.gyrd.value);
+    b.bulk_behav.push_back(0);
+    b.driven_mask.push_back(0);
+    std::int32_t rank = 0;
+    for (const grammar::Contactor& t : body.contactors) {
+      Contactor2D c;
+      c.body = index;
+      c.rank = ++rank;
+      c.type = t.type.value;
+      c.color = t.color.value;
+      const auto value = [&](std::size_t i) { return i < t.values.size() ? t.values[i].value : 0.0; };
+      if (c.type == "DISKx" || c.type == "DISPx") {
+        c.shape = ContactorShape2D::disk;
+        c.type = "DISKx";
+        c.radius = value(0);
+      } else if (c.type == "DISKb") {
+        // Cluster disks are DISKx contactors with an offset (LMGC90 names them DISKx in outputs).
+        c.shape = ContactorShape2D::disk;
+        c.type = "DISKx";
+        c.radius = value(0);
+        c.shift = Vector2d(value(1), value(2));
+      } else if (c.type == "xKSID" || c.type == "xPSID") {
+        c.shape = ContactorShape2D::hollow_disk;
+        c.type = "xKSID";
+        c.radius = value(0);
+      } else if (c.type == "JONCx") {
+        c.shape = ContactorShape2D::joncx;
+        c.half_length = value(0);
+        c.half_width = value(1);
+      } else if (c.type == "PT2Dx") {
+        c.shape = ContactorShape2D::point;
+        c.shift = Vector2d(value(0), value(1));
+      } else if (c.type == "POLYG") {
+        c.shape = ContactorShape2D::polygon;
+        std::vector<Vector2d> vertices;
+        for (const auto& v : t.vertices) vertices.emplace_back(v[0].value, v[1].value);
+        double area, polar;
+        Vector2d centroid;
+        polygon_mass_properties(vertices, area, centroid, polar);
+        c.shift = centroid;
+        c.first_vertex = static_cast<std::int32_t>(scene.vertices.size());
+        c.vertex_count = static_cast<std::int32_t>(vertices.size());
+        for (const Vector2d& v : vertices) scene.vertices.push_back(v - centroid);
+      } else {
+        sink.report("L4001", grammar::Location{in.bodies_path, t.type.span},
+                    "contactor '" + c.type + "' is not handled by the rigid 2D solver");
+        ok = false;
+        continue;
+      }
+      // Bounding radius around the contactor centre.
+      switch (c.shape) {
+        case ContactorShape2D::disk: c.bounding_radius = c.radius; break;
+        case ContactorShape2D::hollow_disk: c.bounding_radius = c.radius; break;
+        case ContactorShape2D::joncx: c.bounding_radius = c.half_length + c.half_width; break;
+        case ContactorShape2D::point: c.bounding_radius = 0.0; break;
+        case ContactorShape2D::polygon:
+          for (std::int32_t k = 0; k < c.vertex_count; ++k)
+            c.bounding_radius = std::max(c.bounding_radius, scene.vertices[static_cast<std::size_t>(c.first_vertex + k)].norm());
+          break;
+      }
+      scene.contactors.push_back(c);
+    }
+  }
+
+  // Contact laws and visibility rows.
+  for (const grammar::TactLaw& card : in.tact_behav->laws) {
+    ContactLaw law;
+    if (!contact_law_of(card, law)) {
+      // Reported only when a visibility row uses it (below); keep the slot so indices match.
+      law = IqsClb{0.0};
+    }
+    scene.laws.push_back({card.nickname.value, law});
+  }
+  for (const grammar::SeeEntry& see : in.tact_behav->sees) {
+    if (see.candidate_body.value != "RBDY2" || see.antagonist_body.value != "RBDY2") continue;
+    Visibility2D v;
+    v.candidate_type = see.candidate_contactor.value == "DISKb" ? "DISKx" : see.candidate_contactor.value;
+    v.candidate_color = see.candidate_colour.value;
+    v.antagonist_type = see.antagonist_contactor.value == "DISKb" ? "DISKx" : see.antagonist_contactor.value;
+    v.antagonist_color = see.antagonist_colour.value;
+    v.law_nickname = see.law_nickname.value;
+    v.alert = see.alert.value;
+    bool found = false;
+    for (const grammar::TactLaw& card : in.tact_behav->laws)
+      if (card.nickname.value == v.law_nickname) {
+        ContactLaw law;
+        if (!contact_law_of(card, law)) {
+          sink.report("L4002", grammar::Location{in.tact_behav_path, card.keyword.span},
+                      "contact law '" + card.keyword.value + "' is not solved by the rigid 2D solver yet");
+          ok = false;
+        }
+        found = true;
+        break;
+      }
+    if (!found) {
+      sink.report("L2002", grammar::Location{in.tact_behav_path, see.law_nickname.span},
+                  "law '" + v.law_nickname + "' used by this visibility row is not defined");
+      ok = false;
+    }
+    scene.visibility.push_back(v);
+  }
+
+  // Driven dofs (datbox-inputs.md §5).
+  if (in.drv_dof) {
+    for (const grammar::DrvDofBody& body : in.drv_dof->bodies) {
+      if (body.body_type.value != "RBDY2") continue;
+      const std::int64_t rank = body.rank.value;
+      if (rank < 1 || rank > static_cast<std::int64_t>(body_of_rank.size())) {
+        sink.report("L2003", grammar::Location{in.drv_dof_path, body.rank.span},
+                    "RBDY2 body " + std::to_string(rank) + " does not exist");
+        ok = false;
+        continue;
+      }
+      for (const grammar::DrvDofNode& node : body.nodes)
+        for (const grammar::DrivenDof& dof : node.dofs) {
+          DrivenDof2D d;
+          d.body = body_of_rank[static_cast<std::size_t>(rank - 1)];
+          d.dof = static_cast<std::int32_t>(dof.dof.value) - 1;
+          d.is_force = dof.kind.value == "force";
+          if (d.dof < 0 || d.dof > 2) continue;
+          if (dof.uses_evolution) {
+            if (in.evolutions) {
+              auto it = in.evolutions->find(dof.evolution_file.value);
+              if (it != in.evolutions->end())
+                for (const auto& point : it->second.points) d.evolution.push_back({point.time.value, point.value.value});
+            }
+          } else {
+            for (std::size_t k = 0; k < 6; ++k) d.coefficients[k] = dof.parameters[k].value;
+          }
+          scene.driven.push_back(d);
+        }
+    }
+  }
+
+  // Initial state (DOF.INI): X and V by body rank.
+  if (in.dof_ini) {
+    for (const auto& section : in.dof_ini->sections)
+      for (const grammar::DofBody& body : section.bodies) {
+        if (body.body_type.value != "RBDY2" || body.nodes.empty()) continue;
+        const std::int64_t rank = body.number.value;
+        if (rank < 1 || rank > static_cast<std::int64_t>(body_of_rank.size())) continue;
+        const auto i = static_cast<std::size_t>(body_of_rank[static_cast<std::size_t>(rank - 1)]);
+        const grammar::DofNode& node = body.nodes.front();
+        for (std::size_t d = 0; d < 3; ++d) {
+          if (d < node.x.size()) scene.bodies.displacement_begin[i](static_cast<Eigen::Index>(d)) = node.x[d].value;
+          if (d < node.v.size()) scene.bodies.velocity_begin[i](static_cast<Eigen::Index>(d)) = node.v[d].value;
+        }
+        scene.bodies.displacement[i] = scene.bodies.displacement_begin[i];
+        scene.bodies.velocity[i] = scene.bodies.velocity_begin[i];
+      }
+  }
+  finalise_scene(scene);
+  return ok;
+}
+
+}  // namespace lmgc::solver
