@@ -13,6 +13,7 @@ void RigidBodies2D::resize(std::size_t n) {
   gyrd.assign(n, 0.0);
   bulk_behav.assign(n, 0);
   driven_mask.assign(n, 0);
+  visible.assign(n, 1);
 }
 
 }  // namespace lmgc::solver

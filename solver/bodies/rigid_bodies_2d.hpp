@@ -23,6 +23,7 @@ struct RigidBodies2D {
   std::vector<double> gyrd;                   // (n) gyration radius (I = m gyrd²) [m]
   std::vector<int> bulk_behav;                // (n) index into the bulk behaviours
   std::vector<std::uint8_t> driven_mask;      // (n) bit d set when dof d has an imposed velocity
+  std::vector<std::uint8_t> visible;          // (n) 0 once a body left the bounds: frozen, not detected
 
   std::size_t size() const { return reference.size(); }
   void resize(std::size_t n);

@@ -112,6 +112,7 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
     const Contactor2D& a = scene.contactors[i];
     const Contactor2D& b = scene.contactors[j];
     if (a.body == b.body) return;
+    if (!scene.bodies.visible[static_cast<std::size_t>(a.body)] || !scene.bodies.visible[static_cast<std::size_t>(b.body)]) return;
     const std::int32_t ci = index.contactor_class[i], cj = index.contactor_class[j];
     const bool ij = index.row[static_cast<std::size_t>(ci * index.class_count + cj)] >= 0;
     const bool ji = index.row[static_cast<std::size_t>(cj * index.class_count + ci)] >= 0;

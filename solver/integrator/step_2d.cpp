@@ -44,9 +44,11 @@ void compute_external_forces(Scene2D& scene, const RunState2D& state) {
 void compute_free_velocity(Scene2D& scene, const RunState2D& state) {
   RigidBodies2D& b = scene.bodies;
   for (std::size_t i = 0; i < b.size(); ++i)
-    b.velocity_free[i] = b.velocity_begin[i] + state.h * b.inverse_mass[i].cwiseProduct(b.external_force[i]);
+    b.velocity_free[i] = b.visible[i] ? Vector3d(b.velocity_begin[i] + state.h * b.inverse_mass[i].cwiseProduct(b.external_force[i]))
+                                      : Vector3d::Zero();
   for (const DrivenDof2D& d : scene.driven)
-    if (!d.is_force) b.velocity_free[static_cast<std::size_t>(d.body)](d.dof) = d.value(state.time);
+    if (!d.is_force && b.visible[static_cast<std::size_t>(d.body)])
+      b.velocity_free[static_cast<std::size_t>(d.body)](d.dof) = d.value(state.time);
 }
 
 void select_prox_tactors(Scene2D& scene, RunState2D& state) {
@@ -97,8 +99,31 @@ void stock_rloc(RunState2D& state) { state.previous = state.contacts; }
 void compute_dof(Scene2D& scene, const RunState2D& state) {
   RigidBodies2D& b = scene.bodies;
   for (std::size_t i = 0; i < b.size(); ++i)
-    b.displacement[i] =
-        b.displacement_begin[i] + state.h * ((1.0 - state.theta) * b.velocity_begin[i] + state.theta * b.velocity[i]);
+    if (b.visible[i])
+      b.displacement[i] =
+          b.displacement_begin[i] + state.h * ((1.0 - state.theta) * b.velocity_begin[i] + state.theta * b.velocity[i]);
+  apply_bounds(scene);
+}
+
+void apply_bounds(Scene2D& scene) {
+  RigidBodies2D& b = scene.bodies;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    if (!b.visible[i]) continue;
+    const double x = b.reference[i].x() + b.displacement[i].x();
+    const double y = b.reference[i].y() + b.displacement[i].y();
+    // First bound crossed wins, in LMGC90's order: below, above, left, right.
+    int axis = -1;
+    double limit = 0.0;
+    if (y < scene.y_min) axis = 1, limit = scene.y_min;
+    else if (y > scene.y_max) axis = 1, limit = scene.y_max;
+    else if (x < scene.x_min) axis = 0, limit = scene.x_min;
+    else if (x > scene.x_max) axis = 0, limit = scene.x_max;
+    if (axis < 0) continue;
+    b.visible[i] = 0;
+    b.velocity_begin[i].setZero();
+    b.velocity[i].setZero();
+    b.displacement[i](axis) = limit - b.reference[i](axis);
+  }
 }
 
 void update_step(Scene2D& scene) {

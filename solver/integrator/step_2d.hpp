@@ -31,6 +31,8 @@ NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& 
 void stock_rloc(RunState2D& state);
 // X = X_begin + h((1-θ) V_begin + θ V).
 void compute_dof(Scene2D& scene, const RunState2D& state);
+// Bodies out of the scene's bounds become invisible (frozen at the bound, zero velocity).
+void apply_bounds(Scene2D& scene);
 // End of step: begin ← end.
 void update_step(Scene2D& scene);
 

@@ -74,6 +74,7 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
     b.gyrd.push_back(bulk.gyrd.value);
     b.bulk_behav.push_back(0);
     b.driven_mask.push_back(0);
+    b.visible.push_back(1);
     std::int32_t rank = 0;
     for (const grammar::Contactor& t : body.contactors) {
       Contactor2D c;

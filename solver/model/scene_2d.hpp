@@ -3,6 +3,7 @@
 // dofs, and the ScenePlan that says which pair families and laws this scene uses.
 #include <Eigen/Core>
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,12 @@ struct Scene2D {
   std::vector<std::string> behaviour_names;
   // Periodic in x with this period, when > 0 (numerics.md §5.2).
   double x_period = 0.0;
+  // Bodies whose centre leaves these bounds become invisible: frozen at the bound with zero
+  // velocity and no longer detected (LMGC90 RBDY2 "out of bounds", e.g. SetYminBoundary).
+  double y_min = -std::numeric_limits<double>::infinity();
+  double y_max = std::numeric_limits<double>::infinity();
+  double x_min = -std::numeric_limits<double>::infinity();
+  double x_max = std::numeric_limits<double>::infinity();
   ScenePlan2D plan;
 };
 

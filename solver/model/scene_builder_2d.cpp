@@ -23,6 +23,7 @@ int SceneBuilder2D::add_body(double x, double y, double angle, double mass, doub
   b.gyrd.push_back(mass > 0.0 ? std::sqrt(inertia / mass) : 0.0);
   b.bulk_behav.push_back(0);
   b.driven_mask.push_back(0);
+  b.visible.push_back(1);
   return static_cast<int>(n);
 }
 
