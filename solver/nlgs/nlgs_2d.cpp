@@ -212,6 +212,13 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   result.residual_absolute = std::sqrt(residual2);
   result.residual_relative =
       result.free_velocity_norm > 0.0 ? result.residual_absolute / result.free_velocity_norm : result.residual_absolute;
+  // Contact impulses of every body (Ireac = Σ H r), driven dofs included (TORQUE EVOLUTION).
+  std::fill(bodies.impulse.begin(), bodies.impulse.end(), Vector3d::Zero());
+  for (const Interaction2D& c : contacts) {
+    const BodyRows cd = rows(c, c.lever_candidate), an = rows(c, c.lever_antagonist);
+    bodies.impulse[static_cast<std::size_t>(c.candidate_body)] += c.r(0) * cd.t + c.r(1) * cd.n;
+    bodies.impulse[static_cast<std::size_t>(c.antagonist_body)] -= c.r(0) * an.t + c.r(1) * an.n;
+  }
   for (Interaction2D& c : contacts) {
     c.u = relative_velocity(c, v);
     if (c.inactive || c.r.isZero(0.0)) {
