@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "grammar/tact_behav/law_catalogue.hpp"
+#include "grammar/tact_behav/see_table.hpp"
 #include "solver/bodies/rigid_2d_properties.hpp"
 #include "solver/model/scene_builder_2d.hpp"
 
@@ -145,7 +146,8 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
     }
     scene.laws.push_back({card.nickname.value, law});
   }
-  for (const grammar::SeeEntry& see : in.tact_behav->sees) {
+  // LMGC90 looks rows up in its own order (duplicates merged, then sorted): first match wins.
+  for (const grammar::SeeEntry& see : grammar::lmgc90_see_order(in.tact_behav->sees)) {
     if (see.candidate_body.value != "RBDY2" || see.antagonist_body.value != "RBDY2") continue;
     Visibility2D v;
     v.candidate_type = see.candidate_contactor.value == "DISKb" ? "DISKx" : see.candidate_contactor.value;

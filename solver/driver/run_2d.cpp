@@ -1,0 +1,102 @@
+#include "solver/driver/run_2d.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+
+#include "grammar/common/output_file.hpp"
+#include "grammar/dof/writer.hpp"
+#include "solver/io/display_2d.hpp"
+#include "solver/io/state_files_2d.hpp"
+
+namespace lmgc::solver {
+
+std::atomic<bool> g_stop_requested{false};
+
+namespace {
+extern "C" void on_interrupt(int) { g_stop_requested.store(true); }
+}  // namespace
+
+void install_interrupt_handler() { std::signal(SIGINT, on_interrupt); }
+
+RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D& outputs) {
+  RunSummary summary;
+  namespace fs = std::filesystem;
+  const fs::path outbox = outputs.case_dir / "OUTBOX";
+  std::error_code ec;
+  fs::create_directories(outbox, ec);
+
+  scene.y_min = options.y_min;
+  scene.y_max = options.y_max;
+  scene.x_min = options.x_min;
+  scene.x_max = options.x_max;
+  scene.x_period = options.x_period;
+
+  RunState2D state;
+  state.h = options.dt;
+  state.theta = options.theta;
+  state.visibility = build_visibility_index(scene);
+
+  Postpro2D postpro;
+  if (!outputs.postpro.empty() && !postpro.open(outputs.case_dir / "POSTPRO", outputs.postpro, summary.error))
+    return summary;
+  DisplayWriter2D display(outputs.case_dir / "DISPLAY");
+
+  // The run report: one line per step, flushed, so an interrupted run keeps what it did.
+  std::ofstream report(outbox / "run_report.csv", std::ios::trunc);
+  report << "step,time,contacts,active,iterations,converged,mean_dvor,quad_dv,quad_dvr,"
+            "residual_natural_map_over_q,kinetic_energy\n";
+
+  const bool progress = !options.quiet && isatty(STDERR_FILENO);
+  const auto start = std::chrono::steady_clock::now();
+  long written = 0;
+  auto write_state = [&](const std::string& suffix) {
+    if (!grammar::write_file_whole(outbox / ("DOF." + suffix), grammar::write_dof(dof_file_2d(scene, state)), summary.error))
+      return false;
+    if (outputs.vloc_rloc_text &&
+        !grammar::write_file_whole(outbox / ("Vloc_Rloc." + suffix), outputs.vloc_rloc_text(scene, state), summary.error))
+      return false;
+    return true;
+  };
+
+  for (long k = 0; k < options.steps; ++k) {
+    const NlgsResult result = step_2d(scene, state, options.nlgs);
+    ++summary.steps_done;
+    if (!result.converged) ++summary.steps_not_converged;
+    summary.worst_residual = std::max(summary.worst_residual, result.residual_relative);
+    report << fmt::format("{},{:.10g},{},{},{},{},{:.6e},{:.6e},{:.6e},{:.6e},{:.10e}\n", state.step, state.time,
+                          state.contacts.size(), result.active, result.iterations, result.converged ? 1 : 0,
+                          result.norms.mean_dvor, result.norms.quad_dv, result.norms.quad_dvr,
+                          result.residual_relative, kinetic_energy(scene.bodies));
+    report.flush();
+    if (!outputs.postpro.empty()) postpro.write(scene, state, result);
+    if (options.write_every > 0 && state.step % options.write_every == 0) {
+      if (!write_state("OUT." + std::to_string(++written))) break;
+    }
+    if (options.display_every > 0 && state.step % options.display_every == 0) {
+      if (!display.write(scene, state, summary.error)) break;
+    }
+    if (progress) {
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const double eta = elapsed / static_cast<double>(k + 1) * static_cast<double>(options.steps - k - 1);
+      std::fprintf(stderr, "\rstep %ld/%ld  t=%.6g  contacts=%zu  iterations=%d  residual=%.2e  ETA %.0fs   ",
+                   state.step, options.steps, state.time, state.contacts.size(), result.iterations,
+                   result.residual_relative, eta);
+    }
+    if (g_stop_requested.load()) {
+      summary.interrupted = true;
+      break;
+    }
+  }
+  if (progress) std::fprintf(stderr, "\n");
+  summary.final_time = state.time;
+  if (summary.error.empty()) write_state("LAST");
+  postpro.close();
+  return summary;
+}
+
+}  // namespace lmgc::solver

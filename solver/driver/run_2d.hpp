@@ -1,0 +1,38 @@
+#pragma once
+// The run loop of a rigid 2D case: steps, outputs (OUTBOX state files, DISPLAY, POSTPRO, run
+// report), progress on a terminal, clean stop on Ctrl-C. spec: state-and-outputs.md §1, §2.2.
+#include <atomic>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "solver/driver/run_options.hpp"
+#include "solver/integrator/step_2d.hpp"
+#include "solver/io/postpro_2d.hpp"
+
+namespace lmgc::solver {
+
+struct RunSummary {
+  long steps_done = 0;
+  long steps_not_converged = 0;
+  double worst_residual = 0.0;   // largest natural-map residual ÷ ‖q‖ of the run
+  double final_time = 0.0;
+  bool interrupted = false;
+  std::string error;             // an output could not be written
+};
+
+struct RunOutputs2D {
+  std::filesystem::path case_dir;                 // OUTBOX/, DISPLAY/, POSTPRO/ are created here
+  std::vector<PostproCommand2D> postpro;          // from POSTPRO.DAT
+  // Extra state writer (Vloc_Rloc.OUT.n / .LAST) when the grammar provides it: (path, content).
+  std::function<std::string(const Scene2D&, const RunState2D&)> vloc_rloc_text;
+};
+
+// Set by the SIGINT handler; the loop stops after the current step.
+extern std::atomic<bool> g_stop_requested;
+void install_interrupt_handler();
+
+RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D& outputs);
+
+}  // namespace lmgc::solver
