@@ -1,5 +1,10 @@
+// NLGS over 2D interactions. spec: numerics.md §3-§4, docs/lmgc90-facts/rigid-2d.md §5.
+// The sweeps run over a compact array of "hot" contacts (local frame, levers, Delassus block,
+// law shift, reaction): everything one local solve touches, in ~180 bytes, so a sweep streams
+// through memory; the full Interaction2D records are read before and written after.
 #include "solver/nlgs/nlgs_2d.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -14,42 +19,82 @@ using Eigen::Matrix2d;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 
-// H rows of one body for an interaction: t_row = (t, ℓ×t), n_row = (n, ℓ×n).
-struct BodyRows {
-  Vector3d t, n;
+struct HotContact2D {
+  std::int32_t cd = 0, an = 0;           // body indices
+  std::int32_t skip_count = 0, skip_threshold = 1;
+  std::uint8_t inactive = 0, glued = 0, wet = 0;
+  ContactStatus status = ContactStatus::noctc;
+  double nx = 0, ny = 0;                 // normal; t = (ny, -nx)
+  double gcd_t = 0, gcd_n = 0, gan_t = 0, gan_n = 0;  // ℓ×t, ℓ×n of each body
+  double wtt = 0, wtn = 0, wnn = 0;      // Delassus block W
+  double wwtt = 0, wwnn = 0;             // modified diagonal of the law (WW off-diagonal = W's)
+  double cov_t = 0, cov_n = 0;           // law shift of the free velocity
+  double cor_t = 0, cor_n = 0;           // law correction added to the reaction
+  double mu = 0;
+  double rt = 0, rn = 0;                 // impulse
 };
-BodyRows rows(const Interaction2D& c, const Vector2d& lever) {
-  return {Vector3d(c.tangent.x(), c.tangent.y(), lever(0)), Vector3d(c.normal.x(), c.normal.y(), lever(1))};
+
+inline Vector2d relative_velocity(const HotContact2D& c, const std::vector<Vector3d>& v) {
+  const Vector3d& a = v[static_cast<std::size_t>(c.cd)];
+  const Vector3d& b = v[static_cast<std::size_t>(c.an)];
+  const double tx = c.ny, ty = -c.nx;
+  const double ut = tx * (a.x() - b.x()) + ty * (a.y() - b.y()) + c.gcd_t * a.z() - c.gan_t * b.z();
+  const double un = c.nx * (a.x() - b.x()) + c.ny * (a.y() - b.y()) + c.gcd_n * a.z() - c.gan_n * b.z();
+  return Vector2d(ut, un);
 }
 
-// Relative velocity (t, n) of the candidate w.r.t. the antagonist for body velocities.
-Vector2d relative_velocity(const Interaction2D& c, const std::vector<Vector3d>& v) {
-  const BodyRows cd = rows(c, c.lever_candidate), an = rows(c, c.lever_antagonist);
-  const Vector3d& vc = v[static_cast<std::size_t>(c.candidate_body)];
-  const Vector3d& va = v[static_cast<std::size_t>(c.antagonist_body)];
-  return Vector2d(cd.t.dot(vc) - an.t.dot(va), cd.n.dot(vc) - an.n.dot(va));
-}
-
-// Adds the velocity change M⁻¹ H Δr of both bodies.
-void inject(const Interaction2D& c, const Vector2d& dr, const std::vector<Vector3d>& inverse_mass,
-            std::vector<Vector3d>& v) {
-  const BodyRows cd = rows(c, c.lever_candidate), an = rows(c, c.lever_antagonist);
-  const auto icd = static_cast<std::size_t>(c.candidate_body), ian = static_cast<std::size_t>(c.antagonist_body);
-  v[icd] += inverse_mass[icd].cwiseProduct(dr(0) * cd.t + dr(1) * cd.n);
-  v[ian] -= inverse_mass[ian].cwiseProduct(dr(0) * an.t + dr(1) * an.n);
+inline void inject(const HotContact2D& c, double dt_, double dn, const std::vector<Vector3d>& inverse_mass,
+                   std::vector<Vector3d>& v) {
+  const double tx = c.ny, ty = -c.nx;
+  const double fx = dt_ * tx + dn * c.nx, fy = dt_ * ty + dn * c.ny;
+  const auto i = static_cast<std::size_t>(c.cd), j = static_cast<std::size_t>(c.an);
+  const Vector3d& mi = inverse_mass[i];
+  const Vector3d& mj = inverse_mass[j];
+  v[i] += Vector3d(mi.x() * fx, mi.y() * fy, mi.z() * (dt_ * c.gcd_t + dn * c.gcd_n));
+  v[j] -= Vector3d(mj.x() * fx, mj.y() * fy, mj.z() * (dt_ * c.gan_t + dn * c.gan_n));
 }
 
 Matrix2d delassus_block(const Interaction2D& c, const std::vector<Vector3d>& inverse_mass) {
   Matrix2d W = Matrix2d::Zero();
   for (int side = 0; side < 2; ++side) {
-    const BodyRows b = rows(c, side == 0 ? c.lever_candidate : c.lever_antagonist);
+    const Vector2d& lever = side == 0 ? c.lever_candidate : c.lever_antagonist;
+    const Vector3d t(c.tangent.x(), c.tangent.y(), lever(0)), n(c.normal.x(), c.normal.y(), lever(1));
     const Vector3d& m = inverse_mass[static_cast<std::size_t>(side == 0 ? c.candidate_body : c.antagonist_body)];
-    W(0, 0) += b.t.cwiseProduct(m).dot(b.t);
-    W(0, 1) += b.t.cwiseProduct(m).dot(b.n);
-    W(1, 1) += b.n.cwiseProduct(m).dot(b.n);
+    W(0, 0) += t.cwiseProduct(m).dot(t);
+    W(0, 1) += t.cwiseProduct(m).dot(n);
+    W(1, 1) += n.cwiseProduct(m).dot(n);
   }
   W(1, 0) = W(0, 1);
   return W;
+}
+
+ContactStatus wet_status(ContactStatus s) {
+  switch (s) {
+    case ContactStatus::noctc: return ContactStatus::Wnctc;
+    case ContactStatus::stick: return ContactStatus::Wstck;
+    case ContactStatus::slibw: return ContactStatus::Wslbw;
+    case ContactStatus::slifw: return ContactStatus::Wslfw;
+    default: return s;
+  }
+}
+
+// The law's reaction (correction included) for the local free velocity ufree_loc.
+inline void local_solve(const HotContact2D& c, double uft, double ufn, double& rt, double& rn, ContactStatus& status) {
+  const double vt = uft + c.cov_t, vn = ufn + c.cov_n;
+  if (c.glued) {
+    // Bilateral glue: WW r = -v.
+    const double det = c.wwtt * c.wwnn - c.wtn * c.wtn;
+    rt = -(c.wwnn * vt - c.wtn * vn) / det;
+    rn = -(-c.wtn * vt + c.wwtt * vn) / det;
+    status = ContactStatus::stick;
+    return;
+  }
+  Matrix2d WW;
+  WW << c.wwtt, c.wtn, c.wtn, c.wwnn;
+  const LocalSolution2D s = solve_signorini_coulomb_2d(WW, Vector2d(vt, vn), c.mu);
+  rt = s.r(0) + c.cor_t;
+  rn = s.r(1) + c.cor_n;
+  status = c.wet && (c.cor_n != 0.0 || c.cor_t != 0.0) ? wet_status(s.status) : s.status;
 }
 
 bool check_passes(NlgsNorm norm, const NlgsNorms& q) {
@@ -71,56 +116,88 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   NlgsResult result;
   const std::size_t count = contacts.size();
   std::vector<Vector3d>& v = bodies.velocity;
-  // Start from the free velocity plus the warm-start reactions.
-  v = bodies.velocity_free;
-  std::vector<double> q_norm2(count, 0.0);
-  for (Interaction2D& c : contacts) {
-    c.W = delassus_block(c, bodies.inverse_mass);
-    prepare_local_problem_2d(scene.laws[static_cast<std::size_t>(c.law)].law, c, h);
-    if (c.inactive) c.r.setZero();
-    c.skip_count = 0;
-    c.skip_threshold = 1;
-  }
-  for (std::size_t a = 0; a < count; ++a) {
-    const Interaction2D& c = contacts[a];
-    q_norm2[a] = (relative_velocity(c, bodies.velocity_free) + c.covfree).squaredNorm();
-    if (!c.r.isZero(0.0)) inject(c, c.r, bodies.inverse_mass, v);
-  }
-  result.free_velocity_norm = std::sqrt(std::accumulate(q_norm2.begin(), q_norm2.end(), 0.0));
+  const std::vector<Vector3d>& inverse_mass = bodies.inverse_mass;
 
-  std::vector<std::size_t> order(count);
-  std::iota(order.begin(), order.end(), 0);
+  // Prep: Delassus blocks, the laws' local problems, the hot array; V = V_free + M⁻¹ H r_warm.
+  std::vector<HotContact2D> hot(count);
+  v = bodies.velocity_free;
+  double q2 = 0.0;
+  for (std::size_t a = 0; a < count; ++a) {
+    Interaction2D& c = contacts[a];
+    const ContactLaw& law = scene.laws[static_cast<std::size_t>(c.law)].law;
+    c.W = delassus_block(c, inverse_mass);
+    prepare_local_problem_2d(law, c, h);
+    if (c.inactive) c.r.setZero();
+    HotContact2D& k = hot[a];
+    k.cd = c.candidate_body;
+    k.an = c.antagonist_body;
+    k.inactive = c.inactive;
+    k.glued = std::holds_alternative<CoupledDof>(law);
+    k.wet = std::holds_alternative<IqsWetDsClb>(law);
+    k.status = c.status;
+    k.nx = c.normal.x();
+    k.ny = c.normal.y();
+    k.gcd_t = c.lever_candidate(0);
+    k.gcd_n = c.lever_candidate(1);
+    k.gan_t = c.lever_antagonist(0);
+    k.gan_n = c.lever_antagonist(1);
+    k.wtt = c.W(0, 0);
+    k.wtn = c.W(0, 1);
+    k.wnn = c.W(1, 1);
+    k.wwtt = c.WW(0, 0);
+    k.wwnn = c.WW(1, 1);
+    k.cov_t = c.covfree(0);
+    k.cov_n = c.covfree(1);
+    k.cor_t = c.correction(0);
+    k.cor_n = c.correction(1);
+    k.mu = c.mu;
+    k.rt = c.r(0);
+    k.rn = c.r(1);
+    // ‖q‖: free local velocities of the problem (law shifts included), fc3d/FORMAT.md §3.
+    q2 += (relative_velocity(k, bodies.velocity_free) + Vector2d(k.cov_t, k.cov_n)).squaredNorm();
+  }
+  for (const HotContact2D& k : hot)
+    if (k.rt != 0.0 || k.rn != 0.0) inject(k, k.rt, k.rn, inverse_mass, v);
+  result.free_velocity_norm = std::sqrt(q2);
+
+  std::vector<std::uint32_t> order(count);
+  std::iota(order.begin(), order.end(), 0u);
   std::mt19937 random(12345u);
+  const double relax = options.relax, keep = 1.0 - options.relax;
 
   // One Gauss–Seidel pass; the post pass never skips and is not counted as an iteration.
   auto sweep = [&](bool post) {
-    for (std::size_t k : order) {
-      Interaction2D& c = contacts[k];
-      const ContactLaw& law = scene.laws[static_cast<std::size_t>(c.law)].law;
+    for (std::uint32_t index : order) {
+      HotContact2D& c = hot[index];
       if (c.inactive) {
-        if (!c.r.isZero(0.0)) {
-          inject(c, -c.r, bodies.inverse_mass, v);
-          c.r.setZero();
+        if (c.rt != 0.0 || c.rn != 0.0) {
+          inject(c, -c.rt, -c.rn, inverse_mass, v);
+          c.rt = c.rn = 0.0;
         }
         c.status = ContactStatus::noctc;
         continue;
       }
-      // Vanishing contacts are visited less and less often (numerics.md §4 skip heuristic).
-      if (!post && c.r.isZero(0.0)) {
+      // Vanishing contacts are visited on their 1st, 3rd, 6th, 10th... zero visits.
+      if (!post && c.rt == 0.0 && c.rn == 0.0) {
         if (++c.skip_count < c.skip_threshold * (c.skip_threshold + 1) / 2) continue;
         ++c.skip_threshold;
       }
       const Vector2d u = relative_velocity(c, v);
-      const Vector2d ufree_loc = u - c.W * c.r;
-      const LocalSolution2D s = solve_local_problem_2d(law, c, ufree_loc);
-      Vector2d r = options.relax * s.r + (1.0 - options.relax) * c.r;
-      if (std::fabs(r(0)) < 1e-24) r(0) = 0.0;
-      if (std::fabs(r(1)) < 1e-24) r(1) = 0.0;
-      const Vector2d dr = r - c.r;
-      if (!dr.isZero(0.0)) inject(c, dr, bodies.inverse_mass, v);
-      c.r = r;
-      c.status = s.status;
-      if (!r.isZero(0.0)) {
+      const double uft = u(0) - (c.wtt * c.rt + c.wtn * c.rn);
+      const double ufn = u(1) - (c.wtn * c.rt + c.wnn * c.rn);
+      double rt, rn;
+      ContactStatus status;
+      local_solve(c, uft, ufn, rt, rn, status);
+      rt = relax * rt + keep * c.rt;
+      rn = relax * rn + keep * c.rn;
+      if (std::fabs(rt) < 1e-24) rt = 0.0;
+      if (std::fabs(rn) < 1e-24) rn = 0.0;
+      const double drt = rt - c.rt, drn = rn - c.rn;
+      if (drt != 0.0 || drn != 0.0) inject(c, drt, drn, inverse_mass, v);
+      c.rt = rt;
+      c.rn = rn;
+      c.status = status;
+      if (rt != 0.0 || rn != 0.0) {
         c.skip_count = 0;
         c.skip_threshold = 1;
       }
@@ -128,38 +205,64 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     if (!post) ++result.iterations;
   };
 
-  // One check pass: the local solve applied to the current state without updating it.
+  // Natural-map residual of one hot contact at the current state (law in auxiliary variables).
+  auto residual2_of = [&](const HotContact2D& c, double uft, double ufn) {
+    if (c.inactive) return c.rt * c.rt + c.rn * c.rn;
+    const double rrt = c.rt - c.cor_t, rrn = c.rn - c.cor_n;
+    const double ut = uft + c.cov_t + c.wwtt * rrt + c.wtn * rrn;
+    const double un = ufn + c.cov_n + c.wtn * rrt + c.wwnn * rrn;
+    if (c.glued) return ut * ut + un * un;
+    return natural_map_residual_squared_2d(Vector2d(rrt, rrn), Vector2d(ut, un), c.mu);
+  };
+
+  // One check pass (numerics.md §4.1): the local solve applied to the current state, no update.
   auto check = [&]() {
     double sum_dvdv = 0, max_dvdv = 0, sum_dvdvrr = 0, max_dvdvrr = 0, sum_dvor = 0, sum_wrr = 0, sum_wrwr = 0;
     double residual2 = 0;
     std::size_t vanishing = 0;
     result.active = 0;
-    for (std::size_t k = 0; k < count; ++k) {
-      Interaction2D& c = contacts[k];
-      // The skip heuristic restarts after every check.
-      c.skip_count = 0;
+    const bool normal_only = options.norm == NlgsNorm::quad_normal;
+    for (HotContact2D& c : hot) {
+      c.skip_count = 0;  // the skip heuristic restarts after every check
       c.skip_threshold = 1;
-      const ContactLaw& law = scene.laws[static_cast<std::size_t>(c.law)].law;
       const Vector2d u = relative_velocity(c, v);
-      const Vector2d ufree_loc = u - c.W * c.r;
-      residual2 += local_residual_squared_2d(law, c, c.r, ufree_loc);
-      Vector2d r = c.r, r2 = Vector2d::Zero();
-      if (!c.inactive) r2 = solve_local_problem_2d(law, c, ufree_loc).r;
-      else r.setZero();
-      const Vector2d u2 = c.W * r2 + ufree_loc;
-      const Vector2d mean = 0.5 * (r + r2);
-      const Vector2d dv = u - u2;
-      if (mean.isZero(0.0)) ++vanishing;
-      if (!c.r.isZero(0.0)) ++result.active;
-      const double dvdv = dv.squaredNorm();
+      const double uft = u(0) - (c.wtt * c.rt + c.wtn * c.rn);
+      const double ufn = u(1) - (c.wtn * c.rt + c.wnn * c.rn);
+      residual2 += residual2_of(c, uft, ufn);
+      double r1t = c.rt, r1n = c.rn, r2t = 0, r2n = 0;
+      if (!c.inactive) {
+        ContactStatus status;
+        local_solve(c, uft, ufn, r2t, r2n, status);
+      } else {
+        r1t = r1n = 0.0;
+      }
+      const double u2t = c.wtt * r2t + c.wtn * r2n + uft, u2n = c.wtn * r2t + c.wnn * r2n + ufn;
+      const double mt = 0.5 * (r1t + r2t), mn = 0.5 * (r1n + r2n);
+      const double dvt = u(0) - u2t, dvn = u(1) - u2n;
+      if (mt == 0.0 && mn == 0.0) ++vanishing;
+      if (c.rt != 0.0 || c.rn != 0.0) ++result.active;
+      if (normal_only) {
+        // 'QuaN ': normal components only.
+        const double dvdv = dvn * dvn, wrr = 0.5 * c.wnn * (r1n * r1n + r2n * r2n);
+        sum_dvdv += dvdv;
+        max_dvdv = std::max(max_dvdv, dvdv);
+        sum_dvdvrr += dvdv * mn * mn;
+        max_dvdvrr = std::max(max_dvdvrr, dvdv * mn * mn);
+        sum_dvor += mn * dvn;
+        sum_wrr += wrr;
+        sum_wrwr += c.wnn * wrr;
+        continue;
+      }
+      const double dvdv = dvt * dvt + dvn * dvn, rr = mt * mt + mn * mn;
       sum_dvdv += dvdv;
       max_dvdv = std::max(max_dvdv, dvdv);
-      sum_dvdvrr += dvdv * mean.squaredNorm();
-      max_dvdvrr = std::max(max_dvdvrr, dvdv * mean.squaredNorm());
-      sum_dvor += mean.dot(dv);
-      const Vector2d wr = c.W * r, wr2 = c.W * r2;
-      sum_wrr += 0.5 * (wr.dot(r) + wr2.dot(r2));
-      sum_wrwr += 0.5 * (wr.squaredNorm() + wr2.squaredNorm());
+      sum_dvdvrr += dvdv * rr;
+      max_dvdvrr = std::max(max_dvdvrr, dvdv * rr);
+      sum_dvor += mt * dvt + mn * dvn;
+      const double w1t = c.wtt * r1t + c.wtn * r1n, w1n = c.wtn * r1t + c.wnn * r1n;
+      const double w2t = c.wtt * r2t + c.wtn * r2n, w2n = c.wtn * r2t + c.wnn * r2n;
+      sum_wrr += 0.5 * (w1t * r1t + w1n * r1n + w2t * r2t + w2n * r2n);
+      sum_wrwr += 0.5 * (w1t * w1t + w1n * w1n + w2t * w2t + w2n * w2n);
     }
     result.residual_absolute = std::sqrt(residual2);
     result.residual_relative =
@@ -198,34 +301,32 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   // Post (docs/lmgc90-facts/rigid-2d.md §5.3): velocities rebuilt from scratch (Rnod = H r),
   // one more relaxed sweep, then the final local velocities and statuses.
   v = bodies.velocity_free;
-  for (const Interaction2D& c : contacts)
-    if (!c.r.isZero(0.0)) inject(c, c.r, bodies.inverse_mass, v);
+  for (const HotContact2D& k : hot)
+    if (k.rt != 0.0 || k.rn != 0.0) inject(k, k.rt, k.rn, inverse_mass, v);
   if (count > 0) sweep(true);
   // The achieved error is the one of the reactions actually returned (after the post sweep).
   double residual2 = 0.0;
   result.active = 0;
-  for (const Interaction2D& c : contacts) {
-    const Vector2d u = relative_velocity(c, v);
-    residual2 += local_residual_squared_2d(scene.laws[static_cast<std::size_t>(c.law)].law, c, c.r, u - c.W * c.r);
-    if (!c.r.isZero(0.0)) ++result.active;
+  std::fill(bodies.impulse.begin(), bodies.impulse.end(), Vector3d::Zero());
+  for (std::size_t a = 0; a < count; ++a) {
+    const HotContact2D& k = hot[a];
+    Interaction2D& c = contacts[a];
+    const Vector2d u = relative_velocity(k, v);
+    residual2 += residual2_of(k, u(0) - (k.wtt * k.rt + k.wtn * k.rn), u(1) - (k.wtn * k.rt + k.wnn * k.rn));
+    if (k.rt != 0.0 || k.rn != 0.0) ++result.active;
+    c.r = Vector2d(k.rt, k.rn);
+    c.u = u;
+    c.status = (k.rt == 0.0 && k.rn == 0.0 && !k.wet) ? ContactStatus::noctc : k.status;
+    // Contact impulses of every body (Ireac = Σ H r), driven dofs included (TORQUE EVOLUTION).
+    const double tx = k.ny, ty = -k.nx;
+    const Vector3d f(k.rt * tx + k.rn * k.nx, k.rt * ty + k.rn * k.ny, 0.0);
+    bodies.impulse[static_cast<std::size_t>(k.cd)] += f + Vector3d(0, 0, k.rt * k.gcd_t + k.rn * k.gcd_n);
+    bodies.impulse[static_cast<std::size_t>(k.an)] -= f + Vector3d(0, 0, k.rt * k.gan_t + k.rn * k.gan_n);
+    finish_step_2d(scene.laws[static_cast<std::size_t>(c.law)].law, c, h);
   }
   result.residual_absolute = std::sqrt(residual2);
   result.residual_relative =
       result.free_velocity_norm > 0.0 ? result.residual_absolute / result.free_velocity_norm : result.residual_absolute;
-  // Contact impulses of every body (Ireac = Σ H r), driven dofs included (TORQUE EVOLUTION).
-  std::fill(bodies.impulse.begin(), bodies.impulse.end(), Vector3d::Zero());
-  for (const Interaction2D& c : contacts) {
-    const BodyRows cd = rows(c, c.lever_candidate), an = rows(c, c.lever_antagonist);
-    bodies.impulse[static_cast<std::size_t>(c.candidate_body)] += c.r(0) * cd.t + c.r(1) * cd.n;
-    bodies.impulse[static_cast<std::size_t>(c.antagonist_body)] -= c.r(0) * an.t + c.r(1) * an.n;
-  }
-  for (Interaction2D& c : contacts) {
-    c.u = relative_velocity(c, v);
-    if (c.inactive || c.r.isZero(0.0)) {
-      if (c.r.isZero(0.0)) c.status = ContactStatus::noctc;
-    }
-    finish_step_2d(scene.laws[static_cast<std::size_t>(c.law)].law, c, h);
-  }
   return result;
 }
 
