@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <unordered_map>
 
 #include "solver/detection/pair_geometry_2d.hpp"
 
@@ -48,6 +47,7 @@ VisibilityIndex2D build_visibility_index(const Scene2D& scene) {
   }
   index.class_count = static_cast<std::int32_t>(class_keys.size());
   index.row.assign(static_cast<std::size_t>(index.class_count * index.class_count), -1);
+  index.family.assign(static_cast<std::size_t>(index.class_count * index.class_count), -1);
   // First matching row wins, looked up in either order; the pair family fixes the roles
   // (contact-laws.md §1.2).
   for (std::int32_t a = 0; a < index.class_count; ++a)
@@ -56,6 +56,7 @@ VisibilityIndex2D build_visibility_index(const Scene2D& scene) {
       const auto& [tb, cb] = class_keys[static_cast<std::size_t>(b)];
       PairFamily2D family;
       if (!pair_family_of(ta, tb, family)) continue;
+      index.family[static_cast<std::size_t>(a * index.class_count + b)] = static_cast<std::int8_t>(family);
       for (std::size_t v = 0; v < scene.visibility.size(); ++v) {
         const Visibility2D& s = scene.visibility[v];
         const bool direct = s.candidate_type == ta && s.candidate_color == ca && s.antagonist_type == tb &&
@@ -127,35 +128,38 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
       lo = lo.cwiseMin(centre[i]);
       hi = hi.cwiseMax(centre[i]);
     }
-    const auto nx = static_cast<std::int64_t>(std::floor((hi.x() - lo.x()) / cell)) + 1;
-    const auto ny = static_cast<std::int64_t>(std::floor((hi.y() - lo.y()) / cell)) + 1;
-    std::unordered_map<std::int64_t, std::vector<std::size_t>> cells;
+    // Cells as (key, contactor) pairs sorted by key: deterministic and allocation-light.
+    const auto ny = static_cast<std::int64_t>(std::floor((hi.y() - lo.y()) / cell)) + 3;
+    auto key = [&](std::int64_t x, std::int64_t y) { return x * ny + y; };
+    std::vector<std::pair<std::int64_t, std::uint32_t>> cells;
     cells.reserve(small.size());
-    auto key = [&](std::int64_t x, std::int64_t y) { return x * (ny + 2) + y; };
     std::vector<std::pair<std::int64_t, std::int64_t>> where(n);
     for (std::size_t i : small) {
-      const auto x = static_cast<std::int64_t>(std::floor((centre[i].x() - lo.x()) / cell));
-      const auto y = static_cast<std::int64_t>(std::floor((centre[i].y() - lo.y()) / cell));
+      const auto x = static_cast<std::int64_t>(std::floor((centre[i].x() - lo.x()) / cell)) + 1;
+      const auto y = static_cast<std::int64_t>(std::floor((centre[i].y() - lo.y()) / cell)) + 1;
       where[i] = {x, y};
-      cells[key(x, y)].push_back(i);
+      cells.emplace_back(key(x, y), static_cast<std::uint32_t>(i));
     }
-    (void)nx;
+    std::sort(cells.begin(), cells.end());
     for (std::size_t i : small) {
       const auto [x, y] = where[i];
       for (std::int64_t dx = -1; dx <= 1; ++dx)
         for (std::int64_t dy = -1; dy <= 1; ++dy) {
-          auto it = cells.find(key(x + dx, y + dy));
-          if (it == cells.end()) continue;
-          for (std::size_t j : it->second)
-            if (j > i) consider(i, j);
+          const std::int64_t k = key(x + dx, y + dy);
+          auto it = std::lower_bound(cells.begin(), cells.end(), std::make_pair(k, std::uint32_t{0}));
+          for (; it != cells.end() && it->first == k; ++it)
+            if (it->second > i) consider(i, it->second);
         }
     }
   }
   for (std::size_t b : big)
     for (std::size_t j = 0; j < n; ++j)
       if (j != b && !(std::find(big.begin(), big.end(), j) != big.end() && j < b)) consider(std::min(b, j), std::max(b, j));
-  std::sort(rough.begin(), rough.end());
-  rough.erase(std::unique(rough.begin(), rough.end()), rough.end());
+  if (!big.empty()) {
+    // Only pairs with a big contactor can be found twice.
+    std::sort(rough.begin(), rough.end());
+    rough.erase(std::unique(rough.begin(), rough.end()), rough.end());
+  }
 
   // Fine detection, with the roles of the pair family.
   std::vector<Vector2d> vertices_cd, normals_cd, vertices_an, normals_an;
@@ -171,15 +175,16 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
   };
   for (auto [i, j] : rough) {
     const std::int32_t ci = index.contactor_class[i], cj = index.contactor_class[j];
-    std::int32_t v = index.row[static_cast<std::size_t>(ci * index.class_count + cj)];
+    std::size_t pair = static_cast<std::size_t>(ci * index.class_count + cj);
     std::size_t cd = i, an = j;
-    PairFamily2D family;
-    if (v < 0 || !pair_family_of(scene.contactors[i].type, scene.contactors[j].type, family)) {
-      v = index.row[static_cast<std::size_t>(cj * index.class_count + ci)];
+    if (index.row[pair] < 0 || index.family[pair] < 0) {
+      pair = static_cast<std::size_t>(cj * index.class_count + ci);
       cd = j;
       an = i;
-      if (v < 0 || !pair_family_of(scene.contactors[cd].type, scene.contactors[an].type, family)) continue;
+      if (index.row[pair] < 0 || index.family[pair] < 0) continue;
     }
+    const std::int32_t v = index.row[pair];
+    const auto family = static_cast<PairFamily2D>(index.family[pair]);
     const Visibility2D& see = scene.visibility[static_cast<std::size_t>(v)];
     const Contactor2D& C = scene.contactors[cd];
     const Contactor2D& A = scene.contactors[an];

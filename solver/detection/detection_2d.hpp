@@ -17,6 +17,8 @@ struct VisibilityIndex2D {
   // (class_count²) visibility row for (candidate class, antagonist class), -1 when not visible;
   // the roles are already resolved: entry (a, b) means a is the candidate.
   std::vector<std::int32_t> row;
+  // (class_count²) pair family of (candidate class, antagonist class), -1 when LMGC90 has none.
+  std::vector<std::int8_t> family;
   double max_alert = 0.0;
 };
 

@@ -17,6 +17,42 @@ struct LocalSolution2D {
 
 LocalSolution2D solve_signorini_coulomb_2d(const Eigen::Matrix2d& W, const Eigen::Vector2d& q, double mu);
 
+// The same enumeration on scalars, inlined in the NLGS sweep (W symmetric: wtn = wnt).
+// Returns false on a degenerate block or NaN (r left at 0).
+inline bool solve_signorini_coulomb_2d(double wtt, double wtn, double wnn, double qt, double qn, double mu,
+                                       double& rt, double& rn, ContactStatus& status) {
+  rt = rn = 0.0;
+  if (qn >= 0.0) {
+    status = ContactStatus::noctc;
+    return true;
+  }
+  const double det = wtt * wnn - wtn * wtn;
+  const double dft = -(wnn * qt - wtn * qn);
+  const double dfn = -(-wtn * qt + wtt * qn);
+  const double cf = dft + mu * dfn;
+  const double cb = dft - mu * dfn;
+  if (cf < 0.0) {
+    const double forward = wnn - mu * wtn;
+    if (forward <= 1e-18) return false;
+    rn = -qn / forward;
+    rt = -mu * rn;
+    status = ContactStatus::slifw;
+  } else if (cb > 0.0) {
+    const double backward = wnn + mu * wtn;
+    if (backward <= 1e-18) return false;
+    rn = -qn / backward;
+    rt = mu * rn;
+    status = ContactStatus::slibw;
+  } else if (cf >= 0.0 && cb <= 0.0 && det != 0.0) {
+    rn = dfn / det;
+    rt = dft / det;
+    status = ContactStatus::stick;
+  } else {
+    return false;
+  }
+  return true;
+}
+
 // Natural-map residual of one contact (fc3d/FORMAT.md §3, scalar tangent), for u = W r + q:
 // F = r - P_K(r - u - (mu |u_t|) e_n), returned as |F|^2.
 double natural_map_residual_squared_2d(const Eigen::Vector2d& r, const Eigen::Vector2d& u, double mu);

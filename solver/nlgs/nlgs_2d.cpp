@@ -89,12 +89,11 @@ inline void local_solve(const HotContact2D& c, double uft, double ufn, double& r
     status = ContactStatus::stick;
     return;
   }
-  Matrix2d WW;
-  WW << c.wwtt, c.wtn, c.wtn, c.wwnn;
-  const LocalSolution2D s = solve_signorini_coulomb_2d(WW, Vector2d(vt, vn), c.mu);
-  rt = s.r(0) + c.cor_t;
-  rn = s.r(1) + c.cor_n;
-  status = c.wet && (c.cor_n != 0.0 || c.cor_t != 0.0) ? wet_status(s.status) : s.status;
+  ContactStatus plain = ContactStatus::noctc;
+  solve_signorini_coulomb_2d(c.wwtt, c.wtn, c.wwnn, vt, vn, c.mu, rt, rn, plain);
+  rt += c.cor_t;
+  rn += c.cor_n;
+  status = c.wet && (c.cor_n != 0.0 || c.cor_t != 0.0) ? wet_status(plain) : plain;
 }
 
 bool check_passes(NlgsNorm norm, const NlgsNorms& q) {
