@@ -87,13 +87,18 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
     orientation[i] = rotation(q.z());
     centre[i] = q.head<2>() + orientation[i] * c.shift;
   }
+  // Periodic images: a contactor taken one period to the right (+1) or left (-1) for one pair.
+  std::vector<double> image_shift(n, 0.0);
+  auto body_position = [&](std::size_t k) {
+    const Vector3d& q = coordinates[static_cast<std::size_t>(scene.contactors[k].body)];
+    return Vector2d(q.x() + image_shift[k], q.y());
+  };
   auto world_polygon = [&](std::size_t i, std::vector<Vector2d>& vertices) {
     const Contactor2D& c = scene.contactors[i];
-    const Vector3d& q = coordinates[static_cast<std::size_t>(c.body)];
+    const Vector2d q = body_position(i);
     vertices.resize(static_cast<std::size_t>(c.vertex_count));
     for (std::int32_t k = 0; k < c.vertex_count; ++k)
-      vertices[static_cast<std::size_t>(k)] =
-          q.head<2>() + orientation[i] * scene.vertices[static_cast<std::size_t>(c.first_vertex + k)];
+      vertices[static_cast<std::size_t>(k)] = q + orientation[i] * scene.vertices[static_cast<std::size_t>(c.first_vertex + k)];
   };
 
   // Rough detection: grid of cells of size 2·R_typical + alert; contactors larger than a cell are
@@ -108,7 +113,14 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
   std::vector<std::size_t> small, big;
   for (std::size_t i = 0; i < n; ++i) (radii[i] * 2.0 > cell ? big : small).push_back(i);
 
-  std::vector<std::pair<std::size_t, std::size_t>> rough;
+  // Rough pairs (i < j); `shift` moves j by that many periods (periodic pairs only).
+  struct RoughPair {
+    std::size_t i, j;
+    int shift;
+    bool operator<(const RoughPair& o) const { return std::tie(i, j, shift) < std::tie(o.i, o.j, o.shift); }
+    bool operator==(const RoughPair& o) const { return i == o.i && j == o.j && shift == o.shift; }
+  };
+  std::vector<RoughPair> rough;
   auto consider = [&](std::size_t i, std::size_t j) {
     const Contactor2D& a = scene.contactors[i];
     const Contactor2D& b = scene.contactors[j];
@@ -120,7 +132,7 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
     if (!ij && !ji) return;
     const double reach = radii[i] + radii[j] + index.max_alert;
     if ((centre[i] - centre[j]).squaredNorm() > reach * reach) return;
-    rough.emplace_back(std::min(i, j), std::max(i, j));
+    rough.push_back({std::min(i, j), std::max(i, j), 0});
   };
   if (!small.empty()) {
     Vector2d lo = centre[small[0]], hi = lo;
@@ -155,8 +167,35 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
   for (std::size_t b : big)
     for (std::size_t j = 0; j < n; ++j)
       if (j != b && !(std::find(big.begin(), big.end(), j) != big.end() && j < b)) consider(std::min(b, j), std::max(b, j));
-  if (!big.empty()) {
-    // Only pairs with a big contactor can be found twice.
+  // Periodic in x: contactors near the right edge against images of those near the left edge
+  // (docs/lmgc90-facts/rigid-2d.md §6). JONCx and points have no periodic pairs in LMGC90.
+  if (scene.x_period > 0.0) {
+    double widest = 0.0;
+    for (double r : radii) widest = std::max(widest, r);
+    const double band = 2.0 * widest + index.max_alert;
+    std::vector<std::size_t> left, right;
+    for (std::size_t k = 0; k < n; ++k) {
+      const ContactorShape2D shape = scene.contactors[k].shape;
+      if (shape != ContactorShape2D::disk && shape != ContactorShape2D::polygon) continue;
+      if (centre[k].x() < band) left.push_back(k);
+      if (centre[k].x() > scene.x_period - band) right.push_back(k);
+    }
+    for (std::size_t a : right)
+      for (std::size_t b : left) {
+        if (a == b || scene.contactors[a].body == scene.contactors[b].body) continue;
+        const std::int32_t ca = index.contactor_class[a], cb = index.contactor_class[b];
+        if (index.row[static_cast<std::size_t>(ca * index.class_count + cb)] < 0 &&
+            index.row[static_cast<std::size_t>(cb * index.class_count + ca)] < 0)
+          continue;
+        const double reach = radii[a] + radii[b] + index.max_alert;
+        if ((centre[b] + Vector2d(scene.x_period, 0.0) - centre[a]).squaredNorm() > reach * reach) continue;
+        // The lower index keeps its place; the other one is the image.
+        if (a < b) rough.push_back({a, b, +1});
+        else rough.push_back({b, a, -1});
+      }
+  }
+  if (!big.empty() || scene.x_period > 0.0) {
+    // Only pairs with a big contactor (or periodic images) can be found twice.
     std::sort(rough.begin(), rough.end());
     rough.erase(std::unique(rough.begin(), rough.end()), rough.end());
   }
@@ -173,7 +212,26 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
     }
     return PolygonView{vertices, normals, centre[k]};
   };
-  for (auto [i, j] : rough) {
+  for (const RoughPair& rp : rough) {
+    const std::size_t i = rp.i, j = rp.j;
+    if (rp.shift != 0) {
+      const ContactorShape2D si = scene.contactors[i].shape, sj = scene.contactors[j].shape;
+      const bool periodic_family = (si == ContactorShape2D::disk || si == ContactorShape2D::polygon) &&
+                                   (sj == ContactorShape2D::disk || sj == ContactorShape2D::polygon);
+      if (!periodic_family) continue;
+    }
+    // Place j's periodic image for this pair (restored below).
+    image_shift[j] = rp.shift * scene.x_period;
+    centre[j].x() += image_shift[j];
+    struct Restore {
+      std::vector<Vector2d>& centre;
+      std::vector<double>& shift;
+      std::size_t j;
+      ~Restore() {
+        centre[j].x() -= shift[j];
+        shift[j] = 0.0;
+      }
+    } restore{centre, image_shift, j};
     const std::int32_t ci = index.contactor_class[i], cj = index.contactor_class[j];
     std::size_t pair = static_cast<std::size_t>(ci * index.class_count + cj);
     std::size_t cd = i, an = j;
@@ -233,14 +291,16 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
       c.point = f.point;
       c.gap_begin = f.gap;
       c.length = f.length;
+      // The antagonist's image offset, in periods (negative when the candidate was the image).
+      c.periodic_shift = rp.shift == 0 ? 0 : (can == j ? rp.shift : -rp.shift);
       // Levers from the body centres: add the contactor's offset on its body, except for JONCx and
       // xKSID antagonists, measured from the contactor itself in LMGC90.
-      const Vector2d offset_cd = centre[ccd] - coordinates[static_cast<std::size_t>(Ccd.body)].head<2>();
+      const Vector2d offset_cd = centre[ccd] - body_position(ccd);
       const bool antagonist_from_contactor = Can.shape == ContactorShape2D::joncx ||
                                              Can.shape == ContactorShape2D::hollow_disk;
       const Vector2d offset_an =
           antagonist_from_contactor ? Vector2d::Zero()
-                                    : Vector2d(centre[can] - coordinates[static_cast<std::size_t>(Can.body)].head<2>());
+                                    : Vector2d(centre[can] - body_position(can));
       const Vector2d lever_cd = f.candidate_lever + offset_cd;
       const Vector2d lever_an = f.antagonist_lever + offset_an;
       c.lever_candidate = Vector2d(cross_2d(lever_cd, c.tangent), cross_2d(lever_cd, c.normal));

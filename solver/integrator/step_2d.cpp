@@ -109,6 +109,12 @@ void apply_bounds(Scene2D& scene) {
   RigidBodies2D& b = scene.bodies;
   for (std::size_t i = 0; i < b.size(); ++i) {
     if (!b.visible[i]) continue;
+    // Periodic in x: a body leaving [0, period] comes back one period away (check_periodic).
+    if (scene.x_period > 0.0) {
+      const double x = b.reference[i].x() + b.displacement[i].x();
+      if (x > scene.x_period) b.displacement[i].x() -= scene.x_period;
+      else if (x < 0.0) b.displacement[i].x() += scene.x_period;
+    }
     const double x = b.reference[i].x() + b.displacement[i].x();
     const double y = b.reference[i].y() + b.displacement[i].y();
     // First bound crossed wins, in LMGC90's order: below, above, left, right.
