@@ -25,6 +25,7 @@ std::string_view law_keyword(const ContactLaw& law) {
                         [](const IqsMohrDsClb&) { return std::string_view("IQS_MOHR_DS_CLB"); },
                         [](const IqsWetDsClb&) { return std::string_view("IQS_WET_DS_CLB"); },
                         [](const CoupledDof&) { return std::string_view("COUPLED_DOF"); },
+                        [](const NoNlgsBranch&) { return std::string_view("MD_JKRs"); },
                     },
                     law);
 }

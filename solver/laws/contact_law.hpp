@@ -30,9 +30,15 @@ struct IqsMohrDsClb { double cohen, cohet, dfric, sfric; };
 struct IqsWetDsClb { double cohen, cohet, wethk, dfric, sfric; };
 // Bilateral glue on both components.
 struct CoupledDof {};
+// A law LMGC90's 2D NLGS has no branch for (MD_JKRs, a smooth law): LMGC90 then solves the
+// default problem, velocity Signorini without any gap term and Coulomb with the law's friction
+// (contact-laws.md §0 "Dimension note"). Reproduced for those laws only.
+struct NoNlgsBranch {
+  double sfric;
+};
 
 using ContactLaw = std::variant<IqsClb, IqsDsClb, IqsClbG0, RstClb, RstDsClb, GapSgrClb, GapSgrDsClb, VelSgrClb,
-                                VelSgrDsClb, ElasticRepellClb, IqsMohrDsClb, IqsWetDsClb, CoupledDof>;
+                                VelSgrDsClb, ElasticRepellClb, IqsMohrDsClb, IqsWetDsClb, CoupledDof, NoNlgsBranch>;
 
 // Keyword of a law as TACT_BEHAV.DAT spells it.
 std::string_view law_keyword(const ContactLaw& law);

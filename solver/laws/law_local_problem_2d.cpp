@@ -142,6 +142,7 @@ void prepare_local_problem_2d(const ContactLaw& law, Interaction2D& c, double h)
                    c.mu = static_dynamic(p.dfric, p.sfric, c.status_begin);
                  },
                  [&](const CoupledDof&) { c.mu = 0.0; },
+                 [&](const NoNlgsBranch& p) { c.mu = p.sfric; },
              },
              law);
   // Guard of the tangential term for degenerate blocks (§2).

@@ -40,6 +40,7 @@ bool contact_law_of(const grammar::TactLaw& card, ContactLaw& law) {
   else if (k == "IQS_MOHR_DS_CLB") law = IqsMohrDsClb{p("cohen"), p("cohet"), p("dfric"), p("sfric")};
   else if (k == "IQS_WET_DS_CLB") law = IqsWetDsClb{p("cohen"), p("cohet"), p("Wethk"), p("dfric"), p("sfric")};
   else if (k == "COUPLED_DOF") law = CoupledDof{};
+  else if (k == "MD_JKRs") law = NoNlgsBranch{p("sfric")};
   else return false;
   return true;
 }
