@@ -91,7 +91,7 @@ void recup_rloc(RunState2D& state) {
 }
 
 NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& options) {
-  return solve_nlgs_2d(scene, scene.bodies, state.contacts, state.h, options);
+  return solve_nlgs_2d(scene, scene.bodies, state.contacts, state.h, state.time, options);
 }
 
 void stock_rloc(RunState2D& state) { state.previous = state.contacts; }

@@ -24,6 +24,7 @@ std::string_view law_keyword(const ContactLaw& law) {
                         [](const ElasticRepellClb&) { return std::string_view("ELASTIC_REPELL_CLB"); },
                         [](const IqsMohrDsClb&) { return std::string_view("IQS_MOHR_DS_CLB"); },
                         [](const IqsWetDsClb&) { return std::string_view("IQS_WET_DS_CLB"); },
+                        [](const IqsMacCzm&) { return std::string_view("IQS_MAC_CZM"); },
                         [](const CoupledDof&) { return std::string_view("COUPLED_DOF"); },
                         [](const NoNlgsBranch&) { return std::string_view("MD_JKRs"); },
                     },
@@ -38,6 +39,7 @@ int law_internal_count(const ContactLaw& law) {
                         [](const GapSgrDsClb&) { return 1; },
                         [](const VelSgrClb&) { return 1; },
                         [](const VelSgrDsClb&) { return 1; },
+                        [](const IqsMacCzm&) { return 5; },
                         [](const auto&) { return 0; },
                     },
                     law);

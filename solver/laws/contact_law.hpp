@@ -28,6 +28,10 @@ struct ElasticRepellClb { double stiffness, sfric; };
 struct IqsMohrDsClb { double cohen, cohet, dfric, sfric; };
 // Reversible cohesion inside a wet halo of thickness Wethk.
 struct IqsWetDsClb { double cohen, cohet, wethk, dfric, sfric; };
+// Monerie–Acary–Cangémi cohesive zone with an IQS normal part (contact-laws.md §3.5):
+// friction dfric/sfric, normal and tangential stiffnesses cn, ct, viscosity visco and fracture
+// energy dupre of the damage law.
+struct IqsMacCzm { double dfric, sfric, cn, ct, visco, dupre; };
 // Bilateral glue on both components.
 struct CoupledDof {};
 // A law LMGC90's 2D NLGS has no branch for (MD_JKRs, a smooth law): LMGC90 then solves the
@@ -38,7 +42,7 @@ struct NoNlgsBranch {
 };
 
 using ContactLaw = std::variant<IqsClb, IqsDsClb, IqsClbG0, RstClb, RstDsClb, GapSgrClb, GapSgrDsClb, VelSgrClb,
-                                VelSgrDsClb, ElasticRepellClb, IqsMohrDsClb, IqsWetDsClb, CoupledDof, NoNlgsBranch>;
+                                VelSgrDsClb, ElasticRepellClb, IqsMohrDsClb, IqsWetDsClb, IqsMacCzm, CoupledDof, NoNlgsBranch>;
 
 // Keyword of a law as TACT_BEHAV.DAT spells it.
 std::string_view law_keyword(const ContactLaw& law);

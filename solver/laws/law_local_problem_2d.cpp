@@ -141,6 +141,30 @@ void prepare_local_problem_2d(const ContactLaw& law, Interaction2D& c, double h)
                    }
                    c.mu = static_dynamic(p.dfric, p.sfric, c.status_begin);
                  },
+                 [&](const IqsMacCzm& p) {
+                   // Internals (2D): L, δt, δn, β, TPSini (state-and-outputs.md §1.4.4).
+                   if (c.status_begin == ContactStatus::nknow) {
+                     c.internal = {0.0, 0.0, 0.0, 1.0, -99.0, 0.0};
+                     c.status_begin = ContactStatus::Cnnow;
+                   }
+                   const double length = c.length;
+                   const double beta = c.internal[3];
+                   c.internal[0] = length;
+                   c.internal[2] = positive(c.gap_begin);
+                   iqs_form(c, h);
+                   const bool sliding = is_sliding(c.status_begin);
+                   c.mu = (sliding ? p.dfric : p.sfric) * (1.0 - beta);
+                   c.cohesive = beta > 1e-12;
+                   if (c.cohesive) {
+                     // Linear traction β² C δ_end on the length L, as an impulse over the step.
+                     const double b2 = beta * beta;
+                     c.cohesive_slope = Vector2d(-length * b2 * h * h * p.ct, -length * b2 * h * h * p.cn);
+                     c.cohesive_shift_t = -length * b2 * h * p.ct * c.internal[1];
+                   } else {
+                     c.cohesive_slope.setZero();
+                     c.cohesive_shift_t = 0.0;
+                   }
+                 },
                  [&](const CoupledDof&) { c.mu = 0.0; },
                  [&](const NoNlgsBranch& p) { c.mu = p.sfric; },
              },
@@ -174,8 +198,22 @@ double local_residual_squared_2d(const ContactLaw& law, const Interaction2D& c, 
   return natural_map_residual_squared_2d(rr, uu, c.mu);
 }
 
-void finish_step_2d(const ContactLaw& law, Interaction2D& c, double) {
+void finish_step_2d(const ContactLaw& law, Interaction2D& c, double h, double time) {
   std::visit(Overloaded{
+                 [&](const IqsMacCzm& p) {
+                   // Damage of the MAC law (contact-laws.md §3.5): jumps from the final velocity.
+                   const double dt = c.internal[1] + h * c.u(0);
+                   const double dn = c.internal[2] + h * c.u(1);
+                   c.internal[1] = dt;
+                   c.internal[2] = dn;
+                   const double beta_old = c.internal[3];
+                   const double nt = dt * dt, nn = dn > 0.0 ? dn * dn : 0.0;
+                   const double energy = p.ct * nt + p.cn * nn;
+                   double beta = (h * p.dupre + beta_old * p.visco) / (p.visco + h * energy);
+                   if (beta < 1e-12) beta = 0.0;
+                   if (beta <= beta_old && p.dupre <= beta_old * energy) c.internal[3] = beta;
+                   if (c.internal[3] < 1.0 && c.internal[4] < 0.0) c.internal[4] = time;
+                 },
                  [&](const IqsMohrDsClb&) {
                    // Cohesion survives only while the contact sticks (§3.2).
                    if (c.status_begin == ContactStatus::Mstck && c.status == ContactStatus::stick)

@@ -24,6 +24,6 @@ double local_residual_squared_2d(const ContactLaw& law, const Interaction2D& c, 
                                  const Eigen::Vector2d& ufree_loc);
 
 // End of step: law statuses (wet, Mohr) and internal variables.
-void finish_step_2d(const ContactLaw& law, Interaction2D& c, double h);
+void finish_step_2d(const ContactLaw& law, Interaction2D& c, double h, double time);
 
 }  // namespace lmgc::solver

@@ -15,8 +15,11 @@ using Eigen::Vector3d;
 
 // Parameter `name` of a law card, by the catalogue's parameter order.
 double parameter(const grammar::TactLaw& card, const grammar::LawKind& kind, std::string_view name) {
-  for (std::size_t i = 0; i < kind.parameters.size(); ++i)
-    if (kind.parameters[i] == name) return i < card.parameters.size() ? card.parameters[i].value : 0.0;
+  for (std::size_t i = 0; i < kind.parameters.size(); ++i) {
+    std::string_view stored = kind.parameters[i];
+    stored = stored.substr(0, stored.find_last_not_of(' ') + 1);  // catalogue names are padded to 5
+    if (stored == name) return i < card.parameters.size() ? card.parameters[i].value : 0.0;
+  }
   return 0.0;
 }
 
@@ -39,6 +42,8 @@ bool contact_law_of(const grammar::TactLaw& card, ContactLaw& law) {
   else if (k == "ELASTIC_REPELL_CLB") law = ElasticRepellClb{p("F/gap"), p("sfric")};
   else if (k == "IQS_MOHR_DS_CLB") law = IqsMohrDsClb{p("cohen"), p("cohet"), p("dfric"), p("sfric")};
   else if (k == "IQS_WET_DS_CLB") law = IqsWetDsClb{p("cohen"), p("cohet"), p("Wethk"), p("dfric"), p("sfric")};
+  else if (k == "IQS_MAC_CZM")
+    law = IqsMacCzm{p("dfric"), p("sfric"), p("cn"), p("ct"), p("visco"), p("dupre")};
   else if (k == "COUPLED_DOF") law = CoupledDof{};
   else if (k == "MD_JKRs") law = NoNlgsBranch{p("sfric")};
   else return false;

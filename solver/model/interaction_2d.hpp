@@ -49,6 +49,10 @@ struct Interaction2D {
   Eigen::Vector2d covfree = Eigen::Vector2d::Zero();
   Eigen::Vector2d correction = Eigen::Vector2d::Zero();  // corr added to the auxiliary reaction
   double mu = 0.0;
+  // Cohesive zone laws: impulse r_coh = (shift_t, 0) + diag(slope) · uu, uu the auxiliary velocity.
+  bool cohesive = false;
+  Eigen::Vector2d cohesive_slope = Eigen::Vector2d::Zero();
+  double cohesive_shift_t = 0.0;
   bool inactive = false;  // forecast inactive ("noact"): r = 0, skipped by the sweeps
   std::int32_t skip_count = 0;  // vanishing-contact skip heuristic (numerics.md §4)
   std::int32_t skip_threshold = 1;

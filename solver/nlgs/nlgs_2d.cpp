@@ -22,7 +22,7 @@ using Eigen::Vector3d;
 struct HotContact2D {
   std::int32_t cd = 0, an = 0;           // body indices
   std::int32_t skip_count = 0, skip_threshold = 1;
-  std::uint8_t inactive = 0, glued = 0, wet = 0;
+  std::uint8_t inactive = 0, glued = 0, wet = 0, cohesive = 0;
   ContactStatus status = ContactStatus::noctc;
   double nx = 0, ny = 0;                 // normal; t = (ny, -nx)
   double gcd_t = 0, gcd_n = 0, gan_t = 0, gan_n = 0;  // ℓ×t, ℓ×n of each body
@@ -32,6 +32,7 @@ struct HotContact2D {
   double cor_t = 0, cor_n = 0;           // law correction added to the reaction
   double mu = 0;
   double rt = 0, rn = 0;                 // impulse
+  double kt = 0, kn = 0, radh_t = 0;     // cohesive zone: r_coh = (radh_t, 0) + diag(kt, kn) uu
 };
 
 inline Vector2d relative_velocity(const HotContact2D& c, const std::vector<Vector3d>& v) {
@@ -68,6 +69,16 @@ Matrix2d delassus_block(const Interaction2D& c, const std::vector<Vector3d>& inv
   return W;
 }
 
+ContactStatus cohesive_status(ContactStatus s) {
+  switch (s) {
+    case ContactStatus::noctc: return ContactStatus::Cnctc;
+    case ContactStatus::stick: return ContactStatus::Cstck;
+    case ContactStatus::slibw: return ContactStatus::Cslbw;
+    case ContactStatus::slifw: return ContactStatus::Cslfw;
+    default: return s;
+  }
+}
+
 ContactStatus wet_status(ContactStatus s) {
   switch (s) {
     case ContactStatus::noctc: return ContactStatus::Wnctc;
@@ -87,6 +98,28 @@ inline void local_solve(const HotContact2D& c, double uft, double ufn, double& r
     rt = -(c.wwnn * vt - c.wtn * vn) / det;
     rn = -(-c.wtn * vt + c.wwtt * vn) / det;
     status = ContactStatus::stick;
+    return;
+  }
+  if (c.cohesive) {
+    // Cohesive zone (contact-laws.md §3.5): with A = (I − WW K)⁻¹ the auxiliary problem is
+    // uu = A (v + WW radh) + A WW rr, solved for rr; then r = rr + radh + K uu.
+    Matrix2d WW;
+    WW << c.wwtt, c.wtn, c.wtn, c.wwnn;
+    Matrix2d M = Matrix2d::Identity();
+    M(0, 0) -= c.wwtt * c.kt;
+    M(0, 1) -= c.wtn * c.kn;
+    M(1, 0) -= c.wtn * c.kt;
+    M(1, 1) -= c.wwnn * c.kn;
+    const Matrix2d A = M.inverse();
+    const Vector2d shifted = Vector2d(vt, vn) + WW * Vector2d(c.radh_t, 0.0);
+    const Vector2d uf = A * shifted;
+    const Matrix2d Wp = A * WW;
+    const LocalSolution2D s = solve_signorini_coulomb_2d(Wp, uf, c.mu);
+    const Vector2d uu = uf + Wp * s.r;
+    rt = s.r(0) + c.radh_t + c.kt * uu(0);
+    rn = s.r(1) + c.kn * uu(1);
+    status = cohesive_status(s.status);
+    if (s.status == ContactStatus::noctc && rn != 0.0) status = ContactStatus::Cstck;
     return;
   }
   ContactStatus plain = ContactStatus::noctc;
@@ -111,7 +144,7 @@ bool check_passes(NlgsNorm norm, const NlgsNorms& q) {
 }  // namespace
 
 NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vector<Interaction2D>& contacts, double h,
-                         const NlgsOptions& options) {
+                         double time, const NlgsOptions& options) {
   NlgsResult result;
   const std::size_t count = contacts.size();
   std::vector<Vector3d>& v = bodies.velocity;
@@ -152,6 +185,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     k.mu = c.mu;
     k.rt = c.r(0);
     k.rn = c.r(1);
+    k.cohesive = c.cohesive;
+    k.kt = c.cohesive_slope(0);
+    k.kn = c.cohesive_slope(1);
+    k.radh_t = c.cohesive_shift_t;
     // ‖q‖: free local velocities of the problem (law shifts included), fc3d/FORMAT.md §3.
     q2 += (relative_velocity(k, bodies.velocity_free) + Vector2d(k.cov_t, k.cov_n)).squaredNorm();
   }
@@ -207,6 +244,13 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   // Natural-map residual of one hot contact at the current state (law in auxiliary variables).
   auto residual2_of = [&](const HotContact2D& c, double uft, double ufn) {
     if (c.inactive) return c.rt * c.rt + c.rn * c.rn;
+    if (c.cohesive) {
+      // Natural map of the auxiliary problem: uu = v + WW r, rr = r − radh − K uu.
+      const double ut = uft + c.cov_t + c.wwtt * c.rt + c.wtn * c.rn;
+      const double un = ufn + c.cov_n + c.wtn * c.rt + c.wwnn * c.rn;
+      const double rrt = c.rt - c.radh_t - c.kt * ut, rrn = c.rn - c.kn * un;
+      return natural_map_residual_squared_2d(Vector2d(rrt, rrn), Vector2d(ut, un), c.mu);
+    }
     const double rrt = c.rt - c.cor_t, rrn = c.rn - c.cor_n;
     const double ut = uft + c.cov_t + c.wwtt * rrt + c.wtn * rrn;
     const double un = ufn + c.cov_n + c.wtn * rrt + c.wwnn * rrn;
@@ -315,13 +359,13 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     if (k.rt != 0.0 || k.rn != 0.0) ++result.active;
     c.r = Vector2d(k.rt, k.rn);
     c.u = u;
-    c.status = (k.rt == 0.0 && k.rn == 0.0 && !k.wet) ? ContactStatus::noctc : k.status;
+    c.status = (k.rt == 0.0 && k.rn == 0.0 && !k.wet && !k.cohesive) ? ContactStatus::noctc : k.status;
     // Contact impulses of every body (Ireac = Σ H r), driven dofs included (TORQUE EVOLUTION).
     const double tx = k.ny, ty = -k.nx;
     const Vector3d f(k.rt * tx + k.rn * k.nx, k.rt * ty + k.rn * k.ny, 0.0);
     bodies.impulse[static_cast<std::size_t>(k.cd)] += f + Vector3d(0, 0, k.rt * k.gcd_t + k.rn * k.gcd_n);
     bodies.impulse[static_cast<std::size_t>(k.an)] -= f + Vector3d(0, 0, k.rt * k.gan_t + k.rn * k.gan_n);
-    finish_step_2d(scene.laws[static_cast<std::size_t>(c.law)].law, c, h);
+    finish_step_2d(scene.laws[static_cast<std::size_t>(c.law)].law, c, h, time);
   }
   result.residual_absolute = std::sqrt(residual2);
   result.residual_relative =

@@ -51,6 +51,6 @@ struct NlgsResult {
 // `contacts` (warm start), iterates, then sets velocities (bodies.velocity = V_free + M⁻¹ H r),
 // relative velocities and statuses.
 NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vector<Interaction2D>& contacts,
-                         double h, const NlgsOptions& options);
+                         double h, double time, const NlgsOptions& options);
 
 }  // namespace lmgc::solver
