@@ -1,0 +1,71 @@
+// MODELS.DAT: models, options, and broken files with their exact diagnostic.
+#include "grammar/models/parser.hpp"
+
+#include <gtest/gtest.h>
+
+#include "grammar/models/writer.hpp"
+
+namespace lmgc::grammar {
+namespace {
+
+const std::string kModel =
+    "$model  mdlty  finel  eleop  value\n"
+    " M2DNL\n"
+    "        MECAx  Q4xxx  isext  MatL_\n"
+    "                      kine_  large\n"
+    "                      extvf  temperature                        3\n";
+
+void expect_diagnostic(const std::string& text, const std::string& code, std::uint32_t line, std::uint32_t column) {
+  DiagnosticSink sink;
+  parse_models(SourceText("MODELS.DAT", text), sink);
+  ASSERT_FALSE(sink.items().empty());
+  EXPECT_EQ(sink.items()[0].code, code) << sink.items()[0].message;
+  EXPECT_EQ(sink.items()[0].where.span.line, line);
+  EXPECT_EQ(sink.items()[0].where.span.column, column);
+}
+
+TEST(ModelsParser, ReadsModelElementAndOptions) {
+  DiagnosticSink sink;
+  const ModelsFile f = parse_models(SourceText("MODELS.DAT", kModel), sink);
+  EXPECT_FALSE(sink.has_errors());
+  ASSERT_EQ(f.models.size(), 1u);
+  EXPECT_EQ(f.models[0].kind.value, "MECAx");
+  EXPECT_EQ(f.models[0].element.value, "Q4xxx");
+  ASSERT_EQ(f.models[0].options.size(), 3u);
+  EXPECT_EQ(f.models[0].options[1].value.value, "large");
+  EXPECT_EQ(f.models[0].options[2].vfield_size.value, 3);
+}
+
+TEST(ModelsParser, ExtFIsReadAsExtsf) {
+  std::string t = kModel;
+  t.replace(t.find("kine_"), 5, "ext_f");
+  DiagnosticSink sink;
+  EXPECT_EQ(parse_models(SourceText("MODELS.DAT", t), sink).models[0].options[1].id.value, "extsf");
+}
+
+TEST(ModelsWriter, WritesLmgc90Layout) {
+  DiagnosticSink sink;
+  const std::string out = write_models(parse_models(SourceText("MODELS.DAT", kModel), sink));
+  EXPECT_EQ(out.substr(0, out.find("kine_")),
+            "$model  mdlty  finel  eleop  value  \n M2DNL                      \n"
+            "        MECAx  Q4xxx  isext  MatL_                         \n                      ");
+}
+
+TEST(ModelsBroken, EmptyFile) { expect_diagnostic("", "L1009", 0, 0); }
+TEST(ModelsBroken, MissingMdltyLine) { expect_diagnostic("$model\n M2DNL\n$model\n M3DNL\n        MECAx  H8xxx\n", "L1012", 2, 2); }
+TEST(ModelsBroken, FileEndsAfterModelKeyword) { expect_diagnostic("$model  mdlty\n", "L1006", 1, 14); }
+TEST(ModelsBroken, MissingNickname) { expect_diagnostic("$model\n        MECAx  Q4xxx  isext  MatL_\n", "L1013", 2, 2); }
+TEST(ModelsBroken, StrayLine) { expect_diagnostic("stray\n" + kModel, "L1019", 1, 1); }
+TEST(ModelsBroken, MalformedFieldSize) {
+  std::string t = kModel;
+  t.replace(t.rfind('3'), 1, "x");
+  expect_diagnostic(t, "L1004", 5, 61);
+}
+TEST(ModelsBroken, NonAsciiByte) {
+  std::string t = kModel;
+  t.replace(t.find("large"), 5, "l\xC3\xA0rge");
+  expect_diagnostic(t, "L1008", 4, 31);
+}
+
+}  // namespace
+}  // namespace lmgc::grammar
