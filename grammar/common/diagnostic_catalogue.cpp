@@ -88,6 +88,57 @@ constexpr std::array kCatalogue = {
     DiagnosticKind{"L2003", error, "unknown body",
                    "A body number in DRV_DOF.DAT, DOF.INI, Vloc_Rloc.INI, GPV.INI or POSTPRO.DAT does not "
                    "exist among the bodies of that type in BODIES.DAT."},
+    DiagnosticKind{"L2004", error, "unknown model",
+                   "A MAILx element names a model that MODELS.DAT does not define."},
+    DiagnosticKind{"L2005", error, "unknown element node",
+                   "An element connectivity or a MAILx contactor names a node number that its body does "
+                   "not have."},
+    DiagnosticKind{"L2006", error, "unknown node",
+                   "DRV_DOF.DAT, DOF.INI or GPV.INI names a node (or element) that the body does not have."},
+    DiagnosticKind{"L2008", error, "unknown dof",
+                   "A driven dof number is larger than the number of dofs of its node (NO3xx has 3)."},
+    DiagnosticKind{"L2010", warning, "visibility row never matches",
+                   "No contactor of the type and colour named by a '$seety' row exists, so the row never "
+                   "creates a contact. Often a misspelt colour."},
+    DiagnosticKind{"L2011", note, "contactors in no visibility row",
+                   "Contactors of this type and colour appear in no '$seety' row: they never touch "
+                   "anything. Intended for decorations, a mistake otherwise."},
+    DiagnosticKind{"L2012", warning, "duplicate definition",
+                   "A nickname (law, bulk behaviour, model) is defined twice; LMGC90 uses the first."},
+    DiagnosticKind{"L2014", warning, "no interaction for this pair",
+                   "LMGC90 has no interaction module for this candidate/antagonist contactor pair in this "
+                   "order (for instance JONCx as candidate of a DISKx). The row creates no contact."},
+    DiagnosticKind{"L2015", error, "conflicting visibility rows",
+                   "Two '$seety' rows give different laws to the same pair of contactor classes (in either "
+                   "order); LMGC90 stops on this."},
+    // L3xxx — physical sanity.
+    DiagnosticKind{"L3001", error, "non-positive size",
+                   "A radius, half length, half thickness or height of a contactor is zero or negative, or an "
+                   "avrd/gyrd is negative."},
+    DiagnosticKind{"L3003", error, "non-positive stiffness",
+                   "A stiffness-like parameter (Young's modulus, a spring stiffness of a contact law) is "
+                   "zero or negative."},
+    DiagnosticKind{"L3005", error, "negative friction",
+                   "A friction coefficient is negative; Coulomb's law needs mu >= 0."},
+    DiagnosticKind{"L3006", error, "restitution out of range",
+                   "A restitution coefficient is outside [0, 1]; above 1 impacts would create energy."},
+    DiagnosticKind{"L3007", error, "non-positive alert distance",
+                   "An alert distance is zero or negative: the detection creates no contact at all."},
+    DiagnosticKind{"L3008", warning, "alert distance out of scale",
+                   "The alert distance is larger than the contactors it applies to (many far contacts, "
+                   "slow solves) or negligible against them (fast contacts missed)."},
+    DiagnosticKind{"L3009", error, "bad polygon",
+                   "A POLYG is clockwise (LMGC90 stops on a negative area), degenerate (zero area), "
+                   "self-intersecting, or has fewer than 3 vertices."},
+    DiagnosticKind{"L3010", error, "bad polyhedron",
+                   "A POLYR is not a closed surface with consistently oriented faces, has inward faces "
+                   "(negative volume), a zero-area face, or a face naming a missing vertex."},
+    DiagnosticKind{"L3011", error, "non-positive Jacobian",
+                   "A finite element is inverted or degenerate at one of its nodes (nodes must turn "
+                   "counter-clockwise in 2D; positive volume in 3D)."},
+    DiagnosticKind{"L3016", warning, "dynamic friction above static friction",
+                   "A law's dynamic friction coefficient is larger than its static one; usually the two are "
+                   "swapped."},
     // L4xxx — run setup: what lmgc-solve needs to run the case.
     DiagnosticKind{"L4001", error, "contactor not handled by the solver",
                    "The case uses a contactor kind that the solver for this dimension does not provide "

@@ -12,7 +12,8 @@ void append_fortran_d(std::string& out, double value, int width, int digits) {
   if (std::isnan(value) || std::isinf(value)) {
     field = std::isnan(value) ? "NaN" : (value > 0 ? "Infinity" : "-Infinity");
   } else {
-    const bool negative = std::signbit(value) && value != 0.0;
+    // gfortran prints the sign of a negative zero ('-0.0000000D+00'), and LMGC90's files hold them.
+    const bool negative = std::signbit(value);
     std::string mantissa(static_cast<std::size_t>(digits), '0');
     long exponent = 0;
     if (value != 0.0) {

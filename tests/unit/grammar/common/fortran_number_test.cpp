@@ -68,6 +68,7 @@ TEST(FortranD, WritesLmgc90Layout) {
   EXPECT_EQ(fortran_d(0.0), " 0.0000000D+00");
   EXPECT_EQ(fortran_d(1.0), " 0.1000000D+01");
   EXPECT_EQ(fortran_d(0.1e-100), " 0.1000000-100");
+  EXPECT_EQ(fortran_d(-0.0), "-0.0000000D+00");
 }
 
 TEST(FortranD, RoundsToSevenSignificantDigits) {
