@@ -1,39 +1,40 @@
 #pragma once
 // BULK_BEHAV.DAT: gravity and bulk behaviour laws. spec: datbox-inputs.md §2.
+// The AST holds what LMGC90 reads (values and option words); the labels LMGC90 writes come from
+// the catalogue (grammar/bulk_behav/catalogue.hpp), so the AST never repeats them.
 #include <array>
 #include <string>
 #include <vector>
 
+#include "grammar/bulk_behav/catalogue.hpp"
 #include "grammar/common/field.hpp"
 
 namespace lmgc::grammar {
 
-// One line of a bulk law's sub-blocks. Labels are the ones LMGC90 writes (its internal names),
-// fixed by the sub-block, so two laws read from different spellings compare equal.
-struct BulkLine {
-  enum class Kind { option, values, field, marker };
-  Kind kind = Kind::values;
-  std::string label;               // option/field/marker: "elas:", "cplt:"; values: unused
-  Word word;                       // option value, columns 47-59
-  std::vector<std::string> labels; // values: labels of each value ("EYng=", "EPss=")
-  std::vector<Real> values;        // values: at 46-59, 67-80, 88-101
-  friend bool operator==(const BulkLine&, const BulkLine&) = default;
+// One value line of a sub-block: values at 46-59, 67-80, 88-101, or the word 'field' at 46-50
+// (the value is given per Gauss point by the model).
+struct BulkValues {
+  bool field = false;
+  std::vector<Real> values;  // empty when `field`
+  friend bool operator==(const BulkValues&, const BulkValues&) = default;
 };
 
-// A sub-block (ELAS, CPLT, THERM, PLAS, ...): its lines in file order.
+// A sub-block (ELAS, CPLT, PLAS, ...), walked by its catalogue steps.
 struct BulkBlock {
-  std::string kind;  // "ELAS", "CPLT", "THERM", "VARIA", "PLAS", "VISCO", ...
-  std::vector<BulkLine> lines;
+  BulkBlockKind kind = BulkBlockKind::elas;
+  std::vector<Word> options;       // option words in step order ('standard', 'isotropic', 'Swift', ...)
+  std::vector<BulkValues> lines;   // value lines in file order
+  Word file_name;                  // UMAT: user material file, relative to DATBOX/
   friend bool operator==(const BulkBlock&, const BulkBlock&) = default;
 };
 
 struct BulkLaw {
-  Word nickname;  // columns 2-6
-  Word law_type;  // columns 9-38: RIGID, ELAS, ...
-  bool density_field = false;  // 'field' instead of a value: density per Gauss point
-  Real density;                // Umas, columns 46-59 [kg/m³, or kg/m² in 2D rigid runs]
-  std::vector<Real> first_line_values;  // DISCRETE masses, JOINT_* first parameters (instead of Umas)
-  std::vector<BulkBlock> blocks;
+  Word nickname;                        // columns 2-6 (blank for an unknown law type, as LMGC90 keeps it)
+  Word law_type;                        // columns 9-38: RIGID, ELAS, ... or 'unknown'
+  bool density_field = false;           // 'field' instead of a value: density per Gauss point
+  Real density;                         // Umas, columns 46-59 [kg/m³, or kg/m² in 2D rigid runs]
+  std::vector<Real> first_line_values;  // DISCRETE masses (2 in 2D, 3 in 3D), JOINT_* kt knc knt
+  std::vector<BulkBlock> blocks;        // in catalogue order
   friend bool operator==(const BulkLaw&, const BulkLaw&) = default;
 };
 

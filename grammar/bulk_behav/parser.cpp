@@ -1,17 +1,54 @@
-// BULK_BEHAV.DAT reader. spec: datbox-inputs.md §2, §0.
+// BULK_BEHAV.DAT reader: walks the law catalogue (grammar/bulk_behav/catalogue.hpp).
+// spec: datbox-inputs.md §2, §0 (line reader), §10 ($gravity).
 #include "grammar/bulk_behav/parser.hpp"
 
+#include <algorithm>
+#include <optional>
 #include <string>
 
 #include "grammar/bulk_behav/catalogue.hpp"
 #include "grammar/common/card_reader.hpp"
 #include "grammar/common/fortran_format.hpp"
-#include "grammar/common/fortran_number.hpp"
 
 namespace lmgc::grammar {
 namespace {
 
-constexpr int kValueColumns[3][2] = {{46, 59}, {67, 80}, {88, 101}};
+// Value k (0-based) of a value line sits at columns 46+21k .. 59+21k ('(k(7X,D14.7))' from 39).
+constexpr int value_first(int k) { return 46 + 21 * k; }
+constexpr int value_last(int k) { return 59 + 21 * k; }
+
+bool is_blank(std::string_view text) { return text.find_first_not_of(" \t") == std::string_view::npos; }
+
+// A line whose first non-blank character is '!': not a comment for LMGC90's reader (column 1
+// only), but skipped as any line between blocks; LMGC90's own echo header has three of them.
+bool is_indented_comment(std::string_view text) {
+  const std::size_t i = text.find_first_not_of(' ');
+  return i != std::string_view::npos && text[i] == '!';
+}
+
+// First item of a list-directed character read: quoted, or up to a blank, ',' or '/'.
+std::string list_directed_word(std::string_view text) {
+  std::size_t i = text.find_first_not_of(' ');
+  if (i == std::string_view::npos) return {};
+  const char quote = text[i];
+  std::string out;
+  if (quote == '\'' || quote == '"') {
+    for (++i; i < text.size(); ++i) {
+      if (text[i] == quote) {
+        if (i + 1 < text.size() && text[i + 1] == quote) {
+          out += quote;
+          ++i;
+          continue;
+        }
+        break;
+      }
+      out += text[i];
+    }
+    return out;
+  }
+  for (; i < text.size() && text[i] != ' ' && text[i] != ',' && text[i] != '/'; ++i) out += text[i];
+  return out;
+}
 
 class BulkBehavParser {
  public:
@@ -20,28 +57,22 @@ class BulkBehavParser {
   BulkBehavFile parse() {
     BulkBehavFile file;
     if (!reader_.check_records()) return file;
-    const Line* first_law = nullptr;
+    reader_.skip_insignificant();
+    bool skipping_unknown_law = false;  // LMGC90 skips what follows an unknown law type
     while (!reader_.at_end()) {
       const Line& line = reader_.next();
-      const std::string_view kw = keyword_of(line.text);
-      if (kw == "gravy" || kw == "gravi") {
-        if (kw == "gravi")
-          reader_.report("L1018", line, 1, 8,
-                         "'$gravity' is the user's guide spelling; LMGC90 reads '$gravy' (columns 2-6) and would stop here");
-        if (file.has_gravity) {
-          reader_.report("L1019", line, 2, 6, "second gravity block; LMGC90 uses only the first");
-          if (!reader_.at_end()) reader_.next();
-          continue;
+      const std::string_view keyword = keyword_of(line.text);
+      if (keyword == "gravy" || keyword == "gravi") {
+        skipping_unknown_law = false;
+        read_gravity(file, line, keyword == "gravi");
+      } else if (keyword == "behav") {
+        skipping_unknown_law = false;
+        if (auto law = parse_law()) {
+          skipping_unknown_law = law->law_type.value == kUnknownBulkLawType;
+          file.laws.push_back(std::move(*law));
         }
-        const Line* values = next_line("the gravity values");
-        if (!values) break;
-        for (int k = 0; k < 3; ++k) file.gravity[static_cast<std::size_t>(k)] = reader_.real(*values, 25 + 21 * k, 38 + 21 * k);
-        file.has_gravity = true;
-      } else if (kw == "behav") {
-        if (!first_law) first_law = &line;
-        if (auto law = parse_law()) file.laws.push_back(std::move(*law));
-      } else {
-        reader_.report("L1019", line, 1, static_cast<int>(std::max<std::size_t>(line.text.size(), 1)),
+      } else if (!skipping_unknown_law && !is_indented_comment(line.text)) {
+        reader_.report("L1019", line, 1, static_cast<int>(std::max<std::size_t>(trim_right(line.text).size(), 1)),
                        "line outside any '$behav' block; LMGC90 skips it");
       }
     }
@@ -51,196 +82,205 @@ class BulkBehavParser {
   }
 
  private:
-  const Line* next_line(const char* what) {
+  void read_gravity(BulkBehavFile& file, const Line& line, bool guide_spelling) {
+    if (guide_spelling)
+      reader_.report("L1018", line, 1, static_cast<int>(std::max<std::size_t>(trim_right(line.text).size(), 1)),
+                     "'$gravity' is the user's guide spelling; LMGC90 reads only '$gravy' (columns 2-6) and "
+                     "would stop with 'error reading gravy'",
+                     "write '$gravy'");
+    if (file.has_gravity) {
+      reader_.report("L1019", line, 2, 6, "second gravity block; LMGC90 uses only the first");
+      if (!reader_.at_end()) reader_.next();
+      return;
+    }
+    const Line* values = next_line("the gravity values (grv1= at 25-38, grv2= at 46-59, grv3= at 67-80)");
+    if (!values) return;
+    // spec: datbox-inputs.md §2: grv1 25-38, grv2 46-59, grv3 67-80.
+    file.gravity[0] = reader_.real(*values, 25, 38);
+    file.gravity[1] = reader_.real(*values, 46, 59);
+    file.gravity[2] = reader_.real(*values, 67, 80);
+    file.has_gravity = true;
+  }
+
+  // The next significant line of the current law. A '$behav' / '$gravy' keyword line there
+  // means the law is truncated: LMGC90 would read that line as data; we stop the law instead.
+  const Line* next_line(const std::string& what) {
     if (reader_.at_end()) {
-      reader_.report_at_end("L1006", std::string("file ends where ") + what + " is expected");
+      reader_.report_at_end("L1006", "file ends where " + what + " is expected" + law_context());
       return nullptr;
     }
-    return &reader_.next();
+    const Line& line = reader_.peek();
+    const std::string_view keyword = keyword_of(line.text);
+    if (keyword == "behav" || keyword == "gravy") {
+      reader_.report("L1013", line, 1, 6,
+                     "'$" + std::string(keyword) + "' line where " + what + " is expected" + law_context() +
+                         "; LMGC90 would read this line as data");
+      return nullptr;
+    }
+    last_line_ = &reader_.next();
+    return last_line_;
   }
 
-  // A values line: up to `labels.size()` values at 46-59, 67-80, 88-101, or 'field' at 46-50.
-  bool values(BulkBlock& block, std::initializer_list<const char*> labels, bool field_allowed = true) {
-    const Line* line = next_line("a parameter line");
+  std::string law_context() const {
+    return law_nickname_.empty() ? std::string() : " (law '" + law_nickname_ + "')";
+  }
+
+  // A value line of `layout`; `third_blank` tells whether columns 88-101 were blank.
+  bool read_values(const BulkValueLayout& layout, std::vector<BulkValues>& out) {
+    const Line* line = next_line("a value line (" + std::string(trim(layout.labels[0])) + " at 46-59)");
     if (!line) return false;
-    BulkLine out;
-    if (field_allowed && columns(line->text, 46, 50) == "field") {
-      out.kind = BulkLine::Kind::field;
-      out.label = *labels.begin();
+    BulkValues values;
+    if (layout.field_allowed && columns(line->text, 46, 50) == "field") {
+      values.field = true;
     } else {
-      out.kind = BulkLine::Kind::values;
-      int k = 0;
-      for (const char* label : labels) {
-        out.labels.emplace_back(label);
-        out.values.push_back(reader_.real(*line, kValueColumns[k][0], kValueColumns[k][1]));
-        ++k;
-      }
+      for (int k = 0; k < layout.count && k < 3; ++k) values.values.push_back(reader_.real(*line, value_first(k), value_last(k)));
+      if (layout.by_dimension) third_columns_blank_ = third_columns_blank_ && is_blank(columns(line->text, 88, 101));
     }
-    block.lines.push_back(std::move(out));
+    out.push_back(std::move(values));
     return true;
   }
 
-  // An option line: word at 47-59; `checked` label at 41-45 (or 41-44) when LMGC90 checks it.
-  const Line* option(BulkBlock& block, const char* label, std::string_view checked = {}) {
-    const Line* line = next_line("an option line");
-    if (!line) return nullptr;
-    if (!checked.empty() && columns(line->text, 41, 40 + static_cast<int>(checked.size())) != checked) {
-      reader_.report("L1016", *line, 41, 45,
-                     "expected '" + std::string(checked) + "' in columns 41-" + std::to_string(40 + checked.size()));
-    }
-    BulkLine out;
-    out.kind = BulkLine::Kind::option;
-    out.label = label;
-    out.word = reader_.word(*line, 47, 59);
-    out.word.value = std::string(trim(out.word.value));
-    block.lines.push_back(std::move(out));
-    return line;
-  }
-
-  bool marker(BulkBlock& block, const char* label, std::string_view checked) {
-    const Line* line = next_line("a sub-block line");
-    if (!line) return false;
-    if (columns(line->text, 41, 40 + static_cast<int>(checked.size())) != checked)
-      reader_.report("L1016", *line, 41, 44, "expected '" + std::string(checked) + "' in columns 41-44");
-    BulkLine out;
-    out.kind = BulkLine::Kind::marker;
-    out.label = label;
-    block.lines.push_back(std::move(out));
+  bool read_lines(std::span<const BulkValueLayout> layouts, std::vector<BulkValues>& out) {
+    for (const BulkValueLayout& layout : layouts)
+      if (!read_values(layout, out)) return false;
     return true;
   }
 
-  // Elastic-like constants by anisotropy: 1 line of 2, 3 lines of 3, or 7 lines of 3.
-  bool anisotropic_values(BulkBlock& block, const std::string& anisotropy, const Line& where, bool visco) {
-    if (anisotropy == "isotropic") return visco ? values(block, {"VYng=", "VPss="}) : values(block, {"EYng=", "EPss="});
-    if (anisotropy == "orthotropic")
-      return values(block, {"EY11=", "EY22=", "EY33="}, false) && values(block, {"EP12=", "EP13=", "EP23="}, false) &&
-             values(block, {"G12_=", "G13_=", "G23_="}, false);
-    if (anisotropy == "anisotropic") {
-      static const char* kRows[7][3] = {{"C11_=", "C12_=", "C13_="}, {"C14_=", "C15_=", "C16_="}, {"C22_=", "C23_=", "C24_="},
-                                        {"C25_=", "C26_=", "C33_="}, {"C34_=", "C35_=", "C36_="}, {"C44_=", "C45_=", "C46_="},
-                                        {"C55_=", "C56_=", "C66_="}};
-      for (auto& row : kRows)
-        if (!values(block, {row[0], row[1], row[2]}, false)) return false;
-      return true;
-    }
-    reader_.report("L1017", where, 47, 59,
-                   "anisotropy '" + anisotropy + "' is not one of isotropic, orthotropic, anisotropic");
-    return false;
+  // The anisotropy given by the law's ELAS block (CPLT follows it).
+  static std::string anisotropy_of(const BulkLaw& law) {
+    for (const BulkBlock& block : law.blocks)
+      if (block.kind == BulkBlockKind::elas && block.options.size() >= 2) return block.options[1].value;
+    return "isotropic";
   }
 
-  bool block(const std::string& kind, BulkLaw& law) {
-    BulkBlock b;
-    b.kind = kind;
-    bool ok = true;
-    std::string anisotropy = "isotropic";
-    for (const auto& blk : law.blocks)
-      for (const auto& l : blk.lines)
-        if (l.kind == BulkLine::Kind::option && l.label == "ani_:") anisotropy = l.word.value;
-    if (kind == "ELAS") {
-      ok = option(b, "elas:", "elas:") != nullptr;
-      const Line* ani = ok ? option(b, "ani_:", "ani_:") : nullptr;
-      ok = ani && anisotropic_values(b, b.lines.back().word.value, *ani, false);
-    } else if (kind == "CPLT") {
-      ok = marker(b, "cplt:", "cplt") &&
-           (anisotropy == "orthotropic" ? values(b, {"Dil1=", "Dil2=", "Dil3="}) : values(b, {"Dila="})) &&
-           values(b, {"Tref="}, false);
-    } else if (kind == "THERM") {
-      ok = marker(b, "ther:", "ther") && values(b, {"SPHV="}) && values(b, {"COCO="});
-    } else if (kind == "VARIA") {
-      ok = marker(b, "varf:", "varf") && values(b, {"Trth=", "Tith="}, false);
-    } else if (kind == "PLAS") {
-      const Line* crit = option(b, "crit:");
-      ok = crit != nullptr;
-      if (ok && b.lines.back().word.value != "none") {
-        const Line* isoh = option(b, "isoh:");
-        ok = isoh != nullptr;
-        if (ok) {
-          const std::string w = b.lines.back().word.value;
-          if (w == "Swift") ok = values(b, {"C0__=", "EPS0=", "n___="}, false);
-          else if (w == "linear") ok = values(b, {"SIG0=", "K___="}, false);
-          else if (w == "Hollomon") ok = values(b, {"K___=", "n___="}, false);
-          else if (w != "none") reader_.report("L1017", *isoh, 47, 59, "isotropic hardening '" + w + "' is not none, Swift, linear or Hollomon");
+  // Reads one sub-block by its catalogue steps. Returns false when the law ends early.
+  bool read_block(const BulkBlockInfo& info, BulkLaw& law) {
+    BulkBlock block;
+    block.kind = info.kind;
+    bool complete = true;
+    for (const BulkStep& step : info.steps) {
+      bool ends_block = false;
+      switch (step.kind) {
+        case BulkStepKind::marker: {
+          const Line* line = next_line("the '" + std::string(step.checked) + "' line of " + std::string(info.name));
+          if (!line) { complete = false; break; }
+          const int last = 40 + static_cast<int>(step.checked.size());
+          if (columns(line->text, 41, last) != step.checked)
+            reader_.report("L1016", *line, 41, last,
+                           "expected '" + std::string(step.checked) + "' in columns 41-" + std::to_string(last) + " (" +
+                               std::string(info.name) + " sub-block); LMGC90 stops with 'BULK_BEHAV.DAT unreadable'");
+          break;
         }
-        const Line* cinh = ok ? option(b, "cinh:") : nullptr;
-        ok = cinh != nullptr;
-        if (ok && b.lines.back().word.value == "linear") ok = values(b, {"K___="}, false);
-        const Line* vpla = ok ? option(b, "vpla:") : nullptr;
-        ok = vpla != nullptr;
-        if (ok && b.lines.back().word.value == "power_law") ok = values(b, {"Sref=", "Dref=", "n___="}, false);
+        case BulkStepKind::option: {
+          const std::string what = step.label.empty() ? "the model of " + std::string(info.name)
+                                                      : "the '" + std::string(step.label) + "' line of " + std::string(info.name);
+          const Line* line = next_line(what);
+          if (!line) { complete = false; break; }
+          if (!step.checked.empty() && columns(line->text, 41, 45) != step.checked)
+            reader_.report("L1016", *line, 41, 45,
+                           "expected '" + std::string(step.checked) + "' in columns 41-45; LMGC90 stops here");
+          Word word = reader_.word(*line, step.first, step.last);
+          const auto match = std::find_if(step.cases.begin(), step.cases.end(),
+                                          [&](const BulkOptionCase& c) { return c.value == word.value; });
+          block.options.push_back(word);
+          if (match == step.cases.end()) {
+            std::string accepted;
+            for (const BulkOptionCase& c : step.cases) accepted += (accepted.empty() ? "" : ", ") + std::string(c.value);
+            reader_.report("L1017", *line, step.first, step.last,
+                           "'" + word.value + "' in columns " + std::to_string(step.first) + "-" + std::to_string(step.last) +
+                               " is not one of " + accepted + " (" + std::string(info.name) + " sub-block)");
+            break;
+          }
+          if (!match->supported)
+            reader_.report("L1017", *line, step.first, step.last,
+                           "'" + word.value + "' is accepted by LMGC90's reader but not implemented: it stops with "
+                           "'Not implemented yet'",
+                           "only 'standard' elasticity is implemented");
+          if (!read_lines(match->lines, block.lines)) { complete = false; break; }
+          ends_block = match->ends_block;
+          break;
+        }
+        case BulkStepKind::values:
+          if (!read_lines(step.lines, block.lines)) complete = false;
+          break;
+        case BulkStepKind::anisotropy_values: {
+          const std::string anisotropy = anisotropy_of(law);
+          const auto match = std::find_if(step.cases.begin(), step.cases.end(),
+                                          [&](const BulkOptionCase& c) { return c.value == anisotropy; });
+          if (match == step.cases.end()) {
+            if (last_line_)
+              reader_.report("L1017", *last_line_, 41, 45,
+                             std::string(info.name) + " is not defined for '" + anisotropy +
+                                 "' elasticity; LMGC90 stops here");
+            break;
+          }
+          if (!read_lines(match->lines, block.lines)) complete = false;
+          break;
+        }
+        case BulkStepKind::file_name: {
+          const Line* line = next_line("the user material file name");
+          if (!line) { complete = false; break; }
+          const std::string_view text = columns(line->text, 1, static_cast<int>(kRecordLength));
+          // LMGC90 keeps the name in a character(len=50).
+          block.file_name = Word{list_directed_word(text).substr(0, 50), reader_.span(*line, 1, static_cast<int>(trim_right(text).size()))};
+          if (block.file_name.value.empty())
+            reader_.report("L1015", *line, 1, static_cast<int>(std::max<std::size_t>(trim_right(text).size(), 1)),
+                           "the user material file name is missing");
+          break;
+        }
       }
-    } else if (kind == "VISCO") {
-      ok = option(b, "visc:") != nullptr;
-      const Line* ani = ok ? option(b, "ani_:", "ani_:") : nullptr;
-      ok = ani && anisotropic_values(b, b.lines.back().word.value, *ani, true);
-    } else if (kind == "RIGID_THERM") {
-      const Line* mode = option(b, "T_ani");
-      ok = mode != nullptr;
-      if (ok) {
-        const std::string m(trim(columns(mode->text, 41, 43)));
-        b.lines.back().word.value = m;
-        if (m == "ani") ok = values(b, {"PrTC=", "ScTC="}, false) && values(b, {"PDnx=", "PDny="}, false);
-        else ok = values(b, {"TCnd="}, false);
-        ok = ok && values(b, {"Hspe="}, false) && values(b, {"Eeq_=", "NUeq="}, false);
-      }
-    } else if (kind == "RIGID_ELEC") {
-      ok = values(b, {"ECnd="}, false) && values(b, {"Eel_=", "NUel="}, false);
-    } else if (kind == "WS") {
-      const Line* name = option(b, "WSlw=");
-      ok = name != nullptr;
-      if (ok) {
-        b.lines.back().word.value = std::string(trim(columns(name->text, 47, 51)));
-        ok = values(b, {"WS__=", "WSvr=", "TMlt="}, false) && values(b, {"Tvar=", "WSmx=", "WSmn="}, false);
-      }
-    } else if (kind == "UMAT") {
-      const Line* line = next_line("the user material file name");
-      ok = line != nullptr;
-      if (ok) {
-        BulkLine out;
-        out.kind = BulkLine::Kind::option;
-        out.label = "file:";
-        out.word = Word{std::string(trim(line->text)), reader_.span(*line, 1, static_cast<int>(line->text.size()))};
-        b.lines.push_back(out);
-      }
-    } else if (kind == "BIOT") {
-      ok = marker(b, "cpl_:", "cpl_") && values(b, {"BIOT="});
-    } else if (kind == "DISCRETE") {
-      ok = values(b, {"k1  =", "k2  =", "k3  ="}, false) && values(b, {"c1  =", "c2  =", "c3  ="}, false);
-    } else if (kind == "JOINT") {
-      const BulkLawKind* k = find_bulk_law_kind(law.law_type.value);
-      for (int done = 0; ok && k && done < k->extra; done += 3) ok = values(b, {"p___=", "p___=", "p___="}, false);
+      if (!complete || ends_block) break;
     }
-    law.blocks.push_back(std::move(b));
-    return ok;
+    law.blocks.push_back(std::move(block));
+    return complete;
   }
 
   std::optional<BulkLaw> parse_law() {
-    const Line* line = next_line("a law line (nickname and law type)");
+    law_nickname_.clear();
+    last_line_ = nullptr;
+    const Line* line = next_line("a law line (nickname at 2-6, law type at 9-38)");
     if (!line) return std::nullopt;
     BulkLaw law;
     law.nickname = reader_.word(*line, 2, 6);
     law.law_type = reader_.word(*line, 9, 38);
+    law_nickname_ = law.nickname.value;
     const BulkLawKind* kind = find_bulk_law_kind(law.law_type.value);
     if (!kind) {
-      reader_.report("L1001", *line, 9, 38, "unknown bulk behaviour law '" + law.law_type.value + "'",
-                     "bulk laws are RIGID, ELAS, ELAS_PLAS, THERMO_ELAS, ... (docs/diagnostics.md L1001)");
-      return std::nullopt;
+      // LMGC90 keeps the law with a blank nickname and type 'unknown' and skips its lines.
+      reader_.report("L1001", *line, 9, 38, "unknown bulk behaviour law type '" + law.law_type.value + "'",
+                     "bulk law types are RIGID, MATERIAL_POINT, ELAS, ELAS_PLAS, THERMO_ELAS, ... "
+                     "(datbox-inputs.md §2)");
+      law.nickname = Word{std::string(), law.nickname.span};
+      law.law_type = Word{std::string(kUnknownBulkLawType), law.law_type.span};
+      return law;
     }
-    switch (kind->first_line) {
-      case BulkFirstLine::umas:
-        if (columns(line->text, 46, 50) == "field") law.density_field = true;
-        else law.density = reader_.real(*line, 46, 59);
-        break;
-      case BulkFirstLine::values3:
-      case BulkFirstLine::joint3:
-        for (int k = 0; k < 3; ++k) law.first_line_values.push_back(reader_.real(*line, kValueColumns[k][0], kValueColumns[k][1]));
-        break;
+    third_columns_blank_ = true;
+    if (kind->first_line == BulkFirstLine::umas) {
+      // spec: datbox-inputs.md §2 read_UMASS: 'field' at 46-50, else Umas at 46-59.
+      if (columns(line->text, 46, 50) == "field") law.density_field = true;
+      else law.density = reader_.real(*line, 46, 59);
+    } else {
+      const BulkValueLayout& layout = kind->first_values;
+      for (int k = 0; k < layout.count && k < 3; ++k) law.first_line_values.push_back(reader_.real(*line, value_first(k), value_last(k)));
+      if (layout.by_dimension) third_columns_blank_ = is_blank(columns(line->text, 88, 101));
     }
-    for (std::string_view blk : kind->blocks)
-      if (!block(std::string(blk), law)) break;
+    for (BulkBlockKind block : kind->blocks)
+      if (!read_block(bulk_block_info(block), law)) break;
+    // DISCRETE: LMGC90 reads 2 or 3 values per line by the space dimension, which this file does
+    // not give; a law with columns 88-101 blank on all its lines is a 2D law.
+    if (kind->first_values.by_dimension && third_columns_blank_) {
+      if (law.first_line_values.size() == 3) law.first_line_values.pop_back();
+      for (BulkBlock& block : law.blocks)
+        for (BulkValues& values : block.lines)
+          if (values.values.size() == 3) values.values.pop_back();
+    }
     return law;
   }
 
   CardReader reader_;
+  std::string law_nickname_;
+  bool third_columns_blank_ = true;
+  const Line* last_line_ = nullptr;  // the last line a law read (where CPLT's anisotropy fails)
 };
 
 }  // namespace

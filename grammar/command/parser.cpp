@@ -1,298 +1,326 @@
-// COMMAND.DAT reader and symbolic interpreter. spec: state-and-outputs.md §2.1.
+// COMMAND.DAT reader. spec: state-and-outputs.md §2.1 (lexical rules, control structures,
+// keyword reference).
 #include "grammar/command/parser.hpp"
 
-#include <map>
 #include <set>
 #include <string>
 
-#include "grammar/command/keyword_catalogue.hpp"
+#include "grammar/command/catalogue.hpp"
+#include "grammar/command/chic_text.hpp"
+#include "grammar/command/expand.hpp"
 #include "grammar/common/card_reader.hpp"
-#include "grammar/common/fortran_format.hpp"
-#include "grammar/common/fortran_number.hpp"
 
 namespace lmgc::grammar {
 namespace {
 
-std::string significant(std::string_view line) { return std::string(trim(line.substr(0, std::min<std::size_t>(line.size(), 30)))); }
+using chic::from;
+using chic::starts_with;
 
-bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
+constexpr std::size_t kSignificantColumns = 30;  // READ(1,'(A30)')
+constexpr std::size_t kMaxLines = 1000;          // NTXZZZ
 
-// Statements of the main program and of each subroutine, with their argument lines.
-struct Program {
-  std::vector<ExecutedCommand> main;
-  std::map<std::string, std::vector<ExecutedCommand>> subroutines;
-};
+bool is_program_end(std::string_view t) { return t == "FIN DU PROGRAMME" || t == "FIN_DU_PROGRAMME"; }
+bool is_file_end(std::string_view t) { return t == "FIN DU FICHIER" || t == "FIN_DU_FICHIER"; }
 
-Program split_program(const CommandFile& file) {
-  Program p;
-  std::vector<ExecutedCommand>* target = &p.main;
-  bool in_main = true;
-  for (std::size_t i = 0; i < file.lines.size(); ++i) {
-    const CommandLine& l = file.lines[i];
-    if (l.kind != CommandLineKind::statement) continue;
-    if (starts_with(l.text, "FIN DU PROGRAMME") || starts_with(l.text, "FIN_DU_PROGRAMME")) {
-      in_main = false;
-      target = nullptr;
-      continue;
-    }
-    if (starts_with(l.text, "FIN DU FICHIER")) break;
-    if (starts_with(l.text, "SUB ")) {
-      target = &p.subroutines[significant(std::string_view(l.text).substr(4))];
-      continue;
-    }
-    if (starts_with(l.text, "RETOUR")) {
-      target = in_main ? &p.main : nullptr;
-      continue;
-    }
-    if (!target) continue;
-    ExecutedCommand c{l.text, {}, l.number};
-    for (std::size_t j = i + 1; j < file.lines.size(); ++j) {
-      const CommandLineKind k = file.lines[j].kind;
-      if (k == CommandLineKind::argument) c.arguments.push_back(file.lines[j].text);
-      else if (k != CommandLineKind::comment && k != CommandLineKind::blank) break;
-    }
-    target->push_back(std::move(c));
-  }
-  return p;
+// Characters where a control word's label or name starts (CHIC's CHZZZ(k:30) cuts).
+std::optional<std::size_t> label_offset(std::string_view keyword) {
+  if (keyword == "APPEL") return 8;   // 'APPELLE name': name = CHZZZ(9:30)
+  if (keyword == "SUB ") return 4;
+  if (keyword == "DEPUIS") return 7;  // CKZZZ = CHLZZZ(N+1)(8:30)
+  if (keyword == "SUR ") return 4;    // CHLZZZ(N+1)(5:30)
+  if (keyword == "INTO ") return 5;   // CHLZZZ(N+1)(6:30)
+  return std::nullopt;
 }
 
-// 'REPETE n FOIS' -> n.
-long repeat_count(const std::string& statement) {
-  auto r = read_list_directed_integer(std::string_view(statement).substr(6));
-  return r && r->error == NumberError::none ? r->value : 0;
-}
+class CommandParser {
+ public:
+  CommandParser(const SourceText& source, DiagnosticSink& sink) : source_(source), sink_(sink) {}
 
-}  // namespace
+  CommandFile parse() {
+    CommandFile file;
+    const std::size_t errors_before = sink_.error_count();
+    file.final_newline = source_.has_final_newline();
+    split(file);
+    if (source_.lines().empty()) {
+      sink_.report("L1009", Location{source_.path(), SourceSpan{}}, "file is empty");
+      return file;
+    }
+    CardReader(source_, sink_).check_records();
 
-CommandFile parse_command(const SourceText& source, DiagnosticSink& sink) {
-  CommandFile file;
-  file.final_newline = source.has_final_newline();
-  CardReader reader(source, sink);
-  reader.check_records();
-  const auto& lines = source.lines();
-  std::set<std::string> labels_used;
-  for (const Line& l : lines) {
-    const std::string s = significant(l.text);
-    if (starts_with(s, "DEPUIS ")) labels_used.insert(significant(std::string_view(s).substr(7)));
+    // Sections: main program up to FIN DU PROGRAMME, subroutines up to FIN DU FICHIER.
+    const std::size_t count = file.lines.size();
+    std::size_t main_end = count, file_end = count;
+    for (std::size_t i = 0; i < count && main_end == count; ++i)
+      if (is_program_end(file.lines[i].text.value)) main_end = i;
+    for (std::size_t i = main_end + 1; i < count && file_end == count; ++i)
+      if (is_file_end(file.lines[i].text.value)) file_end = i;
+    if (main_end == count) {
+      at_end("L1012", "no 'FIN DU PROGRAMME' line: LMGC90 reads past the end of the file and stops");
+    } else if (file_end == count) {
+      at_end("L1012", "no 'FIN DU FICHIER' line after 'FIN DU PROGRAMME': LMGC90 reads past the end of the file and stops");
+    }
+    if (main_end != count && main_end + 1 > kMaxLines)
+      report("L1003", file.lines[kMaxLines], "more than 1000 lines before 'FIN DU PROGRAMME' (CHIC's limit)");
+    if (file_end != count && file_end - main_end > kMaxLines)
+      report("L1003", file.lines[main_end + kMaxLines], "more than 1000 lines of subroutines (CHIC's limit)");
+
+    for (std::size_t i = file_end + 1; i < count; ++i) file.lines[i].kind = CommandLineKind::after_end;
+    const std::size_t last = file_end == count ? count : file_end + 1;  // classified lines: [0, last)
+    classify(file, 0, std::min(main_end + 1, last));
+    if (main_end + 1 < last) classify(file, main_end + 1, last);
+    resolve_labels(file, last);
+    check_chic_command(file, std::min(main_end + 1, count));
+    if (main_end != count && file_end != count && sink_.error_count() == errors_before) compile_command_program(file, sink_, source_.path());
+    return file;
   }
-  std::size_t pending = 0;  // argument lines still to be read by the last statement
-  bool end_of_program = false;
-  std::set<std::string> subroutines;
-  for (const Line& l : lines) {
-    CommandLine c;
-    c.raw = std::string(l.text);
-    c.number = l.number;
-    c.text = significant(l.text);
-    // Comment and blank lines are skipped by the driver, also between a keyword and its arguments.
-    if (pending > 0 && !c.text.empty() && c.text[0] != '#') {
-      c.kind = CommandLineKind::argument;
-      --pending;
-    } else if (c.text.empty()) {
-      c.kind = CommandLineKind::blank;
-    } else if (c.text[0] == '#') {
-      c.kind = CommandLineKind::comment;
-    } else if (c.text[0] == '.') {
-      c.kind = CommandLineKind::message;
-    } else {
-      c.kind = CommandLineKind::statement;
-      if (const CommandKeyword* k = match_command_keyword(c.text)) {
-        pending = k->arguments.size();
-        if (starts_with(c.text, "FIN DU PROGRAMME") || starts_with(c.text, "FIN_DU_PROGRAMME")) end_of_program = true;
-        if (starts_with(c.text, "SUB ")) subroutines.insert(significant(std::string_view(c.text).substr(4)));
-      } else if (!labels_used.count(c.text)) {
-        const int last = static_cast<int>(std::min<std::size_t>(l.text.size(), 30));
-        reader.report("L1019", l, 1, std::max(last, 1),
-                      "'" + c.text + "' is neither a keyword of LMGC90's driver nor a loop label; LMGC90 ignores it");
+
+ private:
+  void split(CommandFile& file) {
+    const std::string& all = source_.text();
+    for (const Line& line : source_.lines()) {
+      CommandLine out;
+      const std::string_view raw = line.text;
+      const std::size_t end = static_cast<std::size_t>(raw.data() - all.data()) + raw.size();
+      out.crlf = end < all.size() && all[end] == '\r';
+      const std::string_view significant = raw.substr(0, std::min(raw.size(), kSignificantColumns));
+      std::size_t indent = 0;
+      while (indent < significant.size() && significant[indent] == ' ') ++indent;
+      std::string_view text = significant.substr(indent);
+      while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
+      out.indent = static_cast<std::uint32_t>(indent);
+      out.text = Word{std::string(text), make_span(line.number, indent + 1, indent + std::max<std::size_t>(text.size(), 1))};
+      out.trailer = std::string(raw.substr(indent + text.size()));
+      file.lines.push_back(std::move(out));
+    }
+  }
+
+  void report(std::string_view code, const CommandLine& line, std::string message, std::string hint = {}) {
+    sink_.report(code, Location{source_.path(), line.text.span}, std::move(message), std::move(hint));
+  }
+  void report_at(std::string_view code, const CommandLine& line, std::size_t offset, std::size_t length,
+                 std::string message) {
+    const std::uint32_t number = line.text.span.line;
+    const std::size_t first = line.indent + offset + 1;
+    sink_.report(code, Location{source_.path(), make_span(number, first, first + std::max<std::size_t>(length, 1) - 1)},
+                 std::move(message));
+  }
+  void at_end(std::string_view code, std::string message) {
+    const auto& lines = source_.lines();
+    const std::uint32_t number = lines.empty() ? 0 : lines.back().number;
+    const std::size_t column = lines.empty() ? 0 : lines.back().text.size() + 1;
+    SourceSpan span = make_span(number, column, column);
+    span.end_column = span.column;
+    sink_.report(code, Location{source_.path(), span}, std::move(message));
+  }
+
+  // Lines [begin, end) of one section (main program or subroutines).
+  void classify(CommandFile& file, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      CommandLine& line = file.lines[i];
+      const std::string_view text = line.text.value;
+      if (text.empty()) { line.kind = CommandLineKind::blank; continue; }
+      if (text[0] == '#') { line.kind = CommandLineKind::comment; continue; }
+      if (text[0] == '.') { line.kind = CommandLineKind::message; continue; }
+      const CommandKeyword* keyword = find_command_keyword(text);
+      if (!keyword) { line.kind = CommandLineKind::unknown; continue; }
+      line.kind = keyword->control ? CommandLineKind::control : CommandLineKind::keyword;
+      line.keyword = std::string(keyword->keyword);
+      if (const auto offset = label_offset(keyword->keyword)) line.parameter = std::string(from(text, *offset));
+      else line.parameter = std::string(chic::trim_blanks(from(text, keyword->keyword.size())));
+      check_inline(file, i, end, *keyword);
+      // Arguments: the following lines, whatever they hold (CHLZZZ(NZZZ+1), ...).
+      const auto arguments = keyword->arguments;
+      for (std::size_t k = 0; k < arguments.size(); ++k) {
+        if (i + 1 >= end) {
+          report("L1006", line, "'" + std::string(keyword->keyword) + "' needs " + std::to_string(arguments.size()) +
+                                    " argument line(s); the " + (end == file.lines.size() ? "file" : "section") +
+                                    " ends first");
+          break;
+        }
+        ++i;
+        read_argument(file.lines[i], arguments[k], keyword->keyword);
       }
     }
-    file.lines.push_back(std::move(c));
   }
-  if (pending > 0) reader.report_at_end("L1006", "file ends where an argument line is expected");
-  if (!end_of_program) reader.report_at_end("L1012", "no 'FIN DU PROGRAMME' line ends the main program");
-  // Loops and calls name things that exist.
-  for (std::size_t i = 0; i < file.lines.size(); ++i) {
-    const CommandLine& c = file.lines[i];
-    if (c.kind != CommandLineKind::statement) continue;
-    const Line& l = lines[c.number - 1];
-    if (starts_with(c.text, "REPETE")) {
-      const bool depuis = i + 1 < file.lines.size() && starts_with(file.lines[i + 1].text, "DEPUIS");
-      if (!depuis) reader.report("L1013", l, 1, 6, "'REPETE' must be followed by a 'DEPUIS <label>' line");
-      if (!starts_with(c.text.substr(std::min<std::size_t>(c.text.size(), 6)), " ") || repeat_count(c.text) <= 0)
-        reader.report("L1003", l, 1, static_cast<int>(std::min<std::size_t>(c.raw.size(), 30)),
-                      "'REPETE n FOIS' needs a count n >= 1");
+
+  void check_inline(CommandFile& file, std::size_t i, std::size_t end, const CommandKeyword& keyword) {
+    const CommandLine& line = file.lines[i];
+    const std::string_view text = line.text.value;
+    const std::string_view parameter = line.parameter;
+    const std::size_t parameter_offset = text.size() - parameter.size();
+    auto next_starts = [&](std::string_view word, std::string_view what) {
+      if (i + 1 >= end || !starts_with(file.lines[i + 1].text.value, word)) {
+        const CommandLine& where = i + 1 < end ? file.lines[i + 1] : line;
+        report("L1013", where, "'" + std::string(keyword.keyword) + "' must be followed by a '" + std::string(word) +
+                                   "' line (" + std::string(what) + ")");
+      }
+    };
+    if (keyword.inline_part == CommandInline::step_or_dtps) {
+      if (parameter.empty()) {
+        if (starts_with(keyword.keyword, "WRITE OUT ") || starts_with(keyword.keyword, "BINARY WRITE OUT "))
+          report("L1015", line, "'" + std::string(keyword.keyword) + "' needs 'STEP n' or 'DTPS dt' (LMGC90 stops)");
+      } else if (starts_with(parameter, "STEP")) {
+        const auto n = chic::list_integer(from(parameter, 4));
+        if (!n) report_at("L1004", line, parameter_offset, parameter.size(), "'STEP' must be followed by an integer");
+        else if (*n < 1) report_at("L1003", line, parameter_offset, parameter.size(), "'STEP' period must be >= 1");
+      } else if (starts_with(parameter, "DTPS")) {
+        const auto items = chic::list_items(from(parameter, 4));
+        const auto value = items.empty() ? std::nullopt : read_list_directed_real(items[0]);
+        if (!value || value->error != NumberError::none)
+          report_at("L1002", line, parameter_offset, parameter.size(), "'DTPS' must be followed by a real");
+      } else {
+        sink_.report(Diagnostic{"L1019", Severity::warning,
+                                Location{source_.path(), line.text.span},
+                                "'" + std::string(parameter) + "' after '" + std::string(keyword.keyword) +
+                                    "' is neither 'STEP n' nor 'DTPS dt'; LMGC90 ignores it",
+                                {}, {}});
+      }
+      return;
     }
-    if (starts_with(c.text, "APPELLE")) {
-      const std::string name = significant(std::string_view(c.text).substr(std::min<std::size_t>(c.text.size(), 8)));
-      if (!subroutines.count(name))
-        reader.report("L1013", l, 9, 30, "no 'SUB " + name + "' is defined for this 'APPELLE'");
+    const std::string_view k = keyword.keyword;
+    if (k == "DEPUIS") {
+      // Only the line after a REPETE (or its DEPUIS line, for 'DEPUIS OCCURENCE m') is read as a
+      // loop label; elsewhere CHIC ignores the line (mecaMAILx_2D/taylor lost its REPETE).
+      const std::string_view before = i > 0 ? std::string_view(file.lines[i - 1].text.value) : std::string_view();
+      const bool read = starts_with(before, "REPETE") || (starts_with(parameter, "OCCURENCE") && starts_with(before, "DEPUIS"));
+      if (!read)
+        sink_.report(Diagnostic{"L1019", Severity::warning, Location{source_.path(), line.text.span},
+                                "'DEPUIS' does not follow a 'REPETE n FOIS' line: no loop ends here and LMGC90 ignores it",
+                                {}, {}});
+    } else if (k == "REPETE") {
+      if (!chic::repete_count(text)) report("L1004", line, "'REPETE n FOIS' needs an integer n and the word FOIS");
+      next_starts("DEPUIS", "the loop label");
+    } else if (k == "STOP REPETE SI IOK =" || k == "CAP SI IOK =") {
+      if (!chic::list_integer(parameter))
+        report_at("L1004", line, parameter_offset, parameter.size(), "'" + std::string(k) + "' must be followed by an integer");
+      if (k == "CAP SI IOK =") next_starts("SUR ", "the jump target");
+    } else if (k == "IOK =" || k == "ROK =") {
+      if (starts_with(parameter, "FLAG") || starts_with(parameter, "DRAP")) {
+        const auto f = chic::list_integer(from(parameter, 4));
+        if (!f || *f < 1 || *f > 15)
+          report_at("L1003", line, parameter_offset, parameter.size(), "flag number must be an integer from 1 to 15");
+        next_starts("INTO ", "the command whose flag is read");
+      } else if (parameter != "?") {
+        const bool ok = k == "IOK =" ? chic::list_integer(parameter).has_value() : [&] {
+          const auto items = chic::list_items(parameter);
+          const auto v = items.empty() ? std::nullopt : read_list_directed_real(items[0]);
+          return v && v->error == NumberError::none;
+        }();
+        if (!ok) report_at(k == "IOK =" ? "L1004" : "L1002", line, parameter_offset, parameter.size(),
+                           "'" + std::string(k) + "' must be followed by a value, 'FLAG f'/'DRAP f' or '?'");
+      }
+    } else if (k == "FLAG" || k == "DRAP") {
+      const auto f = chic::flag_number(text, k == "FLAG" ? "= IOK" : "= ROK");
+      if (!f || *f < 1 || *f > 15)
+        report("L1003", line, "'" + std::string(k) + " f = " + (k == "FLAG" ? "IOK" : "ROK") + "' needs a flag number from 1 to 15");
+      next_starts("INTO ", "the command whose flag is set");
     }
   }
-  return file;
-}
 
-std::string write_command(const CommandFile& file) {
-  std::string out;
-  for (std::size_t i = 0; i < file.lines.size(); ++i) {
-    out += file.lines[i].raw;
-    if (i + 1 < file.lines.size() || file.final_newline) out += '\n';
-  }
-  return out;
-}
-
-namespace {
-
-// Runs the program, handing every executed command to `visit` (no copies).
-void run_program(const CommandFile& file, std::size_t max_commands, DiagnosticSink& sink, const CommandFlag& flag,
-                 const std::function<void(const ExecutedCommand&)>& visit) {
-  const Program program = split_program(file);
-  // Inline APPELLE (nested calls allowed; a recursion guard stops cycles).
-  std::vector<ExecutedCommand> code;
-  std::function<void(const std::vector<ExecutedCommand>&, int)> inline_calls = [&](const std::vector<ExecutedCommand>& body,
-                                                                                  int depth) {
-    for (const ExecutedCommand& c : body) {
-      if (starts_with(c.statement, "APPELLE") && depth < 32) {
-        auto it = program.subroutines.find(significant(std::string_view(c.statement).substr(std::min<std::size_t>(c.statement.size(), 8))));
-        if (it != program.subroutines.end()) inline_calls(it->second, depth + 1);
-        continue;
+  void read_argument(CommandLine& line, CommandArgumentKind kind, std::string_view keyword) {
+    line.kind = CommandLineKind::argument;
+    CommandValue value;
+    value.kind = kind;
+    const std::string_view text = line.text.value;
+    const std::string what = "argument of '" + std::string(keyword) + "'";
+    auto real_at = [&](std::string_view item) -> std::optional<Real> {
+      const std::size_t offset = static_cast<std::size_t>(item.data() - text.data());
+      const auto v = read_list_directed_real(item);
+      if (!v || v->error != NumberError::none) {
+        report_at(v && v->error == NumberError::out_of_range ? "L1003" : "L1002", line, offset, item.size(),
+                  what + ": '" + std::string(item) + "' is not a real");
+        return std::nullopt;
       }
-      code.push_back(c);
-    }
-  };
-  inline_calls(program.main, 0);
-
-  std::size_t executed = 0;
-  std::vector<long> counters(code.size(), 0);
-  long iok = 0;
-  auto find_label_before = [&](std::size_t from, const std::string& label) -> std::size_t {
-    for (std::size_t k = from; k-- > 0;)
-      if (code[k].statement == label) return k;
-    return code.size();
-  };
-  std::size_t pc = 0;
-  while (pc < code.size()) {
-    if (executed >= max_commands) {
-      sink.report("L1019", Location{"COMMAND.DAT", {}},
-                  "program expansion stopped after " + std::to_string(max_commands) + " commands");
-      break;
-    }
-    const ExecutedCommand& c = code[pc];
-    const std::string& s = c.statement;
-    if (starts_with(s, "REPETE")) {
-      const std::string label = c.arguments.empty() ? std::string()
-                                                    : significant(std::string_view(c.arguments[0]).substr(std::min<std::size_t>(c.arguments[0].size(), 7)));
-      const std::size_t target = find_label_before(pc, label);
-      if (target < code.size() && counters[pc] < repeat_count(s)) {
-        ++counters[pc];
-        pc = target;
-        continue;
-      }
-      counters[pc] = 0;
-      ++pc;
-      continue;
-    }
-    if (starts_with(s, "STOP REPETE SI IOK")) {
-      const auto k = read_list_directed_integer(std::string_view(s).substr(s.find('=') == std::string::npos ? s.size() : s.find('=') + 1));
-      if (k && k->value == iok) {
-        // Leave the next enclosing REPETE: skip past it with its counter reset.
-        std::size_t next = pc + 1;
-        while (next < code.size() && !starts_with(code[next].statement, "REPETE")) ++next;
-        if (next < code.size()) counters[next] = 0;
-        pc = next + 1;
-        continue;
-      }
-      ++pc;
-      continue;
-    }
-    if (starts_with(s, "IOK = FLAG")) {
-      const auto f = read_list_directed_integer(std::string_view(s).substr(10));
-      const std::string into = c.arguments.empty() ? std::string() : significant(std::string_view(c.arguments[0]).substr(std::min<std::size_t>(c.arguments[0].size(), 5)));
-      iok = flag ? flag(into, f ? static_cast<int>(f->value) : 1) : 0;
-    } else if (starts_with(s, "IOK =")) {
-      const auto k = read_list_directed_integer(std::string_view(s).substr(5));
-      if (k) iok = k->value;
-    } else if (starts_with(s, "CAP SI IOK")) {
-      const auto k = read_list_directed_integer(std::string_view(s).substr(s.find('=') == std::string::npos ? s.size() : s.find('=') + 1));
-      if (k && k->value == iok && !c.arguments.empty()) {
-        const std::string target = significant(std::string_view(c.arguments[0]).substr(std::min<std::size_t>(c.arguments[0].size(), 4)));
-        for (std::size_t t = 0; t < code.size(); ++t)
-          if (code[t].statement == target) {
-            visit(c);
-            ++executed;
-            pc = t;
-            break;
-          }
-        continue;
-      }
-    }
-    if (match_command_keyword(s)) {
-      visit(c);
-      ++executed;
-    }
-    ++pc;
-  }
-}
-
-}  // namespace
-
-std::vector<ExecutedCommand> expand_command_program(const CommandFile& file, std::size_t max_commands,
-                                                    DiagnosticSink& sink, const CommandFlag& flag) {
-  std::vector<ExecutedCommand> executed;
-  run_program(file, max_commands, sink, flag, [&](const ExecutedCommand& c) { executed.push_back(c); });
-  return executed;
-}
-
-CommandRunParameters command_run_parameters(const CommandFile& file, DiagnosticSink& sink) {
-  CommandRunParameters p;
-  auto real_of = [](const std::string& text, double& value) {
-    auto r = read_list_directed_real(text);
-    if (r && r->error == NumberError::none) value = r->value;
-  };
-  // Structure: the REPETE around EX ITER NLGS sets gs_it1, the next one gs_it2 (n + 1 passes each).
-  const Program program = split_program(file);
-  std::vector<const ExecutedCommand*> all;
-  for (const auto& c : program.main) all.push_back(&c);
-  for (const auto& [name, body] : program.subroutines)
-    for (const auto& c : body) all.push_back(&c);
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    if (!starts_with(all[i]->statement, "EX ITER NLGS")) continue;
-    for (std::size_t j = i + 1; j < all.size(); ++j)
-      if (starts_with(all[j]->statement, "REPETE")) {
-        p.gs_it1 = static_cast<int>(repeat_count(all[j]->statement) + 1);
-        for (std::size_t k = j + 1; k < all.size(); ++k)
-          if (starts_with(all[k]->statement, "REPETE")) {
-            p.gs_it2 = static_cast<int>(repeat_count(all[k]->statement) + 1);
-            break;
-          }
+      const std::size_t first = line.indent + offset + 1;
+      return Real{v->value, make_span(line.text.span.line, first, first + item.size() - 1)};
+    };
+    switch (kind) {
+      case CommandArgumentKind::word:
+        value.word = line.text;
+        break;
+      case CommandArgumentKind::integer: {
+        const auto items = chic::list_items(text);
+        if (items.empty()) { report("L1015", line, what + ": an integer is expected"); break; }
+        const auto v = read_list_directed_integer(items[0]);
+        const std::size_t offset = static_cast<std::size_t>(items[0].data() - text.data());
+        if (!v || v->error != NumberError::none) {
+          report_at(v && v->error == NumberError::out_of_range ? "L1003" : "L1004", line, offset, items[0].size(),
+                    what + ": '" + std::string(items[0]) + "' is not an integer");
+          break;
+        }
+        const std::size_t first = line.indent + offset + 1;
+        value.integer = Integer{v->value, make_span(line.text.span.line, first, first + items[0].size() - 1)};
         break;
       }
-    break;
-  }
-  // Values: the first occurrence in execution order (NLGS loops stop at their first check).
-  run_program(file, 10'000'000, sink, {}, [&](const ExecutedCommand& c) {
-    const std::string& s = c.statement;
-    if (s == "INCREMENT STEP") ++p.steps;
-    else if (starts_with(s, "TIME STEP") && !c.arguments.empty() && p.dt == 0.0) real_of(c.arguments[0], p.dt);
-    else if (s == "THETA" && !c.arguments.empty()) real_of(c.arguments[0], p.theta);
-    else if (starts_with(s, "NLGS CHECK TYPE") && c.arguments.size() >= 2 && p.norm.empty()) {
-      p.norm = c.arguments[0].substr(0, std::min<std::size_t>(5, c.arguments[0].size()));
-      real_of(c.arguments[0].size() > 5 ? c.arguments[0].substr(5) : std::string(), p.tolerance);
-      real_of(c.arguments[1], p.relax);
-    } else if (starts_with(s, "EX PREP NLGS") && !c.arguments.empty() && p.storage.empty()) {
-      p.storage = c.arguments[0];
-    } else if (starts_with(s, "WRITE OUT DOF STEP") && p.write_every == 0) {
-      auto n = read_list_directed_integer(std::string_view(s).substr(18));
-      if (n) p.write_every = n->value;
-    } else if (starts_with(s, "WRITE OUTPUT GMV STEP") && p.display_every == 0) {
-      auto n = read_list_directed_integer(std::string_view(s).substr(21));
-      if (n) p.display_every = n->value;
-    } else if (s == "quickSCRAMBLE") {
-      p.quick_scramble = true;
-    } else if (starts_with(s, "INIT YMIN BOUNDARY") && !c.arguments.empty()) {
-      real_of(c.arguments[0], p.y_min);
-      p.has_y_min = true;
+      case CommandArgumentKind::real:
+      case CommandArgumentKind::reals: {
+        const auto items = chic::list_items(text);
+        if (items.empty()) { report("L1015", line, what + ": a real is expected"); break; }
+        for (std::size_t k = 0; k < (kind == CommandArgumentKind::real ? 1 : items.size()); ++k) {
+          const auto r = real_at(items[k]);
+          if (!r) break;
+          value.reals.push_back(*r);
+        }
+        break;
+      }
+      case CommandArgumentKind::type_tol: {
+        // 'Quad 0.1666D-04': the type is characters 1-5, the tolerance is read from 6-30.
+        std::string_view type = text.substr(0, std::min<std::size_t>(5, text.size()));
+        while (!type.empty() && type.back() == ' ') type.remove_suffix(1);
+        value.word = Word{std::string(type), make_span(line.text.span.line, line.indent + 1, line.indent + 5)};
+        const auto items = chic::list_items(from(text, 5));
+        if (items.empty()) { report("L1015", line, what + ": a check type and a tolerance are expected"); break; }
+        if (const auto r = real_at(items[0])) value.reals.push_back(*r);
+        break;
+      }
     }
-  });
-  return p;
-}
+    line.value = std::move(value);
+  }
+
+  // A line that matches no keyword is a jump target when a DEPUIS or SUR line names it; otherwise
+  // CHIC offers it to every handler, none acts, and it is ignored.
+  void resolve_labels(CommandFile& file, std::size_t last) {
+    std::set<std::string> targets;
+    for (std::size_t i = 0; i < last; ++i) {
+      const CommandLine& line = file.lines[i];
+      if ((line.keyword == "DEPUIS" || line.keyword == "SUR ") && !starts_with(line.parameter, "OCCURENCE"))
+        targets.insert(line.parameter);
+    }
+    for (std::size_t i = 0; i < last; ++i) {
+      CommandLine& line = file.lines[i];
+      if (line.kind != CommandLineKind::unknown) continue;
+      if (targets.count(line.text.value)) {
+        line.kind = CommandLineKind::label;
+      } else {
+        sink_.report(Diagnostic{"L1019", Severity::warning, Location{source_.path(), line.text.span},
+                                "'" + line.text.value + "' matches no COMMAND.DAT keyword and no DEPUIS or SUR line "
+                                "names it; LMGC90 ignores it",
+                                {}, "check the spelling (keywords are case-sensitive), or start the line with '#'"});
+      }
+    }
+  }
+
+  // CHECK_CHIC_COMMAND: the main program must hold 'COMPUTE BOX' and 'COMPUTE MASS' unless it
+  // holds 'NO CHECK CHIC COMMAND' (exact texts).
+  void check_chic_command(const CommandFile& file, std::size_t main_last) {
+    bool no_check = false, box = false, mass = false;
+    for (std::size_t i = 0; i < main_last; ++i) {
+      const std::string& t = file.lines[i].text.value;
+      no_check = no_check || t == "NO CHECK CHIC COMMAND";
+      box = box || t == "COMPUTE BOX";
+      mass = mass || t == "COMPUTE MASS";
+    }
+    if (no_check) return;
+    if (!box) at_end("L1012", "the main program has no 'COMPUTE BOX' line (LMGC90 stops; write 'NO CHECK CHIC COMMAND' to skip this check)");
+    if (!mass) at_end("L1012", "the main program has no 'COMPUTE MASS' line (LMGC90 stops; write 'NO CHECK CHIC COMMAND' to skip this check)");
+  }
+
+  const SourceText& source_;
+  DiagnosticSink& sink_;
+};
+
+}  // namespace
+
+CommandFile parse_command(const SourceText& source, DiagnosticSink& sink) { return CommandParser(source, sink).parse(); }
 
 }  // namespace lmgc::grammar

@@ -4,6 +4,7 @@
 
 namespace lmgc::grammar {
 
+// spec: state-and-outputs.md §1.2 (header), §1.5 (blocks).
 std::string write_gpv(const GpvFile& file) {
   std::string out = "     \n! Gauss Point Values\n      \n$steps  ";
   append_fortran_i(out, file.step.value, 7);
@@ -32,7 +33,8 @@ std::string write_gpv(const GpvFile& file) {
     }
     out += "$$$$$$\n";
   }
-  if (!file.bodies.empty()) out += "!-----------------------------------------------------------------------\n";
+  // write_gpv ends with the dashed line whatever the number of bodies (mod_MAILx.f90 write_gpv).
+  out += "!-----------------------------------------------------------------------\n";
   return out;
 }
 

@@ -1,6 +1,7 @@
-// MODELS.DAT reader. spec: datbox-inputs.md §4.
+// MODELS.DAT reader. spec: datbox-inputs.md §4 (read_models of mod_models).
 #include "grammar/models/parser.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "grammar/common/card_reader.hpp"
@@ -11,61 +12,123 @@ namespace {
 
 bool blank(std::string_view text) { return text.find_first_not_of(" \t") == std::string_view::npos; }
 
-}  // namespace
+int end_column(const Line& line) { return static_cast<int>(std::max<std::size_t>(trim_right(line.text).size(), 1)); }
 
-ModelsFile parse_models(const SourceText& source, DiagnosticSink& sink) {
-  ModelsFile file;
-  CardReader reader(source, sink);
-  if (!reader.check_records()) return file;
-  while (!reader.at_end()) {
-    const Line& line = reader.next();
-    if (keyword_of(line.text) != "model") {
-      reader.report("L1019", line, 1, static_cast<int>(std::max<std::size_t>(line.text.size(), 1)),
-                    "line outside any '$model' block; LMGC90 skips it");
-      continue;
+// First item of a list-directed character read: quoted, or up to a blank, ',' or '/'.
+std::string list_directed_word(std::string_view text) {
+  std::size_t i = text.find_first_not_of(' ');
+  if (i == std::string_view::npos) return {};
+  const char quote = text[i];
+  std::string out;
+  if (quote == '\'' || quote == '"') {
+    for (++i; i < text.size() && text[i] != quote; ++i) out += text[i];
+    return out;
+  }
+  for (; i < text.size() && text[i] != ' ' && text[i] != ',' && text[i] != '/'; ++i) out += text[i];
+  return out;
+}
+
+class ModelsParser {
+ public:
+  ModelsParser(const SourceText& source, DiagnosticSink& sink) : reader_(source, sink) {}
+
+  ModelsFile parse() {
+    ModelsFile file;
+    if (!reader_.check_records()) return file;
+    while (!reader_.at_end()) {
+      const Line& line = reader_.next();
+      if (keyword_of(line.text) != "model") {
+        reader_.report("L1019", line, 1, end_column(line), "line outside any '$model' block; LMGC90 skips it");
+        continue;
+      }
+      if (auto model = parse_model()) file.models.push_back(std::move(*model));
     }
-    if (reader.at_end()) {
-      reader.report_at_end("L1006", "file ends after '$model'; a model nickname line is expected");
-      break;
+    return file;
+  }
+
+ private:
+  std::optional<Model> parse_model() {
+    if (reader_.at_end()) {
+      reader_.report_at_end("L1006", "file ends after '$model'; a model nickname line is expected");
+      return std::nullopt;
     }
-    const Line& name = reader.next();
+    const Line& name = reader_.next();
     Model model;
-    model.nickname = reader.word(name, 2, 6);
+    model.nickname = reader_.word(name, 2, 6);
     if (blank(model.nickname.value)) {
-      reader.report("L1013", name, 2, 6, "expected a model nickname in columns 2-6");
-      continue;
+      reader_.report("L1013", name, 2, 6, "expected a model nickname in columns 2-6");
+      return std::nullopt;
     }
     // The mdlty line (columns 2-6 blank, 9-13 set), then option lines (columns 2-13 blank).
-    bool first = true;
-    while (!reader.at_end()) {
-      const Line& opt = reader.peek();
-      if (!blank(columns(opt.text, 2, 6))) break;
-      if (first && blank(columns(opt.text, 9, 13))) break;
-      if (!first && !blank(columns(opt.text, 9, 13))) break;
-      reader.next();
-      if (first) {
-        model.kind = reader.word(opt, 9, 13);
-        model.element = reader.word(opt, 16, 20);
-        first = false;
+    bool seen_mdlty = false;
+    bool takes_options = false;  // LMGC90 reads further options only when the mdlty line has one
+    while (!reader_.at_end()) {
+      const Line& line = reader_.peek();
+      if (!blank(columns(line.text, 2, 6))) break;
+      const bool mdlty_line = !blank(columns(line.text, 9, 13));
+      if (!seen_mdlty && !mdlty_line) break;
+      reader_.next();
+      if (mdlty_line) {
+        if (seen_mdlty) {
+          if (takes_options) {
+            reader_.report("L1013", line, 9, 13,
+                           "second 'mdlty' line in model '" + model.nickname.value + "': LMGC90 stops with 'error reading models'");
+            continue;
+          }
+          reader_.report("L1019", line, 9, 13,
+                         "second 'mdlty' line in model '" + model.nickname.value + "': LMGC90 keeps only this one");
+        }
+        seen_mdlty = true;
+        read_mdlty_line(line, model, takes_options);
+        continue;
       }
-      ModelOption o;
-      o.id = reader.word(opt, 23, 27);
-      if (blank(o.id.value)) continue;  // a model without options
-      if (o.id.value == "ext_f") o.id.value = "extsf";
-      if (o.id.value == "u_mdl") {
-        o.value = reader.word(opt, 30, 79);
-        o.value.value = std::string(trim(o.value.value));
-      } else {
-        o.value = reader.word(opt, 30, 59);
-        o.value.value = std::string(trim(o.value.value));
+      const Word id = reader_.word(line, 23, 27);
+      if (blank(id.value)) continue;
+      if (!takes_options) {
+        reader_.report("L1019", line, 23, 27,
+                       "option after an 'mdlty' line without option: LMGC90 ignores it", "put the first option on the mdlty line");
+        continue;
       }
-      if (o.id.value == "extvf") o.vfield_size = reader.integer(opt, 61, 65);
-      model.options.push_back(std::move(o));
+      model.options.push_back(read_option(line, id));
+      // spec §4: 61-65 (I5) on any option line after the mdlty line; one size per model (the max).
+      if (!blank(columns(line.text, 61, 65))) {
+        const Integer size = reader_.integer(line, 61, 65);
+        if (size.value > model.vfield_max_size.value) model.vfield_max_size = size;
+      }
     }
-    if (first) reader.report("L1012", name, 2, 6, "model '" + model.nickname.value + "' has no 'mdlty' line");
-    file.models.push_back(std::move(model));
+    if (!seen_mdlty)
+      reader_.report("L1012", name, 2, 6, "model '" + model.nickname.value + "' has no 'mdlty' line (MECAx, THERM, ...)");
+    return model;
   }
-  return file;
-}
+
+  void read_mdlty_line(const Line& line, Model& model, bool& takes_options) {
+    model.kind = reader_.word(line, 9, 13);
+    model.element = reader_.word(line, 16, 20);
+    model.user_model = Word{};
+    model.options.clear();
+    model.vfield_max_size = Integer{};
+    const Word id = reader_.word(line, 23, 27);
+    takes_options = !blank(id.value);
+    if (!takes_options) return;
+    if (id.value == "u_mdl") {
+      // A user model: its name is read list-directed from columns 30-79 (character(len=50)).
+      model.user_model = Word{list_directed_word(columns(line.text, 30, 79)), reader_.span(line, 30, 79)};
+      if (model.user_model.value.empty()) reader_.report("L1015", line, 30, 79, "the user model name ('u_mdl') is missing");
+      return;
+    }
+    model.options.push_back(read_option(line, id));
+  }
+
+  ModelOption read_option(const Line& line, Word id) {
+    if (id.value == "ext_f") id.value = "extsf";  // LMGC90 renames it after reading
+    return ModelOption{std::move(id), reader_.word(line, 30, 59)};
+  }
+
+  CardReader reader_;
+};
+
+}  // namespace
+
+ModelsFile parse_models(const SourceText& source, DiagnosticSink& sink) { return ModelsParser(source, sink).parse(); }
 
 }  // namespace lmgc::grammar

@@ -13,6 +13,21 @@ namespace {
 
 bool starts_with(std::string_view text, std::string_view prefix) { return text.substr(0, prefix.size()) == prefix; }
 
+// The items of a list-directed record: separated by blanks or one comma, ended by '/'.
+std::vector<std::string_view> list_items(std::string_view text, std::size_t wanted) {
+  std::vector<std::string_view> items;
+  std::size_t p = 0;
+  while (items.size() < wanted && p < text.size()) {
+    while (p < text.size() && (text[p] == ' ' || text[p] == '\t')) ++p;
+    if (p >= text.size() || text[p] == '/') break;
+    if (text[p] == ',') { ++p; continue; }
+    const std::size_t begin = p;
+    while (p < text.size() && text[p] != ' ' && text[p] != '\t' && text[p] != ',' && text[p] != '/') ++p;
+    items.push_back(text.substr(begin, p - begin));
+  }
+  return items;
+}
+
 class PostproParser {
  public:
   PostproParser(const SourceText& source, DiagnosticSink& sink, int dimension)
@@ -24,18 +39,27 @@ class PostproParser {
     const auto& lines = source_.lines();
     while (index_ < lines.size()) {
       const Line& line = lines[index_++];
-      const std::string_view head = trim_right(columns(line.text, 1, 30));
+      // spec §8: one record read as A30; only columns 1-30 matter.
+      const std::string_view head = columns(line.text, 1, 30);
       if (starts_with(head, "END")) return file;
-      if (const PostproCommandKind* kind = find_postpro_command(head)) {
+      const std::string_view name = trim_right(head);
+      const PostproCommandKind* kind = find_postpro_command(name);
+      if (kind && kind->available_in(dimension_)) {
         if (auto command = parse_command(*kind, line)) file.commands.push_back(std::move(*command));
         continue;
       }
       if (starts_with(head, "STEP") || starts_with(head, "#")) continue;
-      if (head.empty()) {
-        reader_.report("L1013", line, 1, 1, "blank line in POSTPRO.DAT; LMGC90 stops on it ('Command does not exist')");
+      if (name.empty()) {
+        reader_.report("L1013", line, 1, 1,
+                       "blank line in POSTPRO.DAT; LMGC90 stops on it ('Command does not exist')");
+      } else if (kind) {
+        reader_.report("L1001", line, 1, static_cast<int>(name.size()),
+                       "POSTPRO command '" + std::string(name) + "' exists only in LMGC90's " +
+                           (dimension_ == 2 ? "3D" : "2D") + " post-processor");
       } else {
-        reader_.report("L1001", line, 1, static_cast<int>(head.size()),
-                       "unknown POSTPRO command '" + std::string(head) + "'");
+        reader_.report("L1001", line, 1, static_cast<int>(name.size()),
+                       "unknown POSTPRO command '" + std::string(name) + "'",
+                       "names are case-sensitive and start in column 1");
       }
     }
     reader_.report_at_end("L1012", "POSTPRO.DAT has no 'END' line");
@@ -43,47 +67,131 @@ class PostproParser {
   }
 
  private:
-  const Line* next(const char* what) {
+  // The next raw line, read as the argument `what` (no comment skipping: spec §8).
+  const Line* next(std::string_view what) {
     if (index_ >= source_.lines().size()) {
-      reader_.report_at_end("L1006", std::string("file ends where ") + what + " is expected");
+      reader_.report_at_end("L1006", "file ends where " + std::string(what) + " is expected");
       return nullptr;
     }
     const Line* line = &source_.lines()[index_++];
-    // A command name read as an argument: LMGC90 consumes it (500PL_PerioBoxJC does this).
+    // No look-ahead in LMGC90: a command name read as an argument is consumed and never runs
+    // (RIGID_2D/500PL_PerioBoxJC does this).
     const std::string_view head = trim_right(columns(line->text, 1, 30));
-    if (find_postpro_command(head))
-      reader_.report("L1019", *line, 1, static_cast<int>(head.size()),
-                     "command '" + std::string(head) + "' is read as " + what + " of the command before; LMGC90 never runs it");
+    if (find_postpro_command(head) || starts_with(head, "END"))
+      reader_.report("L1019", *line, 1, static_cast<int>(std::max<std::size_t>(head.size(), 1)),
+                     "'" + std::string(head) + "' is read as " + std::string(what) +
+                         " of the command before; LMGC90 consumes this line and never runs it as a command");
     return line;
   }
 
-  bool integer(PostproArgument& arg, const char* what, int first = 1, int last = 7) {
-    const Line* line = next(what);
-    if (!line) return false;
-    arg.integers.push_back(reader_.integer(*line, first, last, false));
-    return true;
-  }
-
-  bool list_integers(PostproArgument& arg, const char* what, int count) {
-    const Line* line = next(what);
-    if (!line) return false;
-    std::string_view rest = columns(line->text, 1, 180);
-    for (int k = 0; k < count; ++k) {
-      auto value = read_list_directed_integer(rest);
+  bool list_integers(const Line& line, std::size_t count, PostproArgument& argument, std::string_view what) {
+    // List-directed input reads the whole record, not only columns 1-30.
+    const std::string_view text = columns(line.text, 1, static_cast<int>(kRecordLength));
+    const auto items = list_items(text, count);
+    if (items.size() < count) {
+      reader_.report("L1015", line, 1, static_cast<int>(std::max<std::size_t>(text.size(), 1)),
+                     std::string(what) + ": " + std::to_string(count) + " integer(s) expected, " +
+                         std::to_string(items.size()) + " found",
+                     "LMGC90 would go on reading the next line; write all values on one line");
+      return false;
+    }
+    for (std::string_view item : items) {
+      const int first = static_cast<int>(item.data() - line.text.data()) + 1;
+      const int last = first + static_cast<int>(item.size()) - 1;
+      auto value = read_list_directed_integer(item);
       if (!value || value->error != NumberError::none) {
-        reader_.report("L1015", *line, 1, static_cast<int>(line->text.size()) + 1, std::string(what) + ": missing integer");
+        reader_.report(value && value->error == NumberError::out_of_range ? "L1003" : "L1004", line, first, last,
+                       std::string(what) + ": '" + std::string(item) + "' is not an integer");
         return false;
       }
-      arg.integers.push_back(Integer{value->value, reader_.span(*line, 1, 30)});
-      // Skip the item just read.
-      std::size_t p = rest.find_first_not_of(" ,\t");
-      p = rest.find_first_of(" ,\t/", p == std::string_view::npos ? rest.size() : p);
-      rest = p == std::string_view::npos ? std::string_view() : rest.substr(p);
+      argument.integers.push_back(Integer{value->value, reader_.span(line, first, last)});
     }
     return true;
   }
 
-  PostproArgument argument() { return PostproArgument{}; }
+  bool list_real(const Line& line, PostproArgument& argument, std::string_view what) {
+    const std::string_view text = columns(line.text, 1, static_cast<int>(kRecordLength));
+    const auto items = list_items(text, 1);
+    if (items.empty()) {
+      reader_.report("L1015", line, 1, 1, std::string(what) + ": a real value is expected");
+      return false;
+    }
+    const int first = static_cast<int>(items[0].data() - line.text.data()) + 1;
+    const int last = first + static_cast<int>(items[0].size()) - 1;
+    auto value = read_list_directed_real(items[0]);
+    if (!value || value->error != NumberError::none) {
+      reader_.report(value && value->error == NumberError::out_of_range ? "L1003" : "L1002", line, first, last,
+                     std::string(what) + ": '" + std::string(items[0]) + "' is not a real");
+      return false;
+    }
+    argument.reals.push_back(Real{value->value, reader_.span(line, first, last)});
+    return true;
+  }
+
+  // Reads one argument line with its format.
+  bool read_line(const PostproStep& step, PostproArgument& argument) {
+    const Line* line = next(step.what);
+    if (!line) return false;
+    argument.format = step.format;
+    const std::size_t errors = reader_.sink().error_count();
+    switch (step.format) {
+      case PostproLineFormat::i5: argument.integers.push_back(reader_.integer(*line, 1, 5, false)); break;
+      case PostproLineFormat::i7: argument.integers.push_back(reader_.integer(*line, 1, 7, false)); break;
+      case PostproLineFormat::a5: argument.word = reader_.word(*line, 1, 5); break;
+      case PostproLineFormat::a12: argument.word = reader_.word(*line, 1, 12); break;
+      case PostproLineFormat::i7_x_i3:
+        argument.integers.push_back(reader_.integer(*line, 1, 7, false));
+        argument.integers.push_back(reader_.integer(*line, 9, 11, false));
+        break;
+      case PostproLineFormat::i7_x_i7:
+        argument.integers.push_back(reader_.integer(*line, 1, 7, false));
+        argument.integers.push_back(reader_.integer(*line, 9, 15, false));
+        break;
+      case PostproLineFormat::list_integer: return list_integers(*line, 1, argument, step.what);
+      case PostproLineFormat::list_integer_pair: return list_integers(*line, 2, argument, step.what);
+      case PostproLineFormat::list_integer_quad: return list_integers(*line, 4, argument, step.what);
+      case PostproLineFormat::list_real: return list_real(*line, argument, step.what);
+      case PostproLineFormat::es14_7: argument.reals.push_back(reader_.real(*line, 1, 14, 7, false)); break;
+      case PostproLineFormat::dense_sample: {
+        // Always consumes one line; 'INTER' in columns 1-5 names an interior body (columns 7-13).
+        const std::string_view text = trim_right(columns(line->text, 1, 30));
+        argument.word = Word{std::string(text), reader_.span(*line, 1, 30)};
+        if (starts_with(text, "INTER")) argument.integers.push_back(reader_.integer(*line, 7, 13, false));
+        break;
+      }
+    }
+    return reader_.sink().error_count() == errors;
+  }
+
+  // Runs a layout: each step reads one line; a repeating step reads its body `count` times.
+  bool run(std::span<const PostproStep> steps, PostproCommand& command) {
+    std::size_t i = 0;
+    while (i < steps.size()) {
+      const PostproStep& step = steps[i];
+      PostproArgument argument;
+      if (!read_line(step, argument)) return false;
+      std::int64_t count = 0;
+      if (step.repeat == PostproRepeat::last_integer && !argument.integers.empty()) {
+        count = argument.integers.back().value;
+      } else if (step.repeat == PostproRepeat::compacity_model) {
+        count = postpro_compacity_ids(argument.word.value);
+        if (count < 0) {
+          reader_.report("L1017", source_.lines()[index_ - 1], 1, 12,
+                         "compacity model '" + argument.word.value +
+                             "' is not one of SMOOTH BOX, ROUGH BOX, COUETTE, CLUSTER BOX, SELECTION");
+          return false;
+        }
+      }
+      command.arguments.push_back(std::move(argument));
+      const std::size_t body = std::min<std::size_t>(static_cast<std::size_t>(step.body), steps.size() - i - 1);
+      // A Fortran DO with a count below 1 runs no pass; each pass reads at least one line, so
+      // the loop ends at the end of the file whatever the count.
+      for (std::int64_t k = 0; k < count; ++k)
+        if (!run(steps.subspan(i + 1, body), command)) return false;
+      i += 1 + body;
+    }
+    return true;
+  }
 
   std::optional<PostproCommand> parse_command(const PostproCommandKind& kind, const Line& name_line) {
     PostproCommand command;
@@ -92,163 +200,32 @@ class PostproParser {
       reader_.report_at_end("L1006", "file ends after '" + std::string(kind.name) + "'; a 'STEP n' line is expected");
       return std::nullopt;
     }
-    const Line& step = source_.lines()[index_++];
+    const Line& step = source_.lines()[index_];
     if (!starts_with(step.text, "STEP")) {
+      // LMGC90: "Keyword STEP is missing for command ..." (fatal). The line is left to the
+      // command loop so that what follows is still checked.
       reader_.report("L1013", step, 1, 4, "the line after '" + std::string(kind.name) + "' must be 'STEP n'");
       return std::nullopt;
     }
-    auto period = read_list_directed_integer(columns(step.text, 5, 30));
-    if (!period || period->error != NumberError::none) {
-      reader_.report("L1015", step, 5, 30, "the period of 'STEP' is missing or not an integer");
+    ++index_;
+    // The period is read list-directed from columns 5-30 of the STEP line.
+    const std::string_view field = columns(step.text, 5, 30);
+    const auto items = list_items(field, 1);
+    if (items.empty()) {
+      reader_.report("L1015", step, 5, 30, "the period of 'STEP' is missing");
       return std::nullopt;
     }
-    command.period = Integer{period->value, reader_.span(step, 5, 30)};
-    if (period->value < 1) reader_.report("L1003", step, 5, 30, "'STEP' period must be >= 1");
-
-    auto push = [&](PostproArgument a) { command.arguments.push_back(std::move(a)); };
-    auto one_integer = [&](const char* what, int last = 7) {
-      PostproArgument a;
-      if (!integer(a, what, 1, last)) return false;
-      push(std::move(a));
-      return true;
-    };
-    auto word = [&](const char* what, int width) {
-      const Line* line = next(what);
-      if (!line) return false;
-      PostproArgument a;
-      a.word = reader_.word(*line, 1, width);
-      push(std::move(a));
-      return true;
-    };
-    // A count then that many lines of `each`.
-    auto counted = [&](const char* what, auto each) {
-      PostproArgument a;
-      if (!integer(a, what)) return false;
-      const std::int64_t n = a.integers.back().value;
-      push(std::move(a));
-      for (std::int64_t k = 0; k < n; ++k)
-        if (!each()) return false;
-      return true;
-    };
-    bool ok = true;
-    switch (kind.arguments) {
-      case PostproArguments::none: break;
-      case PostproArguments::colour: ok = word("the colour", 5); break;
-      case PostproArguments::species:
-        ok = counted("the number of species", [&] { return word("a species nickname", 5); });
-        break;
-      case PostproArguments::sectors_2d:
-        if (dimension_ == 2) ok = one_integer("the number of sectors", 5);
-        break;
-      case PostproArguments::classes: {
-        if (dimension_ == 2) {
-          ok = one_integer("the number of classes", 5);
-        } else {
-          PostproArgument a;
-          ok = list_integers(a, "the number of classes", 1);
-          if (ok) push(std::move(a));
-        }
-        break;
-      }
-      case PostproArguments::body_list:
-        ok = counted("the number of bodies", [&] { return one_integer("a body number"); });
-        break;
-      case PostproArguments::mp_tracking:
-        ok = counted("the number of bodies", [&] {
-          const Line* line = next("a body and contactor");
-          if (!line) return false;
-          PostproArgument a;
-          a.integers.push_back(reader_.integer(*line, 1, 7, false));
-          a.integers.push_back(reader_.integer(*line, 9, 11, false));
-          push(std::move(a));
-          return true;
-        });
-        break;
-      case PostproArguments::dense_sample: {
-        const Line* line = next("the 'INTER' line (or any line)");
-        if (!line) return std::nullopt;
-        PostproArgument a;
-        a.word = reader_.word(*line, 1, 5);
-        if (a.word.value == "INTER") a.integers.push_back(reader_.integer(*line, 7, 13, false));
-        else a.word = Word{std::string(trim_right(columns(line->text, 1, 30))), reader_.span(*line, 1, 30)};
-        push(std::move(a));
-        break;
-      }
-      case PostproArguments::doublet:
-        ok = word("the interaction type", 5) && one_integer("the first body") && one_integer("the second body");
-        break;
-      case PostproArguments::extrusion:
-      case PostproArguments::fraction:
-        for (int k = 0; k < (kind.arguments == PostproArguments::extrusion ? 2 : 1) && ok; ++k) {
-          const Line* line = next("a real value");
-          if (!line) return std::nullopt;
-          PostproArgument a;
-          auto value = read_list_directed_real(columns(line->text, 1, 30));
-          if (!value || value->error != NumberError::none) {
-            reader_.report("L1002", *line, 1, 30, "expected a real value");
-            ok = false;
-          } else {
-            a.reals.push_back(Real{value->value, reader_.span(*line, 1, 30)});
-            push(std::move(a));
-          }
-        }
-        break;
-      case PostproArguments::meca_sets:
-        ok = counted("the number of sets", [&] {
-          return counted("the number of members", [&] {
-            const Line* line = next("a body and its node count");
-            if (!line) return false;
-            PostproArgument a;
-            a.integers.push_back(reader_.integer(*line, 1, 7, false));
-            a.integers.push_back(reader_.integer(*line, 9, 15, false));
-            const std::int64_t nodes = a.integers.back().value;
-            push(std::move(a));
-            for (std::int64_t k = 0; k < nodes; ++k)
-              if (!one_integer("a node number")) return false;
-            return true;
-          });
-        });
-        break;
-      case PostproArguments::dist_sets:
-        ok = counted("the number of sets", [&] {
-          PostproArgument a;
-          if (!list_integers(a, "a body-node pair", 4)) return false;
-          push(std::move(a));
-          return true;
-        });
-        break;
-      case PostproArguments::rigid_sets:
-        ok = counted("the number of sets", [&] { return counted("the set size", [&] { return one_integer("a body number"); }); });
-        break;
-      case PostproArguments::bounded_sets:
-        ok = counted("the number of sets", [&] { return one_integer("idmin") && one_integer("idmax"); });
-        break;
-      case PostproArguments::compacity: {
-        ok = word("the bulk behaviour", 5) && word("the model", 12);
-        const std::string model = ok ? command.arguments.back().word.value : std::string();
-        const int ids = model == "CLUSTER BOX" ? 4 : model == "COUETTE" ? 2 : 0;
-        for (int k = 0; k < ids && ok; ++k) ok = one_integer("a body number");
-        break;
-      }
-      case PostproArguments::clxxx:
-      case PostproArguments::pairs: {
-        PostproArgument a;
-        ok = list_integers(a, "the number of pairs", 1);
-        if (!ok) break;
-        const std::int64_t n = a.integers.back().value;
-        push(std::move(a));
-        for (std::int64_t k = 0; k < n && ok; ++k) {
-          PostproArgument b;
-          ok = list_integers(b, "a pair", 2);
-          if (ok) push(std::move(b));
-        }
-        break;
-      }
-      case PostproArguments::triaxial:
-        for (int k = 0; k < 6 && ok; ++k) ok = one_integer("a wall body number", 5);
-        break;
+    const int first = static_cast<int>(items[0].data() - step.text.data()) + 1;
+    const int last = first + static_cast<int>(items[0].size()) - 1;
+    auto period = read_list_directed_integer(items[0]);
+    if (!period || period->error != NumberError::none) {
+      reader_.report("L1004", step, first, last, "the period of 'STEP' is not an integer");
+      return std::nullopt;
     }
-    if (!ok) return std::nullopt;
+    command.period = Integer{period->value, reader_.span(step, first, last)};
+    if (period->value < 1)
+      reader_.report("L1003", step, first, last, "'STEP' period must be >= 1 (LMGC90 runs the command when Nstep mod n == 0)");
+    if (!run(kind.layout(dimension_), command)) return std::nullopt;
     return command;
   }
 

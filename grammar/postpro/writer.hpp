@@ -5,9 +5,11 @@
 
 namespace lmgc::grammar {
 
-// Canonical POSTPRO.DAT: a '#' ruler line, then every line's meaningful text padded to 30
-// columns and closed by ':' in column 31 (the layout of LMGC90's examples), and 'END'.
+// Canonical POSTPRO.DAT (the layout of LMGC90's examples): a '#' ruler comment line, then every
+// line's text (command name, 'STEP n', each argument line) padded with blanks to 30 columns and
+// closed by ':' in column 31, and a last 'END' line in the same layout. Integers are written
+// left-justified in their I fields, reals as ES14.7. parse_postpro(write_postpro(f)) == f.
 // LMGC90 itself writes no echo of this file (POSTPRO/POSTPRO.OUT is created empty).
-std::string write_postpro(const PostproFile& file, int dimension = 2);
+std::string write_postpro(const PostproFile& file);
 
 }  // namespace lmgc::grammar

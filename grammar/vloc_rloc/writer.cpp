@@ -24,24 +24,21 @@ std::string write_vloc_rloc(const VlocRlocFile& file) {
   out.reserve(256 + file.interactions.size() * 700);
   append_state_header(out, "! Vloc_Rloc", "      ", file.step.value, file.time.value);
   for (const VlocRlocInteraction& c : file.interactions) {
+    const InteractionKind* kind = find_interaction_kind(c.type.value, c.xxl);
+    // '(A6,2X,A5,2X,I7)', I10 in 2D xxl mode (state-and-outputs.md §1.4).
     out += "$icdan  ";
     append_fortran_a(out, c.type.value, 5);
     append_blanks(out, 2);
-    append_fortran_i(out, c.number.value, c.number.value > 9999999 ? 10 : 7);
+    append_fortran_i(out, c.number.value, kind ? kind->icdan_width : 7);
     out += '\n';
     out += c.title;
     out += '\n';
-    const InteractionKind* kind = find_interaction_kind(c.type.value);
-    std::string_view format = kind ? kind->data_format : std::string_view();
+    // The data line along the module's format; missing values are written blank / 0.
     std::size_t w = 0, n = 0;
-    while (!format.empty()) {
-      const std::size_t end = format.find(' ');
-      const std::string_view item = format.substr(0, end);
-      format = end == std::string_view::npos ? std::string_view() : format.substr(end + 1);
-      const int width = std::stoi(std::string(item.substr(item[0] == 'A' || item[0] == 'I' ? 1 : 0)));
-      if (item.back() == 'X') append_blanks(out, width);
-      else if (item[0] == 'A') append_fortran_a(out, w < c.words.size() ? std::string_view(c.words[w++].value) : "", width);
-      else append_fortran_i(out, n < c.integers.size() ? c.integers[n++].value : 0, width);
+    for (const DataItem& item : data_items(kind ? kind->data_format : std::string_view())) {
+      if (item.kind == 'X') append_blanks(out, item.width);
+      else if (item.kind == 'A') append_fortran_a(out, w < c.words.size() ? std::string_view(c.words[w++].value) : "", item.width);
+      else append_fortran_i(out, n < c.integers.size() ? c.integers[n++].value : 0, item.width);
     }
     out += '\n';
     for (const VlocRlocVector& v : c.vectors) {

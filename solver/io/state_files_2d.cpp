@@ -1,5 +1,11 @@
 #include "solver/io/state_files_2d.hpp"
 
+#include <algorithm>
+#include <map>
+
+#include "grammar/tact_behav/law_catalogue.hpp"
+#include "grammar/vloc_rloc/interaction_catalogue.hpp"
+
 namespace lmgc::solver {
 
 grammar::DofFile dof_file_2d(const Scene2D& scene, const RunState2D& state) {
@@ -28,6 +34,173 @@ grammar::DofFile dof_file_2d(const Scene2D& scene, const RunState2D& state) {
   // The MAILx module writes its dashed line even when it has no body (state-and-outputs.md §1.3).
   file.sections.push_back(grammar::DofSection{{}, true});
   return file;
+}
+
+namespace {
+
+std::string_view family_name(PairFamily2D f) {
+  switch (f) {
+    case PairFamily2D::DKDKx: return "DKDKx";
+    case PairFamily2D::DKKDx: return "DKKDx";
+    case PairFamily2D::DKJCx: return "DKJCx";
+    case PairFamily2D::DKPLx: return "DKPLx";
+    case PairFamily2D::PTPT2: return "PTPT2";
+    case PairFamily2D::PLPLx: return "PLPLx";
+    case PairFamily2D::PLJCx: return "PLJCx";
+  }
+  return "DKDKx";
+}
+
+// The '#' line naming a law's internal variables: names at their columns, 285 characters.
+std::string internal_comment(std::string_view keyword) {
+  const grammar::LawKind* kind = grammar::find_law_kind(keyword);
+  if (!kind || kind->internals_2d.count <= 0) return {};
+  std::string line(285, ' ');
+  line[0] = '#';
+  for (const auto& slot : kind->internals_2d.slots)
+    if (slot.column >= 1 && slot.column - 1 + slot.text.size() <= line.size())
+      line.replace(slot.column - 1, slot.text.size(), slot.text);
+  return line;
+}
+
+}  // namespace
+
+grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& state) {
+  using grammar::Integer;
+  using grammar::Real;
+  using grammar::Word;
+  grammar::VlocRlocFile file;
+  file.step = Integer{state.step};
+  file.time = Real{state.time};
+  const double h = state.h;
+  // Serial index of each contactor within the contactors of its type (LMGC90's module lists).
+  std::vector<std::int64_t> serial(scene.contactors.size(), 0);
+  std::map<std::string, std::int64_t> per_type;
+  for (std::size_t k = 0; k < scene.contactors.size(); ++k) serial[k] = ++per_type[scene.contactors[k].type];
+  // Modules in the alphabetical order of LMGC90's writer; inside one, by candidate contactor
+  // (PLPLx: in detection order).
+  constexpr PairFamily2D kWriteOrder[] = {PairFamily2D::DKDKx, PairFamily2D::DKJCx, PairFamily2D::DKKDx, PairFamily2D::DKPLx,
+                                          PairFamily2D::PLJCx, PairFamily2D::PLPLx, PairFamily2D::PTPT2};
+  for (PairFamily2D family : kWriteOrder) {
+    std::vector<std::size_t> members;
+    for (std::size_t k = 0; k < state.contacts.size(); ++k)
+      if (state.contacts[k].family == family) members.push_back(k);
+    if (members.empty()) continue;
+    const grammar::InteractionKind* kind = grammar::find_interaction_kind(family_name(family));
+    std::map<std::int32_t, std::int64_t> adjacency;  // running count per candidate contactor
+    std::vector<std::int64_t> iadj(members.size());
+    for (std::size_t m = 0; m < members.size(); ++m) iadj[m] = ++adjacency[state.contacts[members[m]].candidate];
+    std::vector<std::size_t> order(members.size());
+    for (std::size_t m = 0; m < members.size(); ++m) order[m] = m;
+    if (family != PairFamily2D::PLPLx)
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return state.contacts[members[a]].candidate < state.contacts[members[b]].candidate;
+      });
+    for (std::size_t m : order) {
+      const Interaction2D& c = state.contacts[members[m]];
+      const Contactor2D& cd = scene.contactors[static_cast<std::size_t>(c.candidate)];
+      const Contactor2D& an = scene.contactors[static_cast<std::size_t>(c.antagonist)];
+      const std::string& law = scene.laws[static_cast<std::size_t>(c.law)].nickname;
+      grammar::VlocRlocInteraction out;
+      out.type = Word{std::string(kind->type)};
+      out.number = Integer{static_cast<std::int64_t>(m + 1)};
+      out.title = std::string(kind->title);
+      const std::string status(status_name(c.status));
+      const Integer cd_body{cd.body + 1}, cd_rank{cd.rank}, an_body{an.body + 1}, an_rank{an.rank};
+      switch (family) {
+        case PairFamily2D::PLJCx:
+          out.words = {Word{"RBDY2"}, Word{cd.type}, Word{"CDVER"}, Word{law}, Word{"RBDY2"}, Word{an.type}, Word{status}};
+          out.integers = {cd_body, cd_rank, Integer{c.candidate_vertex}, an_body, an_rank, Integer{iadj[m]}};
+          break;
+        case PairFamily2D::PLPLx:
+          out.words = {Word{"RBDY2"}, Word{cd.type}, Word{"CDVER"}, Word{law}, Word{"RBDY2"}, Word{an.type}, Word{"ANSEG"}, Word{status}};
+          out.integers = {cd_body, cd_rank, Integer{c.candidate_vertex}, an_body, an_rank, Integer{c.antagonist_segment},
+                          Integer{serial[static_cast<std::size_t>(c.antagonist)]}};
+          break;
+        case PairFamily2D::DKPLx:
+          out.words = {Word{"RBDY2"}, Word{"DISKx"}, Word{law}, Word{"RBDY2"}, Word{an.type}, Word{"CDVER"}, Word{status}};
+          out.integers = {cd_body, cd_rank, an_body, an_rank, Integer{0}, Integer{iadj[m]}};
+          break;
+        default:
+          out.words = {Word{"RBDY2"}, Word{cd.type}, Word{law}, Word{"RBDY2"}, Word{an.type}, Word{status}};
+          out.integers = {cd_body, cd_rank, an_body, an_rank, Integer{serial[static_cast<std::size_t>(c.antagonist)]}};
+      }
+      const double gap_end = c.gap_begin + h * c.u(1);
+      // The written point of disk modules is the candidate's surface point (rigid-2d.md §3.4).
+      const bool disk = family == PairFamily2D::DKDKx || family == PairFamily2D::DKJCx || family == PairFamily2D::DKKDx;
+      const Eigen::Vector2d point = disk ? Eigen::Vector2d(c.point + 0.5 * c.gap_begin * c.normal) : c.point;
+      for (const grammar::VectorLineKind& line : kind->vectors) {
+        grammar::VlocRlocVector v;
+        for (int k = 0; k < line.count; ++k) v.labels.emplace_back(line.labels[k]);
+        const std::string first(line.labels[0]);
+        if (first.rfind("rl", 0) == 0) v.values = {Real{c.r(0) / h}, Real{c.r(1) / h}, Real{0.0}};
+        else if (first.rfind("vl", 0) == 0) v.values = {Real{c.u(0)}, Real{c.u(1)}, Real{0.0}};
+        else if (first == "gapTT" || first == "gap =") v.values = {Real{gap_end}};
+        else if (first == "n(1)=") v.values = {Real{c.normal.x()}, Real{c.normal.y()}, Real{0.0}};
+        else v.values = {Real{point.x()}, Real{point.y()}, Real{0.0}};
+        out.vectors.push_back(std::move(v));
+      }
+      const int internals = law_internal_count(scene.laws[static_cast<std::size_t>(c.law)].law);
+      if (internals > 0) {
+        std::vector<Real> values;
+        for (int k = 0; k < internals; ++k) values.push_back(Real{c.internal[static_cast<std::size_t>(k)]});
+        const std::size_t per_line = kind->internals == grammar::InternalLayout2D::per_line_6   ? 6
+                                     : kind->internals == grammar::InternalLayout2D::per_line_5 ? 5
+                                                                                                  : values.size();
+        if (kind->internals == grammar::InternalLayout2D::one_line_with_comment)
+          out.internal_comment = internal_comment(law_keyword(scene.laws[static_cast<std::size_t>(c.law)].law));
+        for (std::size_t k = 0; k < values.size(); k += per_line)
+          out.internal_lines.emplace_back(values.begin() + static_cast<std::ptrdiff_t>(k),
+                                          values.begin() + static_cast<std::ptrdiff_t>(std::min(values.size(), k + per_line)));
+      }
+      file.interactions.push_back(std::move(out));
+    }
+  }
+  return file;
+}
+
+std::vector<Interaction2D> warm_start_2d(const grammar::VlocRlocFile& file, const Scene2D& scene, double h) {
+  // Contactor index by (body rank, contactor rank).
+  std::map<std::pair<std::int64_t, std::int64_t>, std::int32_t> by_rank;
+  for (std::size_t k = 0; k < scene.contactors.size(); ++k)
+    by_rank[{scene.contactors[k].body + 1, scene.contactors[k].rank}] = static_cast<std::int32_t>(k);
+  std::vector<Interaction2D> previous;
+  for (const auto& b : file.interactions) {
+    PairFamily2D family;
+    const std::string& t = b.type.value;
+    if (t == "DKDKx") family = PairFamily2D::DKDKx;
+    else if (t == "DKJCx") family = PairFamily2D::DKJCx;
+    else if (t == "DKKDx") family = PairFamily2D::DKKDx;
+    else if (t == "DKPLx") family = PairFamily2D::DKPLx;
+    else if (t == "PLJCx") family = PairFamily2D::PLJCx;
+    else if (t == "PLPLx") family = PairFamily2D::PLPLx;
+    else if (t == "PTPT2") family = PairFamily2D::PTPT2;
+    else continue;
+    const bool vertex = family == PairFamily2D::PLJCx || family == PairFamily2D::PLPLx;
+    const auto& n = b.integers;
+    if (n.size() < 5 || b.vectors.empty() || b.vectors[0].values.size() < 2) continue;
+    const std::size_t an_at = vertex ? 3 : 2;
+    auto cd = by_rank.find({n[0].value, n[1].value});
+    auto an = by_rank.find({n[an_at].value, n[an_at + 1].value});
+    if (cd == by_rank.end() || an == by_rank.end()) continue;
+    Interaction2D c;
+    c.family = family;
+    c.candidate = cd->second;
+    c.antagonist = an->second;
+    c.candidate_vertex = vertex ? static_cast<std::int32_t>(n[2].value) : 0;
+    c.r = Eigen::Vector2d(b.vectors[0].values[0].value * h, b.vectors[0].values[1].value * h);
+    if (!b.words.empty()) status_from_name(b.words.back().value, c.status);
+    std::size_t k = 0;
+    for (const auto& line : b.internal_lines)
+      for (const auto& v : line)
+        if (k < c.internal.size()) c.internal[k++] = v.value;
+    previous.push_back(c);
+  }
+  std::sort(previous.begin(), previous.end(), [](const Interaction2D& a, const Interaction2D& b) {
+    return std::tie(a.family, a.candidate, a.antagonist, a.candidate_vertex) <
+           std::tie(b.family, b.candidate, b.antagonist, b.candidate_vertex);
+  });
+  return previous;
 }
 
 }  // namespace lmgc::solver

@@ -4,11 +4,21 @@
 #include <string>
 
 #include "grammar/dof/ast.hpp"
+#include "grammar/vloc_rloc/ast.hpp"
 #include "solver/integrator/step_2d.hpp"
 
 namespace lmgc::solver {
 
 // DOF.OUT.n / DOF.LAST: X (displacement from the reference) and V of every RBDY2 body.
 grammar::DofFile dof_file_2d(const Scene2D& scene, const RunState2D& state);
+
+// Vloc_Rloc.OUT.n / .LAST: the interactions of the step, module by module in LMGC90's order,
+// with LMGC90's data-line fields (docs/lmgc90-facts/rigid-2d.md §3.4).
+grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& state);
+
+// The interactions of a Vloc_Rloc.INI as the "previous step" of the first step (warm start):
+// reactions (rl/H × h), statuses and internal variables, matched to the scene's contactors.
+// Interactions naming contactors that do not exist are skipped (as LMGC90 does).
+std::vector<Interaction2D> warm_start_2d(const grammar::VlocRlocFile& file, const Scene2D& scene, double h);
 
 }  // namespace lmgc::solver

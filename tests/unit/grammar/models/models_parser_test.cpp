@@ -33,7 +33,57 @@ TEST(ModelsParser, ReadsModelElementAndOptions) {
   EXPECT_EQ(f.models[0].element.value, "Q4xxx");
   ASSERT_EQ(f.models[0].options.size(), 3u);
   EXPECT_EQ(f.models[0].options[1].value.value, "large");
-  EXPECT_EQ(f.models[0].options[2].vfield_size.value, 3);
+  EXPECT_EQ(f.models[0].vfield_max_size.value, 3);
+}
+
+TEST(ModelsParser, OptionValueKeepsItsLeadingBlanks) {
+  std::string t = kModel;
+  t.replace(t.find("  large"), 7, "   large");
+  DiagnosticSink sink;
+  EXPECT_EQ(parse_models(SourceText("MODELS.DAT", t), sink).models[0].options[1].value.value, " large");
+}
+
+TEST(ModelsParser, UserModelNameIsReadListDirected) {
+  DiagnosticSink sink;
+  const ModelsFile f = parse_models(SourceText("MODELS.DAT",
+                                               "$model\n M2DNL\n        MECAx  Q4xxx  u_mdl    my_law  other\n"
+                                               "                      isext  no___\n"),
+                                    sink);
+  EXPECT_TRUE(sink.items().empty());
+  ASSERT_EQ(f.models.size(), 1u);
+  EXPECT_EQ(f.models[0].user_model.value, "my_law");
+  ASSERT_EQ(f.models[0].options.size(), 1u);
+  EXPECT_EQ(write_models(f),
+            "$model  mdlty  finel  eleop  value  \n M2DNL                      \n"
+            "        MECAx  Q4xxx  u_mdl  my_law" + std::string(44, ' ') + "\n"
+            "                      isext  no___                         \n");
+}
+
+TEST(ModelsParser, VectorFieldSizeIsTheLargestOfTheModelAndIsWrittenOnEveryExtvfLine) {
+  DiagnosticSink sink;
+  const ModelsFile f = parse_models(SourceText("MODELS.DAT",
+                                               "$model\n M2DNL\n        MECAx  Q4xxx  isext  MatL_\n"
+                                               "                      extvf  temperature                        3\n"
+                                               "                      extvf  stress                             7\n"),
+                                    sink);
+  EXPECT_TRUE(sink.items().empty());
+  EXPECT_EQ(f.models[0].vfield_max_size.value, 7);
+  const std::string out = write_models(f);
+  // A30 value, 1x, I5 size.
+  EXPECT_NE(out.find("extvf  temperature" + std::string(19 + 1 + 4, ' ') + "7\n"), std::string::npos);
+  EXPECT_NE(out.find("extvf  stress" + std::string(24 + 1 + 4, ' ') + "7\n"), std::string::npos);
+}
+
+TEST(ModelsParser, ModelWithoutOptionsIgnoresLaterOptionLinesAsLmgc90Does) {
+  DiagnosticSink sink;
+  const ModelsFile f = parse_models(SourceText("MODELS.DAT", "$model\n M2DNL\n        THERM  T3xxx\n                      kine_  large\n"), sink);
+  ASSERT_EQ(sink.items().size(), 1u);
+  EXPECT_EQ(sink.items()[0].code, "L1019");
+  EXPECT_EQ(sink.items()[0].where.span.line, 4u);
+  EXPECT_EQ(sink.items()[0].where.span.column, 23u);
+  EXPECT_TRUE(f.models[0].options.empty());
+  EXPECT_EQ(write_models(f), "$model  mdlty  finel  eleop  value  \n M2DNL                      \n"
+                             "        THERM  T3xxx" + std::string(39, ' ') + "\n");
 }
 
 TEST(ModelsParser, ExtFIsReadAsExtsf) {
@@ -60,6 +110,12 @@ TEST(ModelsBroken, MalformedFieldSize) {
   std::string t = kModel;
   t.replace(t.rfind('3'), 1, "x");
   expect_diagnostic(t, "L1004", 5, 61);
+}
+TEST(ModelsBroken, SecondMdltyLineAfterOptions) {
+  expect_diagnostic(kModel + "        THERM  T3xxx\n", "L1013", 6, 9);
+}
+TEST(ModelsBroken, MissingUserModelName) {
+  expect_diagnostic("$model\n M2DNL\n        MECAx  Q4xxx  u_mdl\n", "L1015", 3, 30);
 }
 TEST(ModelsBroken, NonAsciiByte) {
   std::string t = kModel;

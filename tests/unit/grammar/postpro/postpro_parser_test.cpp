@@ -19,9 +19,10 @@ const std::string kFile =
     "STEP 10                       :\n"
     "END                           :\n";
 
-void expect_diagnostic(const std::string& text, const std::string& code, std::uint32_t line, std::uint32_t column) {
+void expect_diagnostic(const std::string& text, const std::string& code, std::uint32_t line, std::uint32_t column,
+                       int dimension = 2) {
   DiagnosticSink sink;
-  parse_postpro(SourceText("POSTPRO.DAT", text), sink);
+  parse_postpro(SourceText("POSTPRO.DAT", text), sink, dimension);
   ASSERT_FALSE(sink.items().empty());
   EXPECT_EQ(sink.items()[0].code, code) << sink.items()[0].message;
   EXPECT_EQ(sink.items()[0].where.span.line, line);
@@ -47,8 +48,61 @@ TEST(PostproParser, ACommandReadAsAColourIsConsumedWithAWarning) {
   const PostproFile f = parse_postpro(SourceText("POSTPRO.DAT", text), sink);
   ASSERT_EQ(f.commands.size(), 1u);
   EXPECT_EQ(f.commands[0].arguments[0].word.value, "DENSE");
-  ASSERT_FALSE(sink.items().empty());
+  ASSERT_EQ(sink.items().size(), 1u);
   EXPECT_EQ(sink.items()[0].code, "L1019");
+  EXPECT_EQ(sink.items()[0].where.span.line, 3u);
+  EXPECT_FALSE(sink.has_errors());
+}
+
+// RIGID_2D/500PL_PerioBoxJC: the consumed command's STEP line is then skipped as a STEP line,
+// and the commands after it are read normally.
+TEST(PostproParser, CommandsAfterAConsumedOneAreRead) {
+  const std::string text =
+      "AVERAGE VELOCITY EVOLUTION    :\nSTEP 1                        :\n"
+      "DENSE SAMPLE COMPACITY        :\nSTEP 1                        :\n"
+      "TORQUE EVOLUTION              :\nSTEP 1\n1\n501\nEND\n";
+  DiagnosticSink sink;
+  const PostproFile f = parse_postpro(SourceText("POSTPRO.DAT", text), sink, 2);
+  ASSERT_EQ(f.commands.size(), 2u);
+  EXPECT_EQ(f.commands[1].name.value, "TORQUE EVOLUTION");
+  EXPECT_EQ(f.commands[1].arguments[1].integers[0].value, 501);
+}
+
+TEST(PostproParser, ReadsEveryArgumentFormat) {
+  const std::string text =
+      "MP VALUE TRACKING\nSTEP 2\n1\n     12 3\n"
+      "NEW MECAx SETS\nSTEP 1\n      1\n      1\n      1      2 \n      2\n      4\n"
+      "NEW DIST SETS\nSTEP 1\n1\n1, 2 3 4\n"
+      "COMPACITY EVOLUTION\nSTEP 1\nMAT01\nCOUETTE\n7\n8\n"
+      "QUASI SLIDING CONTACT\nSTEP 1\n 2.5000000E-01\n"
+      "DENSE SAMPLE COMPACITY\nSTEP 1\nINTER   1024\n"
+      "CLxxx ANALYSIS\nSTEP 1\n1\n 5 6\nEND\n";
+  DiagnosticSink sink;
+  const PostproFile f = parse_postpro(SourceText("POSTPRO.DAT", text), sink, 2);
+  EXPECT_TRUE(sink.items().empty()) << sink.items()[0].message;
+  ASSERT_EQ(f.commands.size(), 7u);
+  EXPECT_EQ(f.commands[0].period.value, 2);
+  EXPECT_EQ(f.commands[0].arguments[1].integers[0].value, 12);
+  EXPECT_EQ(f.commands[0].arguments[1].integers[1].value, 3);
+  EXPECT_EQ(f.commands[1].arguments.size(), 5u);
+  EXPECT_EQ(f.commands[1].arguments[2].integers[1].value, 2);
+  EXPECT_EQ(f.commands[2].arguments[1].integers.size(), 4u);
+  EXPECT_EQ(f.commands[3].arguments.size(), 4u);
+  EXPECT_DOUBLE_EQ(f.commands[4].arguments[0].reals[0].value, 0.25);
+  EXPECT_EQ(f.commands[5].arguments[0].integers[0].value, 1024);
+  EXPECT_EQ(f.commands[6].arguments[1].integers[1].value, 6);
+  // The canonical writer reads back to the same file.
+  DiagnosticSink again;
+  EXPECT_TRUE(parse_postpro(SourceText("echo", write_postpro(f)), again, 2) == f);
+  EXPECT_TRUE(again.items().empty());
+}
+
+TEST(PostproParser, UnknownDimensionAcceptsCommandsOfBothReaders) {
+  DiagnosticSink sink;
+  const PostproFile f = parse_postpro(
+      SourceText("P", "TRIAXIAL COMPACITY\nSTEP 1\n1\n2\n3\n4\n5\n6\nPLPLx ANALYSIS\nSTEP 1\nEND\n"), sink);
+  EXPECT_FALSE(sink.has_errors());
+  EXPECT_EQ(f.commands.size(), 2u);
 }
 
 TEST(PostproParser, DimensionDecidesTheSectorsArgument) {
@@ -65,6 +119,21 @@ TEST(PostproBroken, StepWithoutPeriod) { expect_diagnostic("SOLVER INFORMATIONS\
 TEST(PostproBroken, MissingEnd) { expect_diagnostic("SOLVER INFORMATIONS\nSTEP 1\n", "L1012", 2, 7); }
 TEST(PostproBroken, BodyListCutShort) { expect_diagnostic("BODY TRACKING\nSTEP 1\n3\n1\n", "L1006", 4, 2); }
 TEST(PostproBroken, MalformedBodyNumber) { expect_diagnostic("BODY TRACKING\nSTEP 1\n1\n5x\nEND\n", "L1004", 4, 1); }
+TEST(PostproBroken, CommandOfTheOtherDimension) { expect_diagnostic("#\nTRIAXIAL COMPACITY\nSTEP 1\nEND\n", "L1001", 2, 1, 2); }
+TEST(PostproBroken, ZeroPeriod) { expect_diagnostic("KINETIC ENERGY\nSTEP   0\nEND\n", "L1003", 2, 8); }
+TEST(PostproBroken, MalformedPeriod) { expect_diagnostic("KINETIC ENERGY\nSTEP x1\nEND\n", "L1004", 2, 6); }
+TEST(PostproBroken, UnknownCompacityModel) {
+  expect_diagnostic("COMPACITY EVOLUTION\nSTEP 1\nMAT01\nDENSE SAMPLE\nEND\n", "L1017", 4, 1);
+}
+TEST(PostproBroken, PairWithOneValue) {
+  expect_diagnostic("DOUBLETS TORQUE EVOLUTION\nSTEP 1\n1\n 7\nEND\n", "L1015", 4, 1, 3);
+}
+TEST(PostproBroken, MalformedListedInteger) {
+  expect_diagnostic("CONTACT FORCE DISTRIBUTION\nSTEP 1\n  1.5\nEND\n", "L1004", 3, 3, 3);
+}
+TEST(PostproBroken, LeadingBlankBeforeACommandName) {
+  expect_diagnostic("#\n SOLVER INFORMATIONS\nSTEP 1\nEND\n", "L1001", 2, 1);
+}
 
 TEST(PostproWriter, CanonicalLayoutRoundTrips) {
   DiagnosticSink sink;

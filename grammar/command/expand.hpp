@@ -1,0 +1,80 @@
+#pragma once
+// Running COMMAND.DAT: CHIC's compilation (APPELLE inlined, occurrences, REPETE loops resolved)
+// and its execution into the flat list of module commands a bounded run executes.
+// spec: state-and-outputs.md §2.1.2.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "grammar/command/ast.hpp"
+#include "grammar/common/diagnostic.hpp"
+
+namespace lmgc::grammar {
+
+// CHIC's deployed program: the main program with every APPELLE replaced by 'SUB name', the
+// subroutine's lines and 'RETOUR', until no APPELLE remains.
+struct CommandLoop {
+  std::size_t repete = 0;  // deployed index of the REPETE line
+  std::size_t label = 0;   // deployed index of the line DEPUIS names
+  std::int64_t count = 0;  // n of 'REPETE n FOIS': n + 1 passes
+};
+
+struct CommandProgram {
+  std::vector<std::size_t> entries;        // deployed list: indices into CommandFile::lines
+  std::vector<std::int64_t> occurrence;    // 'OCCURENCE m' on the next entry, else 0
+  std::vector<CommandLoop> loops;
+};
+
+// Reports what CHIC stops on while compiling (missing SUB or RETOUR, DEPUIS label not found,
+// more than 1000 commands, more than 50 loops); nullopt then.
+std::optional<CommandProgram> compile_command_program(const CommandFile& file, DiagnosticSink& sink,
+                                                      const std::string& path = "COMMAND.DAT");
+
+// One module command as executed.
+struct ExecutedCommand {
+  std::string keyword;    // catalogue spelling ("WRITE OUT DOF")
+  std::string module;     // catalogue module ("overall", "nlgs", ...)
+  std::string text;       // the significant text of the line ("WRITE OUT DOF STEP 100")
+  std::string parameter;  // the text after the keyword ("STEP 100")
+  std::vector<CommandValue> arguments;
+  std::uint32_t line = 0;      // line in COMMAND.DAT
+  std::size_t deployed = 0;    // index in the deployed program
+};
+
+// A flag that a command sets when it runs (CHIC flags: AFTER ITER CHECK sets flag 1 to 0 when
+// converged, 1 otherwise; COMPUTE TIME STEP sets flags 2 and 3; ...). Flags start at 0.
+struct CommandFlagRule {
+  std::string keyword;
+  int flag = 1;
+  std::int64_t value = 0;
+};
+
+// Runs the program as CHIC does (REPETE n gives n + 1 passes, STOP REPETE SI, CAP SI, IOK and
+// FLAG lines) and returns the module commands executed, at most `max_commands` of them. Flags
+// are set only by `rules` (so with no rule every flag reads 0: 'STOP REPETE SI IOK = 0' after
+// 'IOK = FLAG 1' stops at the first check). 'IOK = ?' (keyboard input) reads 0.
+std::vector<ExecutedCommand> expand_command_program(const CommandFile& file, std::size_t max_commands,
+                                                    DiagnosticSink& sink,
+                                                    std::span<const CommandFlagRule> rules = {});
+
+// Run parameters a COMMAND.DAT sets, read off its bounded run (every flag 0) and its loops.
+struct CommandRunParameters {
+  double dt = 0.0;
+  double theta = 0.5;
+  long steps = 0;                 // INCREMENT STEP executed (run bounded to 10^7 commands)
+  std::string norm;               // 'Quad', 'QuaN', 'Maxm', 'QM/16' (trailing blanks removed)
+  double tolerance = 0.0;
+  double relax = 1.0;
+  std::string storage;            // Stored_Delassus_Loops / Exchange_Local_Global
+  int gs_it1 = 0, gs_it2 = 0;     // sweeps per check, checks: REPETE counts + 1
+  long write_every = 0;           // WRITE OUT DOF STEP p
+  long display_every = 0;         // WRITE OUTPUT GMV STEP n
+  bool quick_scramble = false;
+  double y_min = 0.0;
+  bool has_y_min = false;
+};
+CommandRunParameters command_run_parameters(const CommandFile& file, DiagnosticSink& sink);
+
+}  // namespace lmgc::grammar
