@@ -1,1 +1,94 @@
-int main(){return 0;}
+// lmgc-check: reads a case folder like a compiler reads a program, and reports every problem with
+// its file, line and column. Exit: 0 no error, 1 errors in the data, 2 usage error or unreadable
+// folder.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <unistd.h>
+
+#include "grammar/common/diagnostic_catalogue.hpp"
+#include "grammar/common/output_file.hpp"
+#include "validate/case_files.hpp"
+#include "validate/render.hpp"
+
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitDataErrors = 1;
+constexpr int kExitUsage = 2;
+
+int explain(const std::string& code) {
+  const auto* kind = lmgc::grammar::find_diagnostic_kind(code);
+  if (!kind) {
+    std::cerr << "lmgc-check: unknown diagnostic code '" << code << "'\n";
+    return kExitUsage;
+  }
+  std::cout << kind->code << " (" << lmgc::grammar::severity_name(kind->severity) << "): " << kind->summary << "\n\n"
+            << kind->explanation << "\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"lmgc-check: validate an LMGC90 case folder (CASE_DIR/DATBOX/) before running it"};
+  std::string case_dir;
+  std::string explain_code;
+  bool echo = false, json = false, quiet = false, werror = false, no_color = false;
+  app.add_option("CASE_DIR", case_dir, "case folder holding DATBOX/");
+  app.add_flag("--echo", echo, "also write the echo files LMGC90 writes when it reads the case (OUTBOX/*.OUT)");
+  app.add_flag("--json", json, "print the diagnostics as one JSON array on standard output (schema: docs/diagnostics.md)");
+  app.add_flag("-q,--quiet", quiet, "print only errors and the summary");
+  app.add_flag("--werror", werror, "treat warnings as errors (exit code 1)");
+  app.add_flag("--no-color", no_color, "never color the output (NO_COLOR in the environment does the same)");
+  app.add_option("--explain", explain_code, "print the long description of a diagnostic code and exit");
+  app.set_version_flag("--version", "lmgc-check 0.1.0");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitUsage;
+  }
+  if (!explain_code.empty()) return explain(explain_code);
+  if (case_dir.empty()) {
+    std::cerr << "lmgc-check: missing CASE_DIR\n" << app.help();
+    return kExitUsage;
+  }
+
+  lmgc::grammar::DiagnosticSink sink(5000);
+  auto files = lmgc::validate::load_case(case_dir, sink);
+
+  // Echo files are written only from a case that read without error, and never into DATBOX/.
+  if (files && echo && !sink.has_errors()) {
+    for (const auto& output : lmgc::validate::echo_files(*files)) {
+      std::string error;
+      if (!lmgc::grammar::write_file_whole(std::filesystem::path(case_dir) / output.relative_path, output.content,
+                                                 error))
+        sink.report("L9003", lmgc::grammar::Location{(std::filesystem::path(case_dir) / output.relative_path).string(), {}},
+                    error);
+    }
+  }
+
+  std::size_t notes = 0;
+  for (const auto& d : sink.items()) notes += d.severity == lmgc::grammar::Severity::note;
+  if (json) {
+    std::cout << lmgc::validate::render_json(sink.items()) << "\n";
+  } else {
+    const bool color = !no_color && std::getenv("NO_COLOR") == nullptr && isatty(STDOUT_FILENO);
+    const auto lookup = [&](const std::string& file, std::uint32_t line) -> std::string_view {
+      if (!files) return {};
+      auto it = files->sources.find(file);
+      return it == files->sources.end() ? std::string_view{} : it->second.line_text(line);
+    };
+    for (const auto& d : sink.items()) {
+      if (quiet && d.severity != lmgc::grammar::Severity::error) continue;
+      std::cout << lmgc::validate::render_text(d, lookup, {color});
+    }
+    if (sink.truncated()) std::cout << "(further diagnostics not shown)\n";
+    std::cout << lmgc::validate::render_summary(sink.error_count(), sink.warning_count(), notes) << "\n";
+  }
+  if (!files) return kExitUsage;
+  if (sink.has_errors() || (werror && sink.warning_count() > 0)) return kExitDataErrors;
+  return kExitOk;
+}

@@ -1,0 +1,186 @@
+// Loading a case folder: which DATBOX files LMGC90 reads and how each is parsed and echoed.
+// spec: state-and-outputs.md §0 (layout), §1.6 (echo files); datbox-inputs.md §5 (evolution).
+#include "validate/case_files.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <system_error>
+
+#include "grammar/bodies/parser.hpp"
+#include "grammar/bodies/writer.hpp"
+#include "grammar/bulk_behav/parser.hpp"
+#include "grammar/bulk_behav/writer.hpp"
+#include "grammar/command/parser.hpp"
+#include "grammar/dof/parser.hpp"
+#include "grammar/drv_dof/parser.hpp"
+#include "grammar/drv_dof/writer.hpp"
+#include "grammar/gpv/parser.hpp"
+#include "grammar/models/parser.hpp"
+#include "grammar/models/writer.hpp"
+#include "grammar/postpro/parser.hpp"
+#include "grammar/tact_behav/parser.hpp"
+#include "grammar/tact_behav/writer.hpp"
+#include "grammar/vloc_rloc/parser.hpp"
+
+namespace lmgc::validate {
+namespace {
+
+namespace fs = std::filesystem;
+using grammar::DiagnosticSink;
+using grammar::SourceText;
+
+// Which files a case must have. The thermal examples of LMGC90 run without TACT_BEHAV.DAT and
+// Vloc_Rloc.INI (no contactor, so no interaction to read), so those two are needed only when a
+// body carries contactors; Vloc_Rloc.INI is then still optional (no interaction at start).
+enum class Requirement { always, with_mailx, with_contactors, optional };
+
+// The DATBOX files LMGC90 reads (ChiPy ReadDatbox + the legacy COMMAND.DAT driver).
+struct DatboxFileKind {
+  std::string_view name;
+  Requirement requirement;
+  void (*parse)(CaseFiles&, const SourceText&, DiagnosticSink&);
+};
+
+constexpr DatboxFileKind kDatboxFiles[] = {
+    {"BODIES.DAT", Requirement::always,
+     [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.bodies = grammar::parse_bodies(s, d); }},
+    {"BULK_BEHAV.DAT", Requirement::always,
+     [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.bulk_behav = grammar::parse_bulk_behav(s, d); }},
+    {"TACT_BEHAV.DAT", Requirement::with_contactors,
+     [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.tact_behav = grammar::parse_tact_behav(s, d); }},
+    {"MODELS.DAT", Requirement::with_mailx,
+     [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.models = grammar::parse_models(s, d); }},
+    {"DRV_DOF.DAT", Requirement::always,
+     [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.drv_dof = grammar::parse_drv_dof(s, d); }},
+    {"DOF.INI", Requirement::always,
+     [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.dof_ini = grammar::parse_dof(s, d); }},
+    {"Vloc_Rloc.INI", Requirement::optional,
+     [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.vloc_rloc_ini = grammar::parse_vloc_rloc(s, d); }},
+    {"GPV.INI", Requirement::with_mailx,
+     [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.gpv_ini = grammar::parse_gpv(s, d); }},
+    {"POSTPRO.DAT", Requirement::optional,
+     [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.postpro = grammar::parse_postpro(s, d); }},
+    {"COMMAND.DAT", Requirement::optional,
+     [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.command = grammar::parse_command(s, d); }},
+};
+
+bool read_whole_file(const fs::path& path, std::string& text) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream s;
+  s << in.rdbuf();
+  if (in.bad()) return false;
+  text = s.str();
+  return true;
+}
+
+bool has_contactors(const CaseFiles& c) {
+  if (!c.bodies) return false;
+  for (const auto& b : c.bodies->bodies)
+    if (!b.contactors.empty()) return true;
+  return false;
+}
+
+bool has_mailx(const CaseFiles& c) {
+  if (!c.bodies) return false;
+  for (const auto& b : c.bodies->bodies)
+    if (b.type == grammar::BodyType::mailx) return true;
+  return false;
+}
+
+}  // namespace
+
+std::optional<CaseFiles> load_case(const fs::path& case_dir, DiagnosticSink& sink) {
+  std::error_code ec;
+  const fs::path datbox = case_dir / "DATBOX";
+  if (!fs::is_directory(case_dir, ec) || !fs::is_directory(datbox, ec)) {
+    sink.report("L9002", grammar::Location{case_dir.string(), {}},
+                fs::is_directory(case_dir, ec) ? "'" + case_dir.string() + "' has no DATBOX/ folder"
+                                               : "'" + case_dir.string() + "' is not a folder");
+    return std::nullopt;
+  }
+  CaseFiles files;
+  files.case_dir = case_dir;
+  std::set<std::string> known;
+  auto read_source = [&](const std::string& name) -> const SourceText* {
+    const fs::path path = datbox / name;
+    std::string text;
+    if (!read_whole_file(path, text)) {
+      sink.report("L9001", grammar::Location{path.string(), {}}, "cannot read '" + path.string() + "'");
+      return nullptr;
+    }
+    auto [it, inserted] = files.sources.emplace(path.string(), SourceText(path.string(), std::move(text)));
+    return &it->second;
+  };
+
+  for (const DatboxFileKind& kind : kDatboxFiles) {
+    const std::string name(kind.name);
+    known.insert(name);
+    const fs::path path = datbox / name;
+    if (!fs::exists(path, ec)) {
+      const bool required = kind.requirement == Requirement::always ||
+                            (kind.requirement == Requirement::with_mailx && has_mailx(files)) ||
+                            (kind.requirement == Requirement::with_contactors && has_contactors(files));
+      const char* which = kind.requirement == Requirement::with_mailx        ? " with MAILx bodies"
+                          : kind.requirement == Requirement::with_contactors ? " with contactors"
+                                                                             : "";
+      if (required)
+        sink.report("L9001", grammar::Location{path.string(), {}},
+                    "'" + name + "' is missing; LMGC90 reads it for every case" + which);
+      continue;
+    }
+    if (const SourceText* source = read_source(name)) kind.parse(files, *source, sink);
+  }
+
+  // Evolution files named by driven dofs.
+  if (files.drv_dof) {
+    for (const auto& body : files.drv_dof->bodies)
+      for (const auto& node : body.nodes)
+        for (const auto& dof : node.dofs) {
+          if (!dof.uses_evolution) continue;
+          const std::string name = dof.evolution_file.value;
+          if (name.empty() || files.evolutions.count(name) || known.count(name)) continue;
+          known.insert(name);
+          if (!fs::exists(datbox / name, ec)) {
+            sink.report("L9001",
+                        grammar::Location{(datbox / "DRV_DOF.DAT").string(), dof.evolution_file.span},
+                        "evolution file '" + name + "' named here does not exist in DATBOX/");
+            continue;
+          }
+          if (const SourceText* source = read_source(name))
+            files.evolutions.emplace(name, grammar::parse_evolution(*source, sink));
+        }
+  }
+
+  // Everything else in DATBOX/ is not read by LMGC90: say so once per file.
+  std::vector<std::string> others;
+  for (const auto& entry : fs::directory_iterator(datbox, ec))
+    if (entry.is_regular_file() && !known.count(entry.path().filename().string()))
+      others.push_back(entry.path().filename().string());
+  std::sort(others.begin(), others.end());
+  for (const auto& name : others) {
+    files.unread_files.push_back(name);
+    sink.report("L1021", grammar::Location{(datbox / name).string(), {}},
+                "'" + name + "' is not read by LMGC90; it is not checked");
+  }
+  return files;
+}
+
+std::vector<OutputFile> echo_files(const CaseFiles& c) {
+  std::vector<OutputFile> out;
+  if (c.bodies) out.push_back({"OUTBOX/BODIES.OUT", grammar::write_bodies(*c.bodies)});
+  if (c.bulk_behav) out.push_back({"OUTBOX/BULK_BEHAV.OUT", grammar::write_bulk_behav(*c.bulk_behav)});
+  if (c.tact_behav) out.push_back({"OUTBOX/TACT_BEHAV.OUT", grammar::write_tact_behav(*c.tact_behav)});
+  if (c.models) out.push_back({"OUTBOX/MODELS.OUT", grammar::write_models(*c.models)});
+  if (c.drv_dof) out.push_back({"OUTBOX/DRV_DOF.OUT", grammar::write_drv_dof(*c.drv_dof)});
+  // LMGC90 rewrites each evolution file into OUTBOX/ (datbox-inputs.md §5).
+  for (const auto& [name, evolution] : c.evolutions)
+    out.push_back({fs::path("OUTBOX") / name, grammar::write_evolution(evolution)});
+  // POSTPRO.OUT is created empty in POSTPRO/ (datbox-inputs.md §8).
+  if (c.postpro) out.push_back({"POSTPRO/POSTPRO.OUT", ""});
+  return out;
+}
+
+}  // namespace lmgc::validate

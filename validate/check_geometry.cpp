@@ -1,0 +1,191 @@
+// Physical sanity of BODIES.DAT: sizes, polygon orientation and simplicity, closed polyhedra,
+// finite elements with positive Jacobian. spec: datbox-inputs.md §1.4-1.5.
+#include <fmt/format.h>
+
+#include <Eigen/Core>
+#include <cmath>
+#include <map>
+
+#include "validate/checks.hpp"
+
+namespace lmgc::validate {
+namespace {
+
+using grammar::Body;
+using grammar::Contactor;
+using grammar::Real;
+
+struct Reporter {
+  grammar::DiagnosticSink& sink;
+  std::string file;
+  void operator()(std::string_view code, grammar::SourceSpan span, std::string message, std::string hint = {}) {
+    sink.report(code, grammar::Location{file, span}, std::move(message), std::move(hint));
+  }
+};
+
+std::string body_name(const Body& body, std::size_t rank) {
+  return fmt::format("{} {}", grammar::body_type_keyword(body.type), rank);
+}
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+bool segments_cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c, const Eigen::Vector2d& d) {
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a), d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
+}
+
+void check_polygon(const Contactor& c, const std::string& owner, Reporter& report) {
+  const std::size_t n = c.vertices.size();
+  std::vector<Eigen::Vector2d> v;
+  for (const auto& p : c.vertices) v.emplace_back(p[0].value, p[1].value);
+  if (n < 3) {
+    report("L3009", c.type.span, fmt::format("polygon of {} has {} vertices; at least 3 are needed", owner, n));
+    return;
+  }
+  double area2 = 0.0;
+  double scale = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    area2 += cross(v[i], v[(i + 1) % n]);
+    scale = std::max(scale, (v[i] - v[(i + 1) % n]).norm());
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;
+      if (segments_cross(v[i], v[(i + 1) % n], v[j], v[(j + 1) % n])) {
+        report("L3009", c.vertices[j][0].span,
+               fmt::format("polygon of {} is not simple: edges {} and {} cross", owner, i + 1, j + 1));
+        return;
+      }
+    }
+  if (std::fabs(area2) <= 1e-12 * scale * scale) {
+    report("L3009", c.type.span, fmt::format("polygon of {} is degenerate (zero area)", owner));
+  } else if (area2 < 0.0) {
+    report("L3009", c.type.span,
+           fmt::format("polygon of {} is clockwise; LMGC90 requires counter-clockwise vertices (it stops on a "
+                       "negative area)",
+                       owner),
+           "list the vertices in the reverse order");
+  }
+}
+
+void check_polyhedron(const Contactor& c, const std::string& owner, Reporter& report) {
+  const std::size_t nv = c.vertices.size();
+  std::vector<Eigen::Vector3d> v;
+  for (const auto& p : c.vertices) v.emplace_back(p[0].value, p[1].value, p[2].value);
+  // Every edge of a closed, consistently oriented surface appears once in each direction.
+  std::map<std::pair<std::int64_t, std::int64_t>, int> edges;
+  double volume6 = 0.0;
+  for (const auto& f : c.faces) {
+    std::array<std::int64_t, 3> id{f[0].value, f[1].value, f[2].value};
+    bool valid = true;
+    for (auto k : id)
+      if (k < 1 || k > static_cast<std::int64_t>(nv)) valid = false;
+    if (!valid) {
+      report("L3010", f[0].span, fmt::format("face of {} names a vertex outside 1..{}", owner, nv));
+      return;
+    }
+    const Eigen::Vector3d& a = v[static_cast<std::size_t>(id[0] - 1)];
+    const Eigen::Vector3d& b = v[static_cast<std::size_t>(id[1] - 1)];
+    const Eigen::Vector3d& d = v[static_cast<std::size_t>(id[2] - 1)];
+    if ((b - a).cross(d - a).norm() <= 1e-14 * std::max(1.0, (b - a).squaredNorm())) {
+      report("L3010", f[0].span, fmt::format("face ({}, {}, {}) of {} has zero area", id[0], id[1], id[2], owner));
+      return;
+    }
+    volume6 += a.dot(b.cross(d));
+    for (int k = 0; k < 3; ++k) ++edges[{id[static_cast<std::size_t>(k)], id[static_cast<std::size_t>((k + 1) % 3)]}];
+  }
+  for (const auto& [edge, count] : edges) {
+    const auto reverse = edges.find({edge.second, edge.first});
+    if (count != 1 || reverse == edges.end() || reverse->second != 1) {
+      report("L3010", c.type.span,
+             fmt::format("polyhedron of {} is not closed with consistent faces (edge {}-{})", owner, edge.first,
+                         edge.second));
+      return;
+    }
+  }
+  if (volume6 <= 0.0)
+    report("L3010", c.type.span,
+           fmt::format("polyhedron of {} has inward faces (negative volume); LMGC90 stops on it", owner),
+           "order every face's vertices counter-clockwise seen from outside");
+}
+
+// Jacobian of linear elements at their nodes: the signed area (2D) or volume (3D).
+void check_element(const Body& body, const grammar::Element& e, const std::string& owner, Reporter& report) {
+  const std::string& type = e.type.value;
+  auto node = [&](std::size_t k) -> const grammar::Node* {
+    const std::int64_t id = e.nodes[k].value;
+    if (id < 1 || id > static_cast<std::int64_t>(body.nodes.size())) return nullptr;
+    return &body.nodes[static_cast<std::size_t>(id - 1)];
+  };
+  auto xy = [](const grammar::Node* n) {
+    return Eigen::Vector2d(n->coordinates.size() > 0 ? n->coordinates[0].value : 0.0,
+                           n->coordinates.size() > 1 ? n->coordinates[1].value : 0.0);
+  };
+  if (type == "T3xxx" || type == "Q4xxx") {
+    const std::size_t m = type == "T3xxx" ? 3 : 4;
+    if (e.nodes.size() < m) return;
+    for (std::size_t k = 0; k < m; ++k) {
+      const grammar::Node* a = node(k);
+      const grammar::Node* b = node((k + 1) % m);
+      const grammar::Node* c = node((k + m - 1) % m);
+      if (!a || !b || !c) return;  // reported by the reference checks
+      const double jacobian = cross(xy(b) - xy(a), xy(c) - xy(a));
+      if (jacobian <= 0.0) {
+        report("L3011", e.type.span,
+               fmt::format("element {} {} of {} has a non-positive Jacobian at its node {} (nodes must turn "
+                           "counter-clockwise)",
+                           type, &e - body.elements.data() + 1, owner, e.nodes[k].value));
+        return;
+      }
+    }
+  } else if (type == "TE4xx") {
+    if (e.nodes.size() < 4) return;
+    std::array<Eigen::Vector3d, 4> p;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const grammar::Node* n = node(k);
+      if (!n || n->coordinates.size() < 3) return;
+      p[k] = Eigen::Vector3d(n->coordinates[0].value, n->coordinates[1].value, n->coordinates[2].value);
+    }
+    if ((p[1] - p[0]).cross(p[2] - p[0]).dot(p[3] - p[0]) <= 0.0)
+      report("L3011", e.type.span,
+             fmt::format("element TE4xx {} of {} has a non-positive Jacobian", &e - body.elements.data() + 1, owner));
+  }
+}
+
+}  // namespace
+
+void check_geometry(const CaseFiles& files, grammar::DiagnosticSink& sink) {
+  if (!files.bodies) return;
+  Reporter report{sink, datbox_path(files, "BODIES.DAT")};
+  std::size_t rank[3] = {0, 0, 0};
+  for (const Body& body : files.bodies->bodies) {
+    const std::string owner = body_name(body, ++rank[static_cast<int>(body.type)]);
+    for (const Contactor& c : body.contactors) {
+      const std::string& type = c.type.value;
+      // Sizes: radius, half lengths and heights must be positive.
+      const bool sized = type == "DISKx" || type == "DISKb" || type == "xKSID" || type == "DISPx" || type == "xPSID" ||
+                         type == "SPHER" || type == "SPHEb" || type == "JONCx" || type == "CYLND" || type == "DNLYC" ||
+                         type == "PLANx";
+      if (sized) {
+        const std::size_t count = type == "JONCx" || type == "CYLND" || type == "DNLYC" ? 2 : type == "PLANx" ? 3 : 1;
+        for (std::size_t k = 0; k < count && k < c.values.size(); ++k)
+          if (!(c.values[k].value > 0.0))
+            report("L3001", c.values[k].span,
+                   fmt::format("{} size of contactor {} of {} is {}; it must be > 0", type, &c - body.contactors.data() + 1,
+                               owner, c.values[k].value));
+      }
+      if (type == "POLYG") check_polygon(c, owner, report);
+      if (type == "POLYR") check_polyhedron(c, owner, report);
+    }
+    if (body.rigid_bulk) {
+      const auto& b = *body.rigid_bulk;
+      if (b.avrd.value < 0.0)
+        report("L3001", b.avrd.span, fmt::format("avrd of {} is {}; it must be >= 0 (0: computed)", owner, b.avrd.value));
+      if (b.gyrd.value < 0.0)
+        report("L3001", b.gyrd.span, fmt::format("gyrd of {} is {}; it must be >= 0 (0: computed)", owner, b.gyrd.value));
+    }
+    for (const auto& e : body.elements) check_element(body, e, owner, report);
+  }
+}
+
+}  // namespace lmgc::validate
