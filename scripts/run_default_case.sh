@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds, and runs the main job on the default case shipped in
+# reference_cases/ (a copy is made under build/ so the shipped case is never written to).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install_deps.sh
+cmake --preset release >/dev/null
+cmake --build --preset release
+case_dir=build/run/disk_bounce_rst
+rm -rf "$case_dir" && mkdir -p "$case_dir" && cp -r reference_cases/disk_bounce_rst/DATBOX "$case_dir/"
+build/release/tools/lmgc-check "$case_dir" --echo
+echo "echo files written to $case_dir/OUTBOX/"
