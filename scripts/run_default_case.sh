@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs the main job on the default case shipped in
+# Installs what is missing, builds, and runs lmgc-solve on the default case shipped in
 # reference_cases/ (a copy is made under build/ so the shipped case is never written to).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -8,5 +8,5 @@ cmake --preset release >/dev/null
 cmake --build --preset release
 case_dir=build/run/disk_bounce_rst
 rm -rf "$case_dir" && mkdir -p "$case_dir" && cp -r reference_cases/disk_bounce_rst/DATBOX "$case_dir/"
-build/release/tools/lmgc-check "$case_dir" --echo
-echo "echo files written to $case_dir/OUTBOX/"
+build/release/tools/lmgc-solve "$case_dir"
+echo "outputs written to $case_dir/OUTBOX/ (state files, run_report.csv) and $case_dir/POSTPRO/"

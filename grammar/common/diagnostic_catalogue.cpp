@@ -146,6 +146,12 @@ constexpr std::array kCatalogue = {
     DiagnosticKind{"L4002", error, "contact law not handled by the solver",
                    "A '$seety' row uses a contact law that the solver does not solve yet; lmgc-solve "
                    "stops before running rather than silently using another law."},
+    DiagnosticKind{"L4003", error, "case kind not handled by the solver",
+                   "lmgc-solve runs rigid 2D cases (RBDY2 bodies only) for now; a case with RBDY3 or MAILx "
+                   "bodies is checked by lmgc-check but not run."},
+    DiagnosticKind{"L4004", warning, "post-processing command not computed",
+                   "A POSTPRO.DAT command that lmgc-solve does not compute yet for this kind of case; the run "
+                   "goes on without that file."},
     // L9xxx — input/output.
     DiagnosticKind{"L9001", error, "cannot read file",
                    "A file that the case needs does not exist or cannot be read."},

@@ -40,6 +40,7 @@ RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D&
   state.h = options.dt;
   state.theta = options.theta;
   state.visibility = build_visibility_index(scene);
+  if (outputs.warm_start) state.previous = warm_start_2d(*outputs.warm_start, scene, options.dt);
 
   Postpro2D postpro;
   if (!outputs.postpro.empty() && !postpro.open(outputs.case_dir / "POSTPRO", outputs.postpro, summary.error))

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "grammar/vloc_rloc/ast.hpp"
 #include "solver/driver/run_options.hpp"
 #include "solver/integrator/step_2d.hpp"
 #include "solver/io/postpro_2d.hpp"
@@ -27,6 +28,8 @@ struct RunOutputs2D {
   std::vector<PostproCommand2D> postpro;          // from POSTPRO.DAT
   // Extra state writer (Vloc_Rloc.OUT.n / .LAST) when the grammar provides it: (path, content).
   std::function<std::string(const Scene2D&, const RunState2D&)> vloc_rloc_text;
+  // Vloc_Rloc.INI: the interactions of the step before the first one (warm start), if any.
+  const grammar::VlocRlocFile* warm_start = nullptr;
 };
 
 // Set by the SIGINT handler; the loop stops after the current step.

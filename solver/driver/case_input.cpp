@@ -1,0 +1,110 @@
+#include "solver/driver/case_input.hpp"
+
+#include "grammar/bodies/writer.hpp"
+#include "grammar/command/expand.hpp"
+#include "grammar/vloc_rloc/writer.hpp"
+#include "solver/bodies/rigid_2d_properties.hpp"
+#include "solver/io/state_files_2d.hpp"
+#include "solver/model/build_scene_2d.hpp"
+
+namespace lmgc::solver {
+
+namespace {
+
+std::string datbox_path(const validate::CaseFiles& files, const char* name) {
+  return (files.case_dir / "DATBOX" / name).string();
+}
+
+// The POSTPRO.DAT commands the 2D post-processor provides; the others are noted and skipped.
+std::vector<PostproCommand2D> postpro_commands_2d(const validate::CaseFiles& files, grammar::DiagnosticSink& sink) {
+  std::vector<PostproCommand2D> commands;
+  if (!files.postpro) return commands;
+  for (const grammar::PostproCommand& card : files.postpro->commands) {
+    PostproCommand2D command;
+    if (!postpro_kind_of(card.name.value, command.kind)) {
+      sink.report("L4004", grammar::Location{datbox_path(files, "POSTPRO.DAT"), card.name.span},
+                  "POSTPRO command '" + card.name.value + "' is not computed by lmgc-solve yet; it is skipped");
+      continue;
+    }
+    command.period = card.period.value > 0 ? static_cast<int>(card.period.value) : 1;
+    // BODY TRACKING / TORQUE EVOLUTION: a count line, then one body rank per line.
+    if (command.kind == PostproKind2D::body_tracking || command.kind == PostproKind2D::torque_evolution) {
+      for (std::size_t k = 1; k < card.arguments.size(); ++k)
+        if (!card.arguments[k].integers.empty()) command.bodies.push_back(card.arguments[k].integers.front().value);
+    }
+    if (command.kind == PostproKind2D::average_velocity_evolution && !card.arguments.empty())
+      command.color = card.arguments.front().word.value;
+    commands.push_back(std::move(command));
+  }
+  return commands;
+}
+
+}  // namespace
+
+bool prepare_run_2d(const validate::CaseFiles& files, Scene2D& scene, RunOutputs2D& outputs,
+                    grammar::DiagnosticSink& sink) {
+  if (!files.bodies || !files.bulk_behav) return false;
+  for (const grammar::Body& body : files.bodies->bodies)
+    if (body.type != grammar::BodyType::rbdy2) {
+      sink.report("L4003", grammar::Location{datbox_path(files, "BODIES.DAT"), body.type_span},
+                  "lmgc-solve runs rigid 2D cases (RBDY2 bodies) for now; this body is not RBDY2");
+      return false;
+    }
+  static const grammar::TactBehavFile kNoLaws;
+  SceneInput2D input;
+  input.bodies = &*files.bodies;
+  input.tact_behav = files.tact_behav ? &*files.tact_behav : &kNoLaws;
+  input.drv_dof = files.drv_dof ? &*files.drv_dof : nullptr;
+  input.dof_ini = files.dof_ini ? &*files.dof_ini : nullptr;
+  input.evolutions = &files.evolutions;
+  for (const grammar::BulkLaw& law : files.bulk_behav->laws) {
+    double density = 0.0;
+    if (!law.density_field && grammar::bulk_density(*files.bulk_behav, law.nickname.value, density))
+      input.densities.emplace(law.nickname.value, density);
+  }
+  if (files.bulk_behav->has_gravity)
+    input.gravity = Eigen::Vector2d(files.bulk_behav->gravity[0].value, files.bulk_behav->gravity[1].value);
+  input.bodies_path = datbox_path(files, "BODIES.DAT");
+  input.tact_behav_path = datbox_path(files, "TACT_BEHAV.DAT");
+  input.drv_dof_path = datbox_path(files, "DRV_DOF.DAT");
+  if (!build_scene_2d(input, scene, sink)) return false;
+
+  outputs.case_dir = files.case_dir;
+  outputs.postpro = postpro_commands_2d(files, sink);
+  outputs.vloc_rloc_text = [](const Scene2D& s, const RunState2D& state) {
+    return grammar::write_vloc_rloc(vloc_rloc_file_2d(s, state));
+  };
+  if (files.vloc_rloc_ini) outputs.warm_start = &*files.vloc_rloc_ini;
+  return true;
+}
+
+void apply_command_parameters(const validate::CaseFiles& files, RunOptions& options, grammar::DiagnosticSink& sink) {
+  if (!files.command) return;
+  const grammar::CommandRunParameters p = grammar::command_run_parameters(*files.command, sink);
+  if (p.dt > 0.0) options.dt = p.dt;
+  options.theta = p.theta;
+  if (p.steps > 0) options.steps = p.steps;
+  if (!p.norm.empty()) parse_norm(p.norm, options.nlgs.norm);
+  if (p.tolerance > 0.0) options.nlgs.tolerance = p.tolerance;
+  options.nlgs.relax = p.relax;
+  if (!p.storage.empty()) parse_storage(p.storage, options.nlgs.storage);
+  if (p.gs_it1 > 0) options.nlgs.gs_it1 = p.gs_it1;
+  if (p.gs_it2 > 0) options.nlgs.gs_it2 = p.gs_it2;
+  options.write_every = p.write_every;
+  options.display_every = p.display_every;
+  options.nlgs.quick_scramble = p.quick_scramble;
+  if (p.has_y_min) options.y_min = p.y_min;
+}
+
+std::vector<validate::OutputFile> echo_files_2d(const validate::CaseFiles& files) {
+  std::vector<validate::OutputFile> out = validate::echo_files(files);
+  if (!files.bodies) return out;
+  grammar::BodiesFile bodies = *files.bodies;
+  for (grammar::Body& body : bodies.bodies)
+    if (body.type == grammar::BodyType::rbdy2) normalise_rigid_body_2d(body);
+  for (validate::OutputFile& file : out)
+    if (file.relative_path == "OUTBOX/BODIES.OUT") file.content = grammar::write_bodies(bodies);
+  return out;
+}
+
+}  // namespace lmgc::solver

@@ -1,0 +1,28 @@
+#pragma once
+// From a loaded case folder (validate::CaseFiles) to what a rigid 2D run needs: the Scene, the
+// POSTPRO commands, the warm start of Vloc_Rloc.INI, the run parameters of COMMAND.DAT, and the
+// echo files LMGC90 writes when it reads the case. spec: state-and-outputs.md §1, §2, §4.
+#include <vector>
+
+#include "grammar/common/diagnostic.hpp"
+#include "solver/driver/run_2d.hpp"
+#include "solver/driver/run_options.hpp"
+#include "validate/case_files.hpp"
+
+namespace lmgc::solver {
+
+// Fills `scene` and `outputs` (case folder, POSTPRO commands, Vloc_Rloc writer, warm start).
+// Returns false, with diagnostics, when the case is not a rigid 2D case or uses something the
+// rigid 2D solver does not provide (L4001, L4002).
+bool prepare_run_2d(const validate::CaseFiles& files, Scene2D& scene, RunOutputs2D& outputs,
+                    grammar::DiagnosticSink& sink);
+
+// The run parameters COMMAND.DAT sets, laid over `options` (flags given on the command line are
+// applied afterwards by the caller, so they win).
+void apply_command_parameters(const validate::CaseFiles& files, RunOptions& options, grammar::DiagnosticSink& sink);
+
+// The echo files of a rigid 2D run: as validate::echo_files, with BODIES.OUT after LMGC90's
+// RBDY2 pre-computations (avrd, gyrd, centre of inertia), as LMGC90 writes it.
+std::vector<validate::OutputFile> echo_files_2d(const validate::CaseFiles& files);
+
+}  // namespace lmgc::solver

@@ -1,0 +1,86 @@
+// lmgc-solve as a user runs it: exit codes, outputs written whole, DATBOX never written to,
+// COMMAND.DAT parameters and flags that override them.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+
+#include "grammar/dof/parser.hpp"
+#include "tests/support/run_tool.hpp"
+#include "tests/support/shared_data.hpp"
+
+namespace lmgc::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path default_case_copy(const std::string& name) {
+  const fs::path dir = scratch_dir(name);
+  fs::copy(fs::path(LMGC_SOURCE_DIR) / "reference_cases" / "disk_bounce_rst" / "DATBOX", dir / "DATBOX",
+           fs::copy_options::recursive);
+  return dir;
+}
+
+std::map<std::string, std::string> folder_contents(const fs::path& dir) {
+  std::map<std::string, std::string> contents;
+  for (const auto& e : fs::directory_iterator(dir)) contents[e.path().filename().string()] = read_file(e.path());
+  return contents;
+}
+
+long last_step(const fs::path& dir) {
+  grammar::DiagnosticSink sink;
+  const fs::path path = dir / "OUTBOX" / "DOF.LAST";
+  return grammar::parse_dof(grammar::SourceText(path.string(), read_file(path)), sink).step.value;
+}
+
+TEST(LmgcSolve, DefaultCaseRunsItsCommandDatAndLeavesDatboxUntouched) {
+  const fs::path dir = default_case_copy("solve_ok");
+  const auto before = folder_contents(dir / "DATBOX");
+  const ToolRun run = run_tool("lmgc-solve", "'" + dir.string() + "' --quiet");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_EQ(folder_contents(dir / "DATBOX"), before);
+  EXPECT_EQ(last_step(dir), 3000);  // REPETE 2999 FOIS: 3000 passes of the step loop
+  for (const char* name : {"BODIES.OUT", "TACT_BEHAV.OUT", "DOF.OUT.30", "Vloc_Rloc.OUT.30", "Vloc_Rloc.LAST",
+                           "run_report.csv"})
+    EXPECT_TRUE(fs::is_regular_file(dir / "OUTBOX" / name)) << name;
+  EXPECT_FALSE(fs::exists(dir / "OUTBOX" / "DOF.OUT.31"));
+  for (const auto& e : fs::directory_iterator(dir / "OUTBOX"))
+    EXPECT_NE(e.path().filename().string().front(), '.') << "temporary file left: " << e.path();
+}
+
+TEST(LmgcSolve, FlagsOverrideTheCommandDatParameters) {
+  const fs::path dir = default_case_copy("solve_flags");
+  EXPECT_EQ(run_tool("lmgc-solve", "'" + dir.string() + "' --quiet --steps 7 --write-every 0").exit_code, 0);
+  EXPECT_EQ(last_step(dir), 7);
+  EXPECT_FALSE(fs::exists(dir / "OUTBOX" / "DOF.OUT.1"));
+}
+
+TEST(LmgcSolve, InvalidDataExitsOneAndWritesNothing) {
+  const fs::path dir = default_case_copy("solve_invalid");
+  std::string tact = read_file(dir / "DATBOX" / "TACT_BEHAV.DAT");
+  tact.replace(tact.find("RBDY2  DISKx  BLEUx  rst08"), 26, "RBDY2  DISKx  BLEUx  rst09");
+  std::ofstream(dir / "DATBOX" / "TACT_BEHAV.DAT", std::ios::binary) << tact;
+  EXPECT_EQ(run_tool("lmgc-solve", "'" + dir.string() + "' --quiet").exit_code, 1);
+  EXPECT_FALSE(fs::exists(dir / "OUTBOX" / "DOF.LAST"));
+}
+
+TEST(LmgcSolve, UsageErrorsExitTwo) {
+  EXPECT_EQ(run_tool("lmgc-solve", "").exit_code, 2);
+  EXPECT_EQ(run_tool("lmgc-solve", "--no-such-flag x").exit_code, 2);
+  EXPECT_EQ(run_tool("lmgc-solve", "'" + scratch_dir("solve_not_a_case").string() + "'").exit_code, 2);
+  const fs::path dir = default_case_copy("solve_bad_norm");
+  EXPECT_EQ(run_tool("lmgc-solve", "'" + dir.string() + "' --norm Nope").exit_code, 2);
+}
+
+TEST(LmgcSolve, StrictExitsThreeWhenAStepHitsTheIterationCap) {
+  LMGC_REQUIRE_SHARED();
+  // 1024 disks with one sweep per step cannot reach 1e-12: every step with contacts hits the cap.
+  const fs::path dir = scratch_dir("solve_strict");
+  fs::copy(examples_dir() / "RIGID_2D" / "1024DK_BoxJC" / "DATBOX", dir / "DATBOX", fs::copy_options::recursive);
+  const std::string args = "'" + dir.string() + "' --quiet --steps 60 --gs-it1 1 --gs-it2 1 --tol 1e-12 --write-every 0";
+  EXPECT_EQ(run_tool("lmgc-solve", args + " --strict").exit_code, 3);
+  EXPECT_EQ(run_tool("lmgc-solve", args).exit_code, 0);
+}
+
+}  // namespace
+}  // namespace lmgc::test

@@ -1,0 +1,133 @@
+// lmgc-solve: runs an LMGC90 case (rigid 2D for now) and writes what LMGC90 writes: OUTBOX echo
+// and state files, DISPLAY, POSTPRO, plus a per-step run report with the achieved residual.
+// Exit: 0 success, 1 invalid data, 2 usage, 3 not converged under --strict, 130 interrupted.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <iostream>
+#include <unistd.h>
+
+#include "grammar/common/output_file.hpp"
+#include "solver/driver/case_input.hpp"
+#include "solver/driver/run_2d.hpp"
+#include "validate/case_files.hpp"
+#include "validate/checks.hpp"
+#include "validate/render.hpp"
+
+namespace {
+constexpr int kExitOk = 0;
+constexpr int kExitData = 1;
+constexpr int kExitUsage = 2;
+constexpr int kExitNotConverged = 3;
+constexpr int kExitInterrupted = 130;
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace lmgc;
+  CLI::App app{"lmgc-solve: run an LMGC90 case folder (CASE_DIR/DATBOX/) with the Moreau-Jean scheme and NLGS"};
+  std::string case_dir;
+  solver::RunOptions options;
+  std::string storage = "Stored_Delassus_Loops", norm = "Quad";
+  app.add_option("CASE_DIR", case_dir, "case folder holding DATBOX/")->required();
+  app.add_option("--dt", options.dt, "time step [s]")->check(CLI::PositiveNumber);
+  app.add_option("--theta", options.theta, "theta of the Moreau-Jean scheme, in [0.5, 1]")->check(CLI::Range(0.5, 1.0));
+  app.add_option("--steps", options.steps, "number of steps")->check(CLI::NonNegativeNumber);
+  app.add_option("--solver", storage, "NLGS storage: Stored_Delassus_Loops or Exchange_Local_Global");
+  app.add_option("--norm", norm, "NLGS convergence norm: Quad, QuaN, Maxm or QM/16");
+  app.add_option("--tol", options.nlgs.tolerance, "NLGS tolerance of the norm")->check(CLI::PositiveNumber);
+  app.add_option("--relax", options.nlgs.relax, "NLGS relaxation")->check(CLI::Range(0.0, 2.0));
+  app.add_option("--gs-it1", options.nlgs.gs_it1, "NLGS sweeps between two convergence checks")->check(CLI::PositiveNumber);
+  app.add_option("--gs-it2", options.nlgs.gs_it2, "maximum number of convergence checks")->check(CLI::PositiveNumber);
+  app.add_flag("--quick-scramble", options.nlgs.quick_scramble, "shuffle the contact order before each block of sweeps");
+  app.add_option("--residual-target", options.nlgs.residual_target,
+                 "also stop a step when the natural-map residual / |q| is below this (0 = off)");
+  app.add_option("--rloc-tol", options.rloc_tol, "warm-start matching tolerance (accepted; contactor matching is used)");
+  app.add_option("--write-every", options.write_every, "write DOF/Vloc_Rloc .OUT.n every n steps (0 = never)");
+  app.add_option("--display-every", options.display_every, "write DISPLAY files every n steps (0 = never)");
+  app.add_option("--ymin-boundary", options.y_min, "bodies whose centre goes below this become invisible (RBDY2_SetYminBoundary)");
+  app.add_option("--ymax-boundary", options.y_max, "... above this");
+  app.add_option("--xmin-boundary", options.x_min, "... left of this");
+  app.add_option("--xmax-boundary", options.x_max, "... right of this");
+  app.add_option("--xperiod", options.x_period, "periodic in x with this period (SetPeriodicCondition)");
+  app.add_flag("-q,--quiet", options.quiet, "no progress line");
+  app.add_flag("--strict", options.strict, "exit 3 when a step stopped at the iteration cap");
+  app.set_version_flag("--version", "lmgc-solve 0.1.0");
+  app.footer(
+      "Run parameters come from CASE_DIR/DATBOX/COMMAND.DAT when it exists (TIME STEP, THETA, the step loop's\n"
+      "REPETE count, NLGS CHECK TYPE, the NLGS loops, WRITE OUT DOF STEP, ...); a flag given here overrides\n"
+      "the file. Without COMMAND.DAT the defaults are --dt 1e-3 --theta 0.5 --steps 1000 --norm Quad --tol 1.666e-4\n"
+      "--gs-it1 50 --gs-it2 500.\n"
+      "Outputs: OUTBOX/ (echo files, DOF and Vloc_Rloc .OUT.n and .LAST, run_report.csv with the achieved\n"
+      "natural-map residual of every step), POSTPRO/ (POSTPRO.DAT's commands), DISPLAY/ (ParaView).\n"
+      "Exit: 0 success, 1 invalid data, 2 usage, 3 a step not converged under --strict, 130 interrupted.");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitUsage;
+  }
+  if (!solver::parse_storage(storage, options.nlgs.storage) || !solver::parse_norm(norm, options.nlgs.norm)) {
+    std::cerr << "lmgc-solve: unknown --solver or --norm value\n";
+    return kExitUsage;
+  }
+
+  grammar::DiagnosticSink sink(5000);
+  auto files = validate::load_case(case_dir, sink);
+  if (files) validate::check_case(*files, sink);
+  solver::Scene2D scene;
+  solver::RunOutputs2D outputs;
+  bool ready = files && !sink.has_errors() && solver::prepare_run_2d(*files, scene, outputs, sink);
+  if (ready) {
+    // COMMAND.DAT's parameters first, then the flags given on the command line on top of them.
+    solver::RunOptions from_file;
+    solver::apply_command_parameters(*files, from_file, sink);
+    const auto given = [&](const char* flag) { return app.count(flag) > 0; };
+    if (!given("--dt")) options.dt = from_file.dt;
+    if (!given("--theta")) options.theta = from_file.theta;
+    if (!given("--steps")) options.steps = from_file.steps;
+    if (!given("--solver")) options.nlgs.storage = from_file.nlgs.storage;
+    if (!given("--norm")) options.nlgs.norm = from_file.nlgs.norm;
+    if (!given("--tol")) options.nlgs.tolerance = from_file.nlgs.tolerance;
+    if (!given("--relax")) options.nlgs.relax = from_file.nlgs.relax;
+    if (!given("--gs-it1")) options.nlgs.gs_it1 = from_file.nlgs.gs_it1;
+    if (!given("--gs-it2")) options.nlgs.gs_it2 = from_file.nlgs.gs_it2;
+    if (!given("--quick-scramble")) options.nlgs.quick_scramble = from_file.nlgs.quick_scramble;
+    if (!given("--write-every")) options.write_every = from_file.write_every;
+    if (!given("--display-every")) options.display_every = from_file.display_every;
+    if (!given("--ymin-boundary")) options.y_min = from_file.y_min;
+  }
+  // Diagnostics: errors always, warnings and notes unless --quiet (the run goes on with them).
+  const bool color = std::getenv("NO_COLOR") == nullptr && isatty(STDERR_FILENO);
+  const auto lookup = [&](const std::string& file, std::uint32_t line) -> std::string_view {
+    if (!files) return {};
+    auto it = files->sources.find(file);
+    return it == files->sources.end() ? std::string_view{} : it->second.line_text(line);
+  };
+  for (const auto& d : sink.items())
+    if (d.severity == grammar::Severity::error || (!options.quiet && d.severity == grammar::Severity::warning))
+      std::cerr << validate::render_text(d, lookup, {color});
+  if (!ready) {
+    std::cerr << "lmgc-solve: the case cannot run (" << sink.error_count() << " error"
+              << (sink.error_count() == 1 ? "" : "s") << ")\n";
+    return files ? kExitData : kExitUsage;
+  }
+  // The echo files, as LMGC90 writes them when it reads the case.
+  for (const auto& output : solver::echo_files_2d(*files)) {
+    std::string error;
+    if (!grammar::write_file_whole(std::filesystem::path(case_dir) / output.relative_path, output.content, error)) {
+      std::cerr << "lmgc-solve: " << error << "\n";
+      return kExitData;
+    }
+  }
+  solver::install_interrupt_handler();
+  const solver::RunSummary summary = solver::run_2d(scene, options, outputs);
+  if (!summary.error.empty()) {
+    std::cerr << "lmgc-solve: " << summary.error << "\n";
+    return kExitData;
+  }
+  if (!options.quiet)
+    std::fprintf(stderr, "%ld steps to t=%.6g; %ld not converged within gs_it1*gs_it2; worst natural-map residual/|q| %.3e\n",
+                 summary.steps_done, summary.final_time, summary.steps_not_converged, summary.worst_residual);
+  if (summary.interrupted) return kExitInterrupted;
+  if (options.strict && summary.steps_not_converged > 0) return kExitNotConverged;
+  return kExitOk;
+}
