@@ -94,6 +94,7 @@ int main(int argc, char** argv) {
     if (!given("--write-every")) options.write_every = from_file.write_every;
     if (!given("--display-every")) options.display_every = from_file.display_every;
     if (!given("--ymin-boundary")) options.y_min = from_file.y_min;
+    if (!given("--xperiod")) options.x_period = from_file.x_period;
   }
   // Diagnostics: errors always, warnings and notes unless --quiet (the run goes on with them).
   const bool color = std::getenv("NO_COLOR") == nullptr && isatty(STDERR_FILENO);

@@ -304,6 +304,10 @@ CommandRunParameters command_run_parameters(const CommandFile& file, DiagnosticS
     } else if (k == "INIT YMIN BOUNDARY") {
       first_real(c, 0, p.y_min);
       p.has_y_min = true;
+    } else if (k == "PERIODIC CONDITION" || k == "XPERIODIC CONDITION") {
+      first_real(c, 0, p.x_period);
+    } else if (k == "YPERIODIC CONDITION") {
+      first_real(c, 0, p.y_period);
     }
   });
   return p;

@@ -94,6 +94,7 @@ void apply_command_parameters(const validate::CaseFiles& files, RunOptions& opti
   options.display_every = p.display_every;
   options.nlgs.quick_scramble = p.quick_scramble;
   if (p.has_y_min) options.y_min = p.y_min;
+  if (p.x_period > 0.0) options.x_period = p.x_period;
 }
 
 std::vector<validate::OutputFile> echo_files_2d(const validate::CaseFiles& files) {

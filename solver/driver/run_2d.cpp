@@ -50,7 +50,7 @@ RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D&
   // The run report: one line per step, flushed, so an interrupted run keeps what it did.
   std::ofstream report(outbox / "run_report.csv", std::ios::trunc);
   report << "step,time,contacts,active,iterations,converged,mean_dvor,quad_dv,quad_dvr,"
-            "residual_natural_map_over_q,kinetic_energy\n";
+            "residual_natural_map_over_q,kinetic_energy,step_seconds,nlgs_seconds\n";
 
   const bool progress = !options.quiet && isatty(STDERR_FILENO);
   const auto start = std::chrono::steady_clock::now();
@@ -65,14 +65,17 @@ RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D&
   };
 
   for (long k = 0; k < options.steps; ++k) {
+    const auto step_start = std::chrono::steady_clock::now();
     const NlgsResult result = step_2d(scene, state, options.nlgs);
+    const double step_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
     ++summary.steps_done;
     if (!result.converged) ++summary.steps_not_converged;
     summary.worst_residual = std::max(summary.worst_residual, result.residual_relative);
-    report << fmt::format("{},{:.10g},{},{},{},{},{:.6e},{:.6e},{:.6e},{:.6e},{:.10e}\n", state.step, state.time,
-                          state.contacts.size(), result.active, result.iterations, result.converged ? 1 : 0,
-                          result.norms.mean_dvor, result.norms.quad_dv, result.norms.quad_dvr,
-                          result.residual_relative, kinetic_energy(scene.bodies));
+    report << fmt::format("{},{:.10g},{},{},{},{},{:.6e},{:.6e},{:.6e},{:.6e},{:.10e},{:.6e},{:.6e}\n", state.step,
+                          state.time, state.contacts.size(), result.active, result.iterations,
+                          result.converged ? 1 : 0, result.norms.mean_dvor, result.norms.quad_dv,
+                          result.norms.quad_dvr, result.residual_relative, kinetic_energy(scene.bodies),
+                          step_seconds, result.seconds);
     report.flush();
     if (!outputs.postpro.empty()) postpro.write(scene, state, result);
     if (options.write_every > 0 && state.step % options.write_every == 0) {

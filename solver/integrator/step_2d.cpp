@@ -1,6 +1,7 @@
 #include "solver/integrator/step_2d.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace lmgc::solver {
@@ -91,7 +92,10 @@ void recup_rloc(RunState2D& state) {
 }
 
 NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& options) {
-  return solve_nlgs_2d(scene, scene.bodies, state.contacts, state.h, state.time, options);
+  const auto start = std::chrono::steady_clock::now();
+  NlgsResult result = solve_nlgs_2d(scene, scene.bodies, state.contacts, state.h, state.time, options);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
 }
 
 void stock_rloc(RunState2D& state) { state.previous = state.contacts; }

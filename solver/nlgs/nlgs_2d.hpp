@@ -45,6 +45,7 @@ struct NlgsResult {
   double residual_relative = 0.0;
   double free_velocity_norm = 0.0;
   std::size_t active = 0;  // interactions with a non-zero reaction
+  double seconds = 0.0;    // wall time of the solve (set by the solve_contacts stage)
 };
 
 // Builds the Delassus blocks and local problems, starts from the reactions already in

@@ -5,12 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <regex>
 
 #include "grammar/dof/parser.hpp"
-#include "tests/support/run_tool.hpp"
-#include "tests/support/shared_data.hpp"
+#include "tests/support/lmgc90_reference_runs.hpp"
 
 namespace lmgc::test {
 namespace {
@@ -18,62 +15,16 @@ namespace {
 namespace fs = std::filesystem;
 
 // Steps run per example in CI: the first 200 (or the script's count when smaller), and 20 for
-// 500PL_PerioBoxJC, whose steps cost ~5000 NLGS sweeps over 2000 contacts each (a CI run also
-// repeats this under the sanitizers). Full runs are timed in bench/.
-long step_cut(const fs::path& example) { return example.filename() == "500PL_PerioBoxJC" ? 20 : 200; }
-
-// The literal assignments of command.py, as RUN.md lists them ("`dt = 0.0005`, `nb_steps = ...`").
-std::map<std::string, std::string> script_parameters(const fs::path& case_dir) {
-  std::map<std::string, std::string> parameters;
-  const std::string run_md = read_file(case_dir / "reference_lmgc90" / "RUN.md");
-  const auto line_start = run_md.find("script parameters");
-  if (line_start == std::string::npos) return parameters;
-  const std::string line = run_md.substr(line_start, run_md.find('\n', line_start) - line_start);
-  const std::regex assignment("`(\\w+) = ([^`]+)`");
-  for (auto it = std::sregex_iterator(line.begin(), line.end(), assignment); it != std::sregex_iterator(); ++it) {
-    std::string value = (*it)[2];
-    value.erase(std::remove(value.begin(), value.end(), '\''), value.end());
-    while (!value.empty() && value.back() == ' ') value.pop_back();
-    parameters[(*it)[1]] = value;
-  }
-  return parameters;
-}
-
-struct ExampleRun {
-  fs::path case_dir;  // scratch copy
-  ToolRun run;
-  long steps = 0;
-};
-
-// Copies the example's DATBOX to a scratch folder and runs lmgc-solve with its script's
-// parameters (COMMAND.DAT is removed: LMGC90's reference run used command.py).
-ExampleRun run_example(const fs::path& example, long step_cut) {
-  ExampleRun result;
-  const auto p = script_parameters(example);
-  result.case_dir = scratch_dir("solve_" + example.filename().string());
-  fs::copy(example / "DATBOX", result.case_dir / "DATBOX", fs::copy_options::recursive);
-  fs::remove(result.case_dir / "DATBOX" / "COMMAND.DAT");
-  result.steps = std::min(step_cut, std::stol(p.at("nb_steps")));
-  std::string args = "'" + result.case_dir.string() + "' --quiet --steps " + std::to_string(result.steps);
-  const std::pair<const char*, const char*> flags[] = {
-      {"dt", "--dt"},         {"theta", "--theta"},   {"tol", "--tol"},
-      {"relax", "--relax"},   {"gs_it1", "--gs-it1"}, {"gs_it2", "--gs-it2"},
-      {"freq_write", "--write-every"}, {"lx", "--xperiod"}};
-  for (const auto& [name, flag] : flags)
-    if (p.count(name)) args += std::string(" ") + flag + " " + p.at(name);
-  if (p.count("norm")) args += " --norm '" + p.at("norm") + "'";
-  if (p.count("solver_type")) args += " --solver " + p.at("solver_type");
-  // BouncingBallsDK's script calls RBDY2_SetYminBoundary(-0.).
-  if (example.filename() == "BouncingBallsDK") args += " --ymin-boundary 0";
-  result.run = run_tool("lmgc-solve", args);
-  return result;
-}
-
-std::vector<fs::path> rigid_2d_examples() {
-  std::vector<fs::path> cases;
-  for (const auto& c : example_cases())
-    if (c.parent_path().filename() == "RIGID_2D" && fs::exists(c / "reference_lmgc90" / "RUN.md")) cases.push_back(c);
-  return cases;
+// 500PL_PerioBoxJC, whose steps cost ~5000 NLGS sweeps over 2000 contacts each. Under the
+// sanitizers (which check memory, not results, and run 20-50x slower) a tenth of that. Full
+// runs are timed in bench/ and compared in tests/long/.
+long step_cut(const fs::path& example) {
+#ifdef LMGC_SANITIZED_BUILD
+  constexpr long kScale = 10;
+#else
+  constexpr long kScale = 1;
+#endif
+  return (example.filename() == "500PL_PerioBoxJC" ? 20 : 200) / kScale;
 }
 
 grammar::DofFile read_dof(const fs::path& path) {

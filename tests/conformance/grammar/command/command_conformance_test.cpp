@@ -49,6 +49,17 @@ TEST(CommandConformance, RunParametersOf1024DiskBox) {
   EXPECT_EQ(p.storage, "Stored_Delassus_Loops");
   EXPECT_EQ(p.write_every, 100);
   EXPECT_TRUE(p.quick_scramble);
+  EXPECT_EQ(p.x_period, 0.0);
+}
+
+// RIGID_2D/500PL_PerioBoxJC: 'PERIODIC CONDITION' with the period 1.1 on the next line.
+TEST(CommandConformance, PeriodOfThePeriodicPolygonBox) {
+  LMGC_REQUIRE_SHARED();
+  const auto path = test::examples_dir() / "RIGID_2D/500PL_PerioBoxJC/DATBOX/COMMAND.DAT";
+  DiagnosticSink sink;
+  const CommandRunParameters p = command_run_parameters(parse_command(SourceText(path.string(), test::read_file(path)), sink), sink);
+  EXPECT_FALSE(sink.has_errors());
+  EXPECT_DOUBLE_EQ(p.x_period, 1.1);
 }
 
 }  // namespace

@@ -1,0 +1,80 @@
+#pragma once
+// Running lmgc-solve on an LMGC90 example the way LMGC90's reference run was made: the literal
+// parameters of its command.py as reference_lmgc90/RUN.md records them.
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <regex>
+#include <string>
+
+#include "tests/support/run_tool.hpp"
+#include "tests/support/shared_data.hpp"
+
+namespace lmgc::test {
+
+// The literal assignments of command.py, as RUN.md lists them ("`dt = 0.0005`, `nb_steps = ...`").
+inline std::map<std::string, std::string> script_parameters(const std::filesystem::path& case_dir) {
+  std::map<std::string, std::string> parameters;
+  const std::string run_md = read_file(case_dir / "reference_lmgc90" / "RUN.md");
+  const auto line_start = run_md.find("script parameters");
+  if (line_start == std::string::npos) return parameters;
+  const std::string line = run_md.substr(line_start, run_md.find('\n', line_start) - line_start);
+  const std::regex assignment("`(\\w+) = ([^`]+)`");
+  for (auto it = std::sregex_iterator(line.begin(), line.end(), assignment); it != std::sregex_iterator(); ++it) {
+    std::string value = (*it)[2];
+    value.erase(std::remove(value.begin(), value.end(), '\''), value.end());
+    while (!value.empty() && value.back() == ' ') value.pop_back();
+    parameters[(*it)[1]] = value;
+  }
+  return parameters;
+}
+
+// The number of steps LMGC90's reference run made (RUN.md "| steps run | 930 (...) |").
+inline long reference_steps_run(const std::filesystem::path& case_dir) {
+  const std::string run_md = read_file(case_dir / "reference_lmgc90" / "RUN.md");
+  std::smatch m;
+  if (!std::regex_search(run_md, m, std::regex("\\| steps run \\| (\\d+)"))) return 0;
+  return std::stol(m[1]);
+}
+
+struct ExampleRun {
+  std::filesystem::path case_dir;  // scratch copy
+  ToolRun run;
+  long steps = 0;
+};
+
+// Copies the example's DATBOX to a scratch folder and runs lmgc-solve for `steps` steps with its
+// script's parameters (COMMAND.DAT is removed: LMGC90's reference run used command.py).
+inline ExampleRun run_example(const std::filesystem::path& example, long steps) {
+  namespace fs = std::filesystem;
+  ExampleRun result;
+  const auto p = script_parameters(example);
+  result.case_dir = scratch_dir("solve_" + example.filename().string());
+  fs::copy(example / "DATBOX", result.case_dir / "DATBOX", fs::copy_options::recursive);
+  fs::remove(result.case_dir / "DATBOX" / "COMMAND.DAT");
+  result.steps = p.count("nb_steps") ? std::min(steps, std::stol(p.at("nb_steps"))) : steps;
+  std::string args = "'" + result.case_dir.string() + "' --quiet --steps " + std::to_string(result.steps);
+  const std::pair<const char*, const char*> flags[] = {
+      {"dt", "--dt"},         {"theta", "--theta"},   {"tol", "--tol"},
+      {"relax", "--relax"},   {"gs_it1", "--gs-it1"}, {"gs_it2", "--gs-it2"},
+      {"freq_write", "--write-every"}, {"lx", "--xperiod"}};
+  for (const auto& [name, flag] : flags)
+    if (p.count(name)) args += std::string(" ") + flag + " " + p.at(name);
+  if (p.count("norm")) args += " --norm '" + p.at("norm") + "'";
+  if (p.count("solver_type")) args += " --solver " + p.at("solver_type");
+  // BouncingBallsDK's script calls RBDY2_SetYminBoundary(-0.).
+  if (example.filename() == "BouncingBallsDK") args += " --ymin-boundary 0";
+  result.run = run_tool("lmgc-solve", args);
+  return result;
+}
+
+// LMGC90's RIGID_2D examples that have a reference run.
+inline std::vector<std::filesystem::path> rigid_2d_examples() {
+  std::vector<std::filesystem::path> cases;
+  for (const auto& c : example_cases())
+    if (c.parent_path().filename() == "RIGID_2D" && std::filesystem::exists(c / "reference_lmgc90" / "RUN.md"))
+      cases.push_back(c);
+  return cases;
+}
+
+}  // namespace lmgc::test
