@@ -1,11 +1,19 @@
 // Every folder of reference_cases/ with a case.json runs with lmgc-solve (its DATBOX/COMMAND.DAT
-// gives the run), and each expected quantity of case.json holds within its stated tolerance.
+// gives the run, case.json's optional "flags" are added to the command line), and each expected
+// quantity of case.json holds within its stated tolerance. The quantities are computed from
+// lmgc-solve's output files only: POSTPRO/BODY_<n>.DAT (BODY TRACKING rows: time, then the centre
+// x, y and angle θ, then the displacements X(1:3) from the reference position, then the
+// velocities vx, vy, ω) and OUTBOX/Vloc_Rloc.LAST (rln/H = normal impulse / time step = mean
+// normal force of the last step, state-and-outputs.md §1.4).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "grammar/vloc_rloc/parser.hpp"
 #include "tests/support/run_tool.hpp"
 #include "tests/support/shared_data.hpp"
 
@@ -13,10 +21,14 @@ namespace lmgc::test {
 namespace {
 
 namespace fs = std::filesystem;
+using Table = std::vector<std::vector<double>>;
 
-// Rows of a POSTPRO BODY TRACKING file: time, x, y, rotation, then displacements and velocities.
-std::vector<std::vector<double>> read_table(const fs::path& path) {
-  std::vector<std::vector<double>> rows;
+// Columns of a 2D BODY TRACKING row.
+constexpr std::size_t kTime = 0, kX = 1, kY = 2, kDx = 4, kDy = 5, kVx = 7, kVy = 8, kOmega = 9;
+constexpr std::size_t kColumns = 10;
+
+Table read_table(const fs::path& path) {
+  Table rows;
   std::istringstream in(read_file(path));
   std::string line;
   while (std::getline(in, line)) {
@@ -29,12 +41,171 @@ std::vector<std::vector<double>> read_table(const fs::path& path) {
   return rows;
 }
 
+// The BODY TRACKING rows of one body, read once per case.
+class Tracks {
+ public:
+  explicit Tracks(fs::path postpro) : postpro_(std::move(postpro)) {}
+  const Table& of(int body) {
+    auto it = tables_.find(body);
+    if (it != tables_.end()) return it->second;
+    char name[32];
+    std::snprintf(name, sizeof name, "BODY_%07d.DAT", body);
+    Table rows = read_table(postpro_ / name);
+    EXPECT_FALSE(rows.empty()) << name << " is missing or empty (is the body tracked in POSTPRO.DAT?)";
+    for (const auto& row : rows) EXPECT_EQ(row.size(), kColumns) << name;
+    return tables_.emplace(body, std::move(rows)).first->second;
+  }
+
+ private:
+  fs::path postpro_;
+  std::map<int, Table> tables_;
+};
+
+double along(const std::vector<double>& row, std::size_t cx, std::size_t cy, const std::vector<double>& d) {
+  return row[cx] * d[0] + row[cy] * d[1];
+}
+
 // Heights of the local maxima of the body centre's y, minus `offset`.
-std::vector<double> apex_heights(const std::vector<std::vector<double>>& rows, double offset) {
+std::vector<double> apex_heights(const Table& rows, double offset) {
   std::vector<double> apexes;
   for (std::size_t i = 1; i + 1 < rows.size(); ++i)
-    if (rows[i][2] >= rows[i - 1][2] && rows[i][2] > rows[i + 1][2]) apexes.push_back(rows[i][2] - offset);
+    if (rows[i][kY] >= rows[i - 1][kY] && rows[i][kY] > rows[i + 1][kY])
+      apexes.push_back(rows[i][kY] - offset);
   return apexes;
+}
+
+// Least-squares slope of the velocity along `direction` over the rows with from <= t <= to.
+double acceleration_along(const Table& rows, const std::vector<double>& direction, double from, double to) {
+  double n = 0, st = 0, sv = 0, stt = 0, stv = 0;
+  for (const auto& row : rows) {
+    const double t = row[kTime];
+    if (t < from || t > to) continue;
+    const double v = along(row, kVx, kVy, direction);
+    n += 1;
+    st += t;
+    sv += v;
+    stt += t * t;
+    stv += t * v;
+  }
+  EXPECT_GE(n, 2) << "no rows between t = " << from << " and t = " << to;
+  return (n * stv - st * sv) / (n * stt - st * st);
+}
+
+// The row whose time is nearest to t.
+const std::vector<double>& row_at(const Table& rows, double t) {
+  static const std::vector<double> kNone(kColumns, std::nan(""));
+  if (rows.empty()) return kNone;
+  auto best = std::min_element(rows.begin(), rows.end(), [t](const auto& a, const auto& b) {
+    return std::fabs(a[kTime] - t) < std::fabs(b[kTime] - t);
+  });
+  return *best;
+}
+
+const grammar::Real* labelled(const grammar::VlocRlocInteraction& c, const std::string& label) {
+  for (const auto& vector : c.vectors)
+    for (std::size_t k = 0; k < vector.labels.size() && k < vector.values.size(); ++k)
+      if (vector.labels[k] == label) return &vector.values[k];
+  return nullptr;
+}
+
+// Each quantity kind: computes it from the run's outputs and compares with case.json.
+void check_quantity(const nlohmann::json& expected, const fs::path& dir, Tracks& tracks) {
+  const std::string quantity = expected.at("quantity");
+  SCOPED_TRACE(quantity);
+  ASSERT_FALSE(expected.at("source").get<std::string>().empty());
+  ASSERT_FALSE(expected.at("tolerance_reason").get<std::string>().empty());
+  const double tolerance = expected.at("tolerance");
+  const auto body = [&] { return expected.at("body").get<int>(); };
+  if (quantity == "apex_heights") {
+    const auto apexes = apex_heights(tracks.of(body()), expected.at("offset"));
+    const auto values = expected.at("values").get<std::vector<double>>();
+    ASSERT_GE(apexes.size(), values.size());
+    for (std::size_t n = 0; n < values.size(); ++n)
+      EXPECT_NEAR(apexes[n], values[n], tolerance) << "apex " << n + 1;
+  } else if (quantity == "slope_acceleration") {
+    // Acceleration along a unit direction, fitted on the tracked velocity over [from, to].
+    const double a = acceleration_along(tracks.of(body()), expected.at("direction"), expected.at("from"),
+                                        expected.at("to"));
+    EXPECT_NEAR(a, expected.at("value").get<double>(), tolerance);
+  } else if (quantity == "displacement_below") {
+    // |(X1, X2)| stays below the tolerance at every tracked step up to `until`.
+    const Table& rows = tracks.of(body());
+    const double until = expected.at("until");
+    ASSERT_FALSE(rows.empty());
+    ASSERT_GE(rows.back()[kTime], until - 1e-12) << "the run stops before t = " << until;
+    double largest = 0.0;
+    for (const auto& row : rows)
+      if (row[kTime] <= until + 1e-12) largest = std::max(largest, std::hypot(row[kDx], row[kDy]));
+    EXPECT_LE(largest, tolerance) << "largest displacement up to t = " << until;
+  } else if (quantity == "rolling") {
+    // Rolling without slip: v·d = ω r at every tracked step from `from` on (d: unit direction in
+    // which a positive ω makes the disk advance, i.e. along the ground with the ground below).
+    const Table& rows = tracks.of(body());
+    const auto d = expected.at("direction").get<std::vector<double>>();
+    const double r = expected.at("radius"), from = expected.at("from");
+    double largest = 0.0;
+    std::size_t counted = 0;
+    for (const auto& row : rows)
+      if (row[kTime] >= from) {
+        largest = std::max(largest, std::fabs(along(row, kVx, kVy, d) - row[kOmega] * r));
+        ++counted;
+      }
+    ASSERT_GT(counted, 0u);
+    EXPECT_LE(largest, tolerance) << "largest slip velocity |v·d − ω r|";
+  } else if (quantity == "column_reactions") {
+    // Normal force of every contact of OUTBOX/Vloc_Rloc.LAST (rln/H); values[k] is the force of
+    // the contact whose upper body (the larger body number) is first_body + k.
+    grammar::DiagnosticSink sink;
+    const fs::path path = dir / "OUTBOX" / "Vloc_Rloc.LAST";
+    const auto file = grammar::parse_vloc_rloc(grammar::SourceText(path.string(), read_file(path)), sink);
+    ASSERT_FALSE(sink.has_errors()) << path;
+    const auto values = expected.at("values").get<std::vector<double>>();
+    const int first = expected.at("first_body");
+    ASSERT_EQ(file.interactions.size(), values.size());
+    std::vector<int> seen(values.size(), 0);
+    for (const auto& c : file.interactions) {
+      ASSERT_TRUE(c.type.value == "DKDKx" || c.type.value == "DKJCx") << c.type.value;
+      ASSERT_GE(c.integers.size(), 3u);
+      const auto upper = std::max(c.integers[0].value, c.integers[2].value);  // candidate, antagonist bodies
+      const auto k = static_cast<std::size_t>(upper - first);
+      ASSERT_LT(k, values.size()) << "contact with body " << upper;
+      ++seen[k];
+      const grammar::Real* rn = labelled(c, "rln/H");
+      ASSERT_NE(rn, nullptr);
+      EXPECT_NEAR(rn->value, values[k], tolerance) << "contact under body " << upper;
+    }
+    for (std::size_t k = 0; k < seen.size(); ++k)
+      EXPECT_EQ(seen[k], 1) << "contact under body " << first + static_cast<int>(k);
+  } else if (quantity == "velocities_after") {
+    // (vx, vy) of each listed body at every tracked step from `after` on.
+    const double after = expected.at("after");
+    for (const auto& item : expected.at("bodies")) {
+      const int b = item.at("body");
+      const auto v = item.at("velocity").get<std::vector<double>>();
+      std::size_t counted = 0;
+      for (const auto& row : tracks.of(b))
+        if (row[kTime] >= after) {
+          ++counted;
+          EXPECT_NEAR(row[kVx], v[0], tolerance) << "body " << b << " vx at t = " << row[kTime];
+          EXPECT_NEAR(row[kVy], v[1], tolerance) << "body " << b << " vy at t = " << row[kTime];
+          if (std::fabs(row[kVx] - v[0]) > tolerance || std::fabs(row[kVy] - v[1]) > tolerance) break;
+        }
+      EXPECT_GT(counted, 0u) << "body " << b << ": no row after t = " << after;
+    }
+  } else if (quantity == "positions_at") {
+    // Centre (x, y) of each listed body at the tracked step nearest to `time`.
+    const double time = expected.at("time");
+    for (const auto& item : expected.at("bodies")) {
+      const int b = item.at("body");
+      const auto x = item.at("position").get<std::vector<double>>();
+      const auto& row = row_at(tracks.of(b), time);
+      ASSERT_NEAR(row[kTime], time, 1e-9) << "body " << b << ": no row at t = " << time;
+      EXPECT_NEAR(row[kX], x[0], tolerance) << "body " << b << " x";
+      EXPECT_NEAR(row[kY], x[1], tolerance) << "body " << b << " y";
+    }
+  } else {
+    ADD_FAILURE() << "case.json names a quantity this test does not compute: " << quantity;
+  }
 }
 
 std::vector<fs::path> reference_cases() {
@@ -53,24 +224,13 @@ TEST(ReferenceCases, EveryExpectedQuantityHoldsWithinItsTolerance) {
     const auto spec = nlohmann::json::parse(read_file(source / "case.json"));
     const fs::path dir = scratch_dir("reference_" + source.filename().string());
     fs::copy(source / "DATBOX", dir / "DATBOX", fs::copy_options::recursive);
-    ASSERT_EQ(run_tool("lmgc-solve", "'" + dir.string() + "' --quiet").exit_code, 0);
+    std::string flags;
+    if (spec.contains("flags"))
+      for (const auto& flag : spec.at("flags")) flags += " '" + flag.get<std::string>() + "'";
+    ASSERT_EQ(run_tool("lmgc-solve", "'" + dir.string() + "' --quiet" + flags).exit_code, 0);
     ASSERT_FALSE(spec.at("expected").empty());
-    for (const auto& expected : spec.at("expected")) {
-      const std::string quantity = expected.at("quantity");
-      ASSERT_FALSE(expected.at("source").get<std::string>().empty());
-      const double tolerance = expected.at("tolerance");
-      if (quantity == "apex_heights") {
-        char name[32];
-        std::snprintf(name, sizeof name, "BODY_%07d.DAT", expected.at("body").get<int>());
-        const auto apexes = apex_heights(read_table(dir / "POSTPRO" / name), expected.at("offset"));
-        const auto values = expected.at("values").get<std::vector<double>>();
-        ASSERT_GE(apexes.size(), values.size());
-        for (std::size_t n = 0; n < values.size(); ++n)
-          EXPECT_NEAR(apexes[n], values[n], tolerance) << "apex " << n + 1;
-      } else {
-        ADD_FAILURE() << "case.json names a quantity this test does not compute: " << quantity;
-      }
-    }
+    Tracks tracks(dir / "POSTPRO");
+    for (const auto& expected : spec.at("expected")) check_quantity(expected, dir, tracks);
   }
 }
 
