@@ -142,7 +142,8 @@ void CardReader::check_spill(const Line& line, int first, int last) {
     // The whole token as written, to show what LMGC90 cuts it to.
     std::size_t begin = static_cast<std::size_t>(first - 1), end = std::min(text.size(), static_cast<std::size_t>(last));
     while (begin > 0 && (is_number_char(text[begin - 1]) || text[begin - 1] == '-' || text[begin - 1] == '+')) --begin;
-    while (end < text.size() && (is_number_char(text[end]) || text[end] == '-' || text[end] == '+')) ++end;
+    const std::size_t record = std::min(text.size(), kRecordLength);  // not past what LMGC90 reads
+    while (end < record && (is_number_char(text[end]) || text[end] == '-' || text[end] == '+')) ++end;
     report("L1011", line, first, last,
            "value '" + std::string(trim(text.substr(begin, end - begin))) + "' spills out of columns " +
                std::to_string(first) + "-" + std::to_string(last) + "; LMGC90 reads '" + std::string(trim(field)) + "'",
