@@ -18,7 +18,9 @@ constexpr int kValueColumns[3][2] = {{35, 48}, {56, 69}, {77, 90}};
 constexpr int kNodeRankFirst = 35;
 constexpr int kNodeRankPeriod = 12;
 
-bool is_blank(std::string_view text) { return text.find_first_not_of(" \t") == std::string_view::npos; }
+bool is_blank(std::string_view text) {
+  return text.find_first_not_of(" \t") == std::string_view::npos;
+}
 
 std::optional<BodyType> body_type_of(std::string_view keyword) {
   if (keyword == "RBDY2") return BodyType::rbdy2;
@@ -50,7 +52,8 @@ class BodiesParser {
     }
     // LMGC90 numbers bodies within their type and echoes MAILx, then rigid bodies (§1.6).
     const auto by_type = [](const Body& a, const Body& b) { return a.type < b.type; };
-    if (!std::is_sorted(bodies.begin(), bodies.end(), by_type)) std::stable_sort(bodies.begin(), bodies.end(), by_type);
+    if (!std::is_sorted(bodies.begin(), bodies.end(), by_type))
+      std::stable_sort(bodies.begin(), bodies.end(), by_type);
     file.bodies = std::move(bodies);
     return file;
   }
@@ -76,6 +79,7 @@ class BodiesParser {
     body.type = *type;
     body.type_span = reader_.span(type_line, 2, 6);
     body.number = ordinal(type_line, *type == BodyType::mailx ? 7 : 9, *type == BodyType::mailx ? 13 : 15);
+    body_label_ = body_label(body);
 
     Section section = Section::none;
     while (!reader_.at_end()) {
@@ -93,11 +97,14 @@ class BodiesParser {
         return body;
       }
       if (kw == "blmty" || kw == "nodty" || kw == "tacty") {
-        const Section next = kw == "blmty" ? Section::bulk : kw == "nodty" ? Section::nodes : Section::contactors;
+        const Section next = kw == "blmty"   ? Section::bulk
+                             : kw == "nodty" ? Section::nodes
+                                             : Section::contactors;
         if (next <= section) {
           reader_.report("L1013", line, 2, 6,
-                         "section '$" + std::string(kw) + "' out of order; LMGC90 reads '$blmty', '$nodty', '$tacty' "
-                         "in this order and would lose it");
+                         "section '$" + std::string(kw) +
+                             "' out of order; LMGC90 reads '$blmty', '$nodty', '$tacty' "
+                             "in this order and would lose it");
         }
         section = next;
         reader_.next();
@@ -108,9 +115,15 @@ class BodiesParser {
           reader_.report("L1013", line, 2, 6, "card '" + std::string(kw) + "' before any '$blmty' section");
           reader_.next();
           break;
-        case Section::bulk: parse_bulk_item(body); break;
-        case Section::nodes: parse_node(body); break;
-        case Section::contactors: parse_contactor(body); break;
+        case Section::bulk:
+          parse_bulk_item(body);
+          break;
+        case Section::nodes:
+          parse_node(body);
+          break;
+        case Section::contactors:
+          parse_contactor(body);
+          break;
       }
     }
     reader_.report_at_end("L1005", "file ends inside body " + body_label(body) + "; '$$$$$$' is missing");
@@ -120,14 +133,16 @@ class BodiesParser {
 
   void finish_body(Body& body, const Line& type_line) {
     if (body.nodes.empty()) {
-      reader_.report("L1012", type_line, 2, 6, "body " + body_label(body) + " has no node ('$nodty' section)");
+      reader_.report("L1012", type_line, 2, 6,
+                     "body " + body_label(body) + " has no node ('$nodty' section)");
     } else if (body.type != BodyType::mailx && body.nodes.size() != 1) {
       reader_.report("L1014", type_line, 2, 6,
                      "rigid body " + body_label(body) + " has " + std::to_string(body.nodes.size()) +
                          " nodes; LMGC90 requires exactly one");
     }
     if (body.type != BodyType::mailx && !body.rigid_bulk) {
-      reader_.report("L1012", type_line, 2, 6, "rigid body " + body_label(body) + " has no 'PLAIN' bulk line");
+      reader_.report("L1012", type_line, 2, 6,
+                     "rigid body " + body_label(body) + " has no 'PLAIN' bulk line");
     }
   }
 
@@ -150,17 +165,37 @@ class BodiesParser {
     return Ordinal{r.error == NumberError::none ? r.value : 0, reader_.span(line, first, last)};
   }
 
-  // The next significant line, which must be a continuation of the current card.
+  // The next significant line, which must be a continuation of the current card. A line starting
+  // with '$' (or '$$$$$' in columns 2-6) ends the card instead: LMGC90 would read '$$$$$$',
+  // '$bdyty', ... as data and lose the structure; we report it, leave it to the body loop, and
+  // the card is dropped.
   const Line* continuation(const char* what) {
     if (reader_.at_end()) {
-      reader_.report_at_end("L1006", std::string("file ends where ") + what + " is expected");
+      reader_.report_at_end("L1006",
+                            std::string("file ends where ") + what + " is expected" + card_context());
+      return nullptr;
+    }
+    const Line& line = reader_.peek();
+    if ((!line.text.empty() && line.text[0] == '$') || keyword_of(line.text) == "$$$$$") {
+      const std::string_view head = columns(line.text, 1, 12);
+      const std::string word(head.substr(0, std::min(head.find_first_of(" \t"), head.size())));
+      reader_.report("L1013", line, 1, static_cast<int>(std::max<std::size_t>(word.size(), 1)),
+                     "'" + word + "' line where " + what + " is expected" + card_context() +
+                         "; LMGC90 would read this line as data",
+                     "give the card all its lines, or correct its count");
       return nullptr;
     }
     return &reader_.next();
   }
 
+  // " (contactor POLYG 1 of RBDY2 3)": the card being read, for messages.
+  std::string card_context() const {
+    return card_.empty() ? std::string() : " (" + card_ + " of " + body_label_ + ")";
+  }
+
   void read_values(const Line& line, int count, std::vector<Real>& out) {
-    for (int i = 0; i < count; ++i) out.push_back(reader_.real(line, kValueColumns[i][0], kValueColumns[i][1]));
+    for (int i = 0; i < count; ++i)
+      out.push_back(reader_.real(line, kValueColumns[i][0], kValueColumns[i][1]));
   }
 
   std::array<Real, 3> read_triple(const Line& line) {
@@ -181,12 +216,14 @@ class BodiesParser {
       return;
     }
     if (kw != "PLAIN") {
-      reader_.report("L1001", line, 2, 6,
-                     "unknown bulk element '" + std::string(kw) + "' for a rigid body; LMGC90 requires 'PLAIN'");
+      reader_.report(
+          "L1001", line, 2, 6,
+          "unknown bulk element '" + std::string(kw) + "' for a rigid body; LMGC90 requires 'PLAIN'");
       return;
     }
     if (body.rigid_bulk) {
-      reader_.report("L1014", line, 2, 6, "second 'PLAIN' line in body " + body_label(body) + "; LMGC90 reads only the first");
+      reader_.report("L1014", line, 2, 6,
+                     "second 'PLAIN' line in body " + body_label(body) + "; LMGC90 reads only the first");
       return;
     }
     RigidBulk bulk;
@@ -217,6 +254,7 @@ class BodiesParser {
     Element element;
     element.type = reader_.word(line, 2, 6);
     element.number = ordinal(line, 7, 13);
+    card_ = "element " + element.type.value + " " + std::to_string(element.number.value);
     // Connectivity: I7 fields from column 21, eight per line (§1.5).
     const Line* current = &line;
     for (int i = 0; i < kind->node_count; ++i) {
@@ -252,7 +290,8 @@ class BodiesParser {
                      "continuation line without a node; LMGC90 skips it");
       return;
     }
-    const bool known = kw.size() == 5 && kw.substr(0, 2) == "NO" && kw[2] >= '1' && kw[2] <= '6' && kw.substr(3) == "xx";
+    const bool known =
+        kw.size() == 5 && kw.substr(0, 2) == "NO" && kw[2] >= '1' && kw[2] <= '6' && kw.substr(3) == "xx";
     if (!known) {
       reader_.report("L1001", line, 2, 6, "unknown node type '" + std::string(kw) + "'",
                      "node types are NO1xx ... NO6xx (the digit is the number of dofs)");
@@ -266,11 +305,15 @@ class BodiesParser {
     Node node;
     node.type = reader_.word(line, 2, 6);
     node.number = ordinal(line, 8, 13);
+    card_ = "node " + node.type.value + " " + std::to_string(node.number.value);
     read_values(line, std::min(count, 3), node.coordinates);
     if (count > 3) {
-      const Line* more = continuation("the node's continuation line");
-      if (!more) return;
-      read_values(*more, count - 3, node.coordinates);
+      // Without its continuation line the node keeps zeros there, the values LMGC90 reads from
+      // the blank columns of the line it takes instead (NO6xx values 4-6 are forced to 0 anyway).
+      if (const Line* more = continuation("the node's continuation line"))
+        read_values(*more, count - 3, node.coordinates);
+      else
+        node.coordinates.resize(static_cast<std::size_t>(count), Real{0.0, {}});
     }
     body.nodes.push_back(std::move(node));
   }
@@ -301,8 +344,11 @@ class BodiesParser {
     c.type = reader_.word(line, 2, 6);
     c.number = ordinal(line, 9, 13);
     c.color = reader_.word(line, 23, 27);
+    card_ = "contactor " + c.type.value + " " + std::to_string(c.number.value);
     switch (kind->layout) {
-      case ContactorLayout::values: read_values(line, kind->value_count, c.values); break;
+      case ContactorLayout::values:
+        read_values(line, kind->value_count, c.values);
+        break;
       case ContactorLayout::values_offset: {
         read_values(line, kind->value_count, c.values);
         const Line* offset = continuation("the contactor's offset line");
@@ -407,7 +453,9 @@ class BodiesParser {
       if (next.text.empty() || next.text[0] != '+' || columns(next.text, 2, 6) != kind.keyword) return;
       reader_.next();
       ContactorContinuation more;
-      const int n = kind.layout == ContactorLayout::node_patch && kind.patch_nodes == 0 ? patch_node_count(next) : count;
+      const int n = kind.layout == ContactorLayout::node_patch && kind.patch_nodes == 0
+                        ? patch_node_count(next)
+                        : count;
       read_node_ranks(next, n, more.nodes);
       c.continuations.push_back(std::move(more));
     }
@@ -420,7 +468,8 @@ class BodiesParser {
     if (!nv || !nf) return false;
     if (nv->value < 1 || nf->value < 1) {
       reader_.report("L1014", header, 40, 67,
-                     "polyhedron with " + std::to_string(nv->value) + " vertices and " + std::to_string(nf->value) + " faces");
+                     "polyhedron with " + std::to_string(nv->value) + " vertices and " +
+                         std::to_string(nf->value) + " faces");
       return false;
     }
     for (std::int64_t i = 0; i < nv->value; ++i) {
@@ -448,15 +497,20 @@ class BodiesParser {
   }
 
   CardReader reader_;
+  std::string body_label_;  // the body being read, for messages
+  std::string card_;        // the multi-line card being read, for messages
 };
 
 }  // namespace
 
 std::string_view body_type_keyword(BodyType type) {
   switch (type) {
-    case BodyType::rbdy2: return "RBDY2";
-    case BodyType::rbdy3: return "RBDY3";
-    case BodyType::mailx: return "MAILx";
+    case BodyType::rbdy2:
+      return "RBDY2";
+    case BodyType::rbdy3:
+      return "RBDY3";
+    case BodyType::mailx:
+      return "MAILx";
   }
   return "RBDY2";
 }

@@ -20,7 +20,9 @@ int line_end_column(const Line& line) {
   return size < 1 ? 1 : size;
 }
 
-bool is_end_of_block(std::string_view keyword) { return keyword == "$$$$$"; }
+bool is_end_of_block(std::string_view keyword) {
+  return keyword == "$$$$$";
+}
 
 bool is_dof_keyword(std::string_view keyword) {
   const std::string_view k = trim_right(keyword);
@@ -212,6 +214,43 @@ class DrvDofParser {
     body.nodes.push_back(std::move(node));
   }
 
+  // A line that ends a node's dof list without being an error there: the end of the block, the
+  // next node group, a keyword line or a node line.
+  static bool ends_dof_list(const Line& line) {
+    if (!line.text.empty() && line.text[0] == '$') return true;
+    const std::string_view keyword = keyword_of(line.text);
+    return is_end_of_block(keyword) || keyword == "bdyty" || keyword == "nodty" || keyword == "model" ||
+           keyword == "dofty" || columns(line.text, 2, 3) == "NO";
+  }
+
+  // A dof number written wholly outside its columns 9-13 (in 7-8 or from 14): LMGC90 reads the
+  // blank field as 0. Reports L1011 at the written number; true when reported.
+  bool report_number_outside(const Line& line) {
+    if (!trim(columns(line.text, 9, 13)).empty()) return false;
+    const auto is_digit = [](char c) { return c >= '0' && c <= '9'; };
+    int first = 0, last = 0;
+    const std::string_view left = columns(line.text, 7, 8);
+    for (int i = 0; i < static_cast<int>(left.size()); ++i) {
+      if (!is_digit(left[static_cast<std::size_t>(i)])) continue;
+      if (first == 0) first = 7 + i;
+      last = 7 + i;
+    }
+    if (first == 0) {
+      const std::string_view right = columns(line.text, 14, 14);
+      if (right.empty() || !is_digit(right[0])) return false;
+      first = last = 14;
+    }
+    const std::string written(trim(columns(line.text, first, last)));
+    reader_.report("L1011", line, first, last,
+                   "dof number '" + written + "' is written in " +
+                       (first == last ? "column " + std::to_string(first)
+                                      : "columns " + std::to_string(first) + "-" + std::to_string(last)) +
+                       ", outside columns 9-13; LMGC90 reads the blank columns 9-13 as dof 0 "
+                       "and stops ('dof number 0 does not belong')",
+                   "write the dof number in columns 9-13, right-justified");
+    return true;
+  }
+
   // `$dofty` (rest of the line is a comment) or the guide's `$dofyty` + template line.
   void parse_dofty(std::string_view model) {
     (void)model;
@@ -226,12 +265,14 @@ class DrvDofParser {
       return;
     }
     if (keyword == "dofyt") {
-      reader_.report("L1018", line, 1, 7, "'$dofyty' (user's guide) read as '$dofty'",
-                     "LMGC90 reads '$dofty' with the template on the same line; with '$dofyty' it reads no dof");
+      reader_.report(
+          "L1018", line, 1, 7, "'$dofyty' (user's guide) read as '$dofty'",
+          "LMGC90 reads '$dofty' with the template on the same line; with '$dofyty' it reads no dof");
       reader_.next();
       if (!reader_.at_end()) {
         const std::string_view next = keyword_of(reader_.peek().text);
-        if (!is_dof_keyword(next) && !is_end_of_block(next) && next != "nodty" && next != "bdyty") reader_.next();
+        if (!is_dof_keyword(next) && !is_end_of_block(next) && next != "nodty" && next != "bdyty")
+          reader_.next();
       }
       return;
     }
@@ -242,7 +283,20 @@ class DrvDofParser {
     while (!reader_.at_end()) {
       const Line& line = reader_.peek();
       const std::string_view keyword = keyword_of(line.text);
-      if (!is_dof_keyword(keyword)) return;
+      if (!is_dof_keyword(keyword)) {
+        if (ends_dof_list(line)) return;
+        // LMGC90 ends the dof list here (BACKSPACE), then reads this line again as a node line
+        // and stops ("nodty ... unknown"): one error. The dof lines after it are read on as
+        // dofs of this node, so that they are not reported again.
+        reader_.report("L1001", line, 2, 6,
+                       "unknown dof keyword '" + std::string(keyword) +
+                           "'; LMGC90 ends the dof list at this line and stops on it ('nodty " +
+                           std::string(keyword) + " unknown')",
+                       model == "THERM" ? "THERM dof keywords are temp and flux, in columns 2-6"
+                                        : "dof keywords are vlocy and force, in columns 2-6");
+        reader_.next();
+        continue;
+      }
       reader_.next();
       if (!keyword_allowed(keyword, model)) {
         reader_.report("L1017", line, 2, 6,
@@ -254,7 +308,9 @@ class DrvDofParser {
       dof.kind = reader_.word(line, 2, 6);
       dof.dof = reader_.integer(line, 9, 13);
       const bool bounded = dof_count > 0;
-      if (dof.dof.value < 1 || (bounded && dof.dof.value > dof_count))
+      // A number written outside columns 9-13 is reported as such, not as "dof 0".
+      const bool outside = report_number_outside(line);
+      if (!outside && (dof.dof.value < 1 || (bounded && dof.dof.value > dof_count)))
         reader_.report("L1003", line, 9, 13,
                        "dof number " + std::to_string(dof.dof.value) + " is outside 1.." +
                            (bounded ? std::to_string(dof_count) : std::string("n")) + " for node type " +
@@ -263,7 +319,8 @@ class DrvDofParser {
         dof.uses_evolution = true;
         const std::string_view name = trim(columns(line.text, 25, 64));
         dof.evolution_file = Word{std::string(name), reader_.span(line, 25, 64)};
-        if (name.empty()) reader_.report("L1015", line, 25, 64, "evolution file name is missing in columns 25-64");
+        if (name.empty())
+          reader_.report("L1015", line, 25, 64, "evolution file name is missing in columns 25-64");
       } else {
         for (int i = 0; i < 6; ++i)
           dof.parameters[static_cast<std::size_t>(i)] =
@@ -321,7 +378,8 @@ EvolutionFile parse_evolution(const SourceText& source, DiagnosticSink& sink) {
     for (std::size_t i = 0; i < 2 && ok; ++i) {
       if (i >= tokens.size()) {
         const int column = static_cast<int>(std::min(line.text.size(), kRecordLength)) + 1;
-        reader.report("L1015", line, column, column, "the value of the pair is missing (one pair per line: t v)");
+        reader.report("L1015", line, column, column,
+                      "the value of the pair is missing (one pair per line: t v)");
         ok = false;
         break;
       }
@@ -350,8 +408,9 @@ EvolutionFile parse_evolution(const SourceText& source, DiagnosticSink& sink) {
     file.points.push_back(EvolutionPoint{values[0], values[1]});
   }
   if (file.points.size() < 2 && last_line != nullptr)
-    reader.report("L1014", *last_line, 1, static_cast<int>(std::max<std::size_t>(1, last_line->text.size())),
-                  "an evolution file needs at least two 't v' pairs, found " + std::to_string(file.points.size()));
+    reader.report(
+        "L1014", *last_line, 1, static_cast<int>(std::max<std::size_t>(1, last_line->text.size())),
+        "an evolution file needs at least two 't v' pairs, found " + std::to_string(file.points.size()));
   return file;
 }
 

@@ -81,8 +81,9 @@ class GpvParser {
     const Line* type = next_line("the body line");
     if (!type) return;
     if (keyword_of(type->text) != "MAILx") {
-      reader_.report("L1001", *type, 2, 6,
-                     "Gauss-point values belong to MAILx bodies, not '" + std::string(keyword_of(type->text)) + "'");
+      reader_.report(
+          "L1001", *type, 2, 6,
+          "Gauss-point values belong to MAILx bodies, not '" + std::string(keyword_of(type->text)) + "'");
       return;
     }
     GpvBody body;
@@ -99,7 +100,8 @@ class GpvParser {
       if (k == "bdyty") break;
       if (k != "blmty") {
         if (!is_skipped_line(line.text))
-          reader_.report("L1013", line, 1, static_cast<int>(line.text.size()), "expected '$blmty' or '$$$$$$'");
+          reader_.report("L1013", line, 1, static_cast<int>(line.text.size()),
+                         "expected '$blmty' or '$$$$$$'");
         ++i_;
         continue;
       }
@@ -108,10 +110,13 @@ class GpvParser {
     }
     if (!closed) {
       if (i_ < lines_.size())
-        reader_.report("L1005", lines_[i_], 2, 6,
-                       "MAILx body " + std::to_string(body.number.value) + " is not closed by '$$$$$$'");
+        reader_.report("L1005", lines_[i_], 1, 6,
+                       "MAILx body " + std::to_string(body.number.value) +
+                           " is not closed by '$$$$$$' before the next '$bdyty'",
+                       "end every body with a '$$$$$$' line");
       else
-        reader_.report_at_end("L1005", "MAILx body " + std::to_string(body.number.value) + " is not closed by '$$$$$$'");
+        reader_.report_at_end(
+            "L1005", "MAILx body " + std::to_string(body.number.value) + " is not closed by '$$$$$$'");
     }
     file.bodies.push_back(std::move(body));
   }
@@ -123,9 +128,10 @@ class GpvParser {
     element.type = reader_.word(*element_line, 2, 6);
     element.number = reader_.integer(*element_line, 7, 13);
     if (std::find(kElements.begin(), kElements.end(), element.type.value) == kElements.end())
-      reader_.report("L1001", *element_line, 2, 6,
-                     "element '" + element.type.value + "' is not one that LMGC90 reads Gauss-point values for",
-                     "LMGC90 reads T3xxx, T6xxx, Q4xxx, Q8xxx, H8xxx, H20xx, TE4xx, TE10x, PRI6x and PRI15");
+      reader_.report(
+          "L1001", *element_line, 2, 6,
+          "element '" + element.type.value + "' is not one that LMGC90 reads Gauss-point values for",
+          "LMGC90 reads T3xxx, T6xxx, Q4xxx, Q8xxx, H8xxx, H20xx, TE4xx, TE10x, PRI6x and PRI15");
     while (i_ < lines_.size() && keyword_of(lines_[i_].text) == "model") {
       ++i_;
       const Line* model_line = next_line("the model line");
@@ -168,6 +174,8 @@ class GpvParser {
 
 }  // namespace
 
-GpvFile parse_gpv(const SourceText& source, DiagnosticSink& sink) { return GpvParser(source, sink).run(); }
+GpvFile parse_gpv(const SourceText& source, DiagnosticSink& sink) {
+  return GpvParser(source, sink).run();
+}
 
 }  // namespace lmgc::grammar

@@ -2,7 +2,9 @@
 #include "grammar/models/parser.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <string>
+#include <string_view>
 
 #include "grammar/common/card_reader.hpp"
 #include "grammar/common/fortran_format.hpp"
@@ -10,9 +12,13 @@
 namespace lmgc::grammar {
 namespace {
 
-bool blank(std::string_view text) { return text.find_first_not_of(" \t") == std::string_view::npos; }
+bool blank(std::string_view text) {
+  return text.find_first_not_of(" \t") == std::string_view::npos;
+}
 
-int end_column(const Line& line) { return static_cast<int>(std::max<std::size_t>(trim_right(line.text).size(), 1)); }
+int end_column(const Line& line) {
+  return static_cast<int>(std::max<std::size_t>(trim_right(line.text).size(), 1));
+}
 
 // First item of a list-directed character read: quoted, or up to a blank, ',' or '/'.
 std::string list_directed_word(std::string_view text) {
@@ -28,6 +34,29 @@ std::string list_directed_word(std::string_view text) {
   return out;
 }
 
+// Model types of init_models (mod_models.f90): any other stops LMGC90 with 'unknown model'.
+constexpr std::string_view kModelKinds[] = {"MECAx", "THERM", "POROx", "MULTI"};
+
+// Finite element names LMGC90 knows, all model types together: mod_a_mecaEF_iso.f90
+// (get_NAME_mecaEF_iso), _bar, _shell, _shb, _discrete, _joint; mod_a_therEF_iso.f90,
+// mod_a_therEF_bar.f90; mod_a_poroEF_iso.f90; mod_a_multiEF_iso.f90. Any other stops the run
+// ('mecaEF ... unknown', ...). Names starting with 'EXT' or 'Rxx' are external elements.
+constexpr std::string_view kElements[] = {
+    // mechanical, isoparametric
+    "T3xxx", "T3Lxx", "T6xxx", "Q4xxx", "Q8xxx", "Q8Rxx", "Q4P0x", "H8xxx", "H20xx", "H20Rx", "TE4xx",
+    "TE4Lx", "TE10x", "PRI6x", "PRI15",
+    // mechanical: bar, shell, solid-shell, discrete, joints
+    "BARxx", "DKTxx", "SHB6x", "SPRNG", "J2xx2", "J3xx2", "J3xx3", "J6xx3", "J4xx3", "J8xx3",
+    // thermal bar
+    "S2xth",
+    // poro and multi-physics
+    "T33xx", "Q44xx", "Q84xx", "T63xx", "H208x", "H88xx", "TE104", "TE44x"};
+
+bool known_element(std::string_view name) {
+  if (name.substr(0, 3) == "EXT" || name.substr(0, 3) == "Rxx") return true;
+  return std::find(std::begin(kElements), std::end(kElements), name) != std::end(kElements);
+}
+
 class ModelsParser {
  public:
   ModelsParser(const SourceText& source, DiagnosticSink& sink) : reader_(source, sink) {}
@@ -38,7 +67,8 @@ class ModelsParser {
     while (!reader_.at_end()) {
       const Line& line = reader_.next();
       if (keyword_of(line.text) != "model") {
-        reader_.report("L1019", line, 1, end_column(line), "line outside any '$model' block; LMGC90 skips it");
+        reader_.report("L1019", line, 1, end_column(line),
+                       "line outside any '$model' block; LMGC90 skips it");
         continue;
       }
       if (auto model = parse_model()) file.models.push_back(std::move(*model));
@@ -72,11 +102,13 @@ class ModelsParser {
         if (seen_mdlty) {
           if (takes_options) {
             reader_.report("L1013", line, 9, 13,
-                           "second 'mdlty' line in model '" + model.nickname.value + "': LMGC90 stops with 'error reading models'");
+                           "second 'mdlty' line in model '" + model.nickname.value +
+                               "': LMGC90 stops with 'error reading models'");
             continue;
           }
-          reader_.report("L1019", line, 9, 13,
-                         "second 'mdlty' line in model '" + model.nickname.value + "': LMGC90 keeps only this one");
+          reader_.report(
+              "L1019", line, 9, 13,
+              "second 'mdlty' line in model '" + model.nickname.value + "': LMGC90 keeps only this one");
         }
         seen_mdlty = true;
         read_mdlty_line(line, model, takes_options);
@@ -86,7 +118,8 @@ class ModelsParser {
       if (blank(id.value)) continue;
       if (!takes_options) {
         reader_.report("L1019", line, 23, 27,
-                       "option after an 'mdlty' line without option: LMGC90 ignores it", "put the first option on the mdlty line");
+                       "option after an 'mdlty' line without option: LMGC90 ignores it",
+                       "put the first option on the mdlty line");
         continue;
       }
       model.options.push_back(read_option(line, id));
@@ -97,13 +130,20 @@ class ModelsParser {
       }
     }
     if (!seen_mdlty)
-      reader_.report("L1012", name, 2, 6, "model '" + model.nickname.value + "' has no 'mdlty' line (MECAx, THERM, ...)");
+      reader_.report("L1012", name, 2, 6,
+                     "model '" + model.nickname.value + "' has no 'mdlty' line (MECAx, THERM, ...)");
     return model;
   }
 
   void read_mdlty_line(const Line& line, Model& model, bool& takes_options) {
     model.kind = reader_.word(line, 9, 13);
     model.element = reader_.word(line, 16, 20);
+    if (std::find(std::begin(kModelKinds), std::end(kModelKinds), model.kind.value) == std::end(kModelKinds))
+      reader_.report("L1001", line, 9, 13, "unknown model type '" + model.kind.value + "'",
+                     "model types are MECAx, THERM, POROx and MULTI, in columns 9-13");
+    if (!known_element(model.element.value))
+      reader_.report("L1001", line, 16, 20, "unknown finite element '" + model.element.value + "'",
+                     "elements are e.g. T3xxx, Q4xxx, Q4P0x, Q8xxx, H8xxx, TE4xx, PRI6x, in columns 16-20");
     model.user_model = Word{};
     model.options.clear();
     model.vfield_max_size = Integer{};
@@ -113,7 +153,8 @@ class ModelsParser {
     if (id.value == "u_mdl") {
       // A user model: its name is read list-directed from columns 30-79 (character(len=50)).
       model.user_model = Word{list_directed_word(columns(line.text, 30, 79)), reader_.span(line, 30, 79)};
-      if (model.user_model.value.empty()) reader_.report("L1015", line, 30, 79, "the user model name ('u_mdl') is missing");
+      if (model.user_model.value.empty())
+        reader_.report("L1015", line, 30, 79, "the user model name ('u_mdl') is missing");
       return;
     }
     model.options.push_back(read_option(line, id));
@@ -129,6 +170,8 @@ class ModelsParser {
 
 }  // namespace
 
-ModelsFile parse_models(const SourceText& source, DiagnosticSink& sink) { return ModelsParser(source, sink).parse(); }
+ModelsFile parse_models(const SourceText& source, DiagnosticSink& sink) {
+  return ModelsParser(source, sink).parse();
+}
 
 }  // namespace lmgc::grammar

@@ -11,7 +11,9 @@
 namespace lmgc::grammar {
 namespace {
 
-bool starts_with(std::string_view text, std::string_view prefix) { return text.substr(0, prefix.size()) == prefix; }
+bool starts_with(std::string_view text, std::string_view prefix) {
+  return text.substr(0, prefix.size()) == prefix;
+}
 
 // The items of a list-directed record: separated by blanks or one comma, ended by '/'.
 std::vector<std::string_view> list_items(std::string_view text, std::size_t wanted) {
@@ -20,7 +22,10 @@ std::vector<std::string_view> list_items(std::string_view text, std::size_t want
   while (items.size() < wanted && p < text.size()) {
     while (p < text.size() && (text[p] == ' ' || text[p] == '\t')) ++p;
     if (p >= text.size() || text[p] == '/') break;
-    if (text[p] == ',') { ++p; continue; }
+    if (text[p] == ',') {
+      ++p;
+      continue;
+    }
     const std::size_t begin = p;
     while (p < text.size() && text[p] != ' ' && text[p] != '\t' && text[p] != ',' && text[p] != '/') ++p;
     items.push_back(text.substr(begin, p - begin));
@@ -53,13 +58,19 @@ class PostproParser {
         reader_.report("L1013", line, 1, 1,
                        "blank line in POSTPRO.DAT; LMGC90 stops on it ('Command does not exist')");
       } else if (kind) {
-        reader_.report("L1001", line, 1, static_cast<int>(name.size()),
-                       "POSTPRO command '" + std::string(name) + "' exists only in LMGC90's " +
-                           (dimension_ == 2 ? "3D" : "2D") + " post-processor");
+        reader_.report(
+            "L1001", line, 1, static_cast<int>(name.size()),
+            "POSTPRO command '" + std::string(name) + "' exists only in LMGC90's " +
+                (dimension_ == 2 ? "3D" : "2D") + " post-processor",
+            "LMGC90 stops here ('Command ... does not exist'); the lines up to the next command are "
+            "not checked");
+        skip_to_next_command();
       } else {
         reader_.report("L1001", line, 1, static_cast<int>(name.size()),
                        "unknown POSTPRO command '" + std::string(name) + "'",
-                       "names are case-sensitive and start in column 1");
+                       "names are case-sensitive and start in column 1; LMGC90 stops here ('Command ... does "
+                       "not exist'); the lines up to the next command are not checked");
+        skip_to_next_command();
       }
     }
     reader_.report_at_end("L1012", "POSTPRO.DAT has no 'END' line");
@@ -67,6 +78,17 @@ class PostproParser {
   }
 
  private:
+  // After an unknown command: its STEP and argument lines, whose layout is not known, are skipped
+  // up to the next line that names a command (of either dimension) or starts with END.
+  void skip_to_next_command() {
+    const auto& lines = source_.lines();
+    while (index_ < lines.size()) {
+      const std::string_view head = columns(lines[index_].text, 1, 30);
+      if (starts_with(head, "END") || find_postpro_command(trim_right(head))) return;
+      ++index_;
+    }
+  }
+
   // The next raw line, read as the argument `what` (no comment skipping: spec §8).
   const Line* next(std::string_view what) {
     if (index_ >= source_.lines().size()) {
@@ -100,8 +122,8 @@ class PostproParser {
       const int last = first + static_cast<int>(item.size()) - 1;
       auto value = read_list_directed_integer(item);
       if (!value || value->error != NumberError::none) {
-        reader_.report(value && value->error == NumberError::out_of_range ? "L1003" : "L1004", line, first, last,
-                       std::string(what) + ": '" + std::string(item) + "' is not an integer");
+        reader_.report(value && value->error == NumberError::out_of_range ? "L1003" : "L1004", line, first,
+                       last, std::string(what) + ": '" + std::string(item) + "' is not an integer");
         return false;
       }
       argument.integers.push_back(Integer{value->value, reader_.span(line, first, last)});
@@ -120,8 +142,8 @@ class PostproParser {
     const int last = first + static_cast<int>(items[0].size()) - 1;
     auto value = read_list_directed_real(items[0]);
     if (!value || value->error != NumberError::none) {
-      reader_.report(value && value->error == NumberError::out_of_range ? "L1003" : "L1002", line, first, last,
-                     std::string(what) + ": '" + std::string(items[0]) + "' is not a real");
+      reader_.report(value && value->error == NumberError::out_of_range ? "L1003" : "L1002", line, first,
+                     last, std::string(what) + ": '" + std::string(items[0]) + "' is not a real");
       return false;
     }
     argument.reals.push_back(Real{value->value, reader_.span(line, first, last)});
@@ -135,28 +157,44 @@ class PostproParser {
     argument.format = step.format;
     const std::size_t errors = reader_.sink().error_count();
     switch (step.format) {
-      case PostproLineFormat::i5: argument.integers.push_back(reader_.integer(*line, 1, 5, false)); break;
-      case PostproLineFormat::i7: argument.integers.push_back(reader_.integer(*line, 1, 7, false)); break;
-      case PostproLineFormat::a5: argument.word = reader_.word(*line, 1, 5); break;
-      case PostproLineFormat::a12: argument.word = reader_.word(*line, 1, 12); break;
+      // Fixed-column integers: LMGC90 reads only the field's columns, so a value spilling out of
+      // them is read cut (L1011).
+      case PostproLineFormat::i5:
+        argument.integers.push_back(reader_.integer(*line, 1, 5));
+        break;
+      case PostproLineFormat::i7:
+        argument.integers.push_back(reader_.integer(*line, 1, 7));
+        break;
+      case PostproLineFormat::a5:
+        argument.word = reader_.word(*line, 1, 5);
+        break;
+      case PostproLineFormat::a12:
+        argument.word = reader_.word(*line, 1, 12);
+        break;
       case PostproLineFormat::i7_x_i3:
-        argument.integers.push_back(reader_.integer(*line, 1, 7, false));
-        argument.integers.push_back(reader_.integer(*line, 9, 11, false));
+        argument.integers.push_back(reader_.integer(*line, 1, 7));
+        argument.integers.push_back(reader_.integer(*line, 9, 11));
         break;
       case PostproLineFormat::i7_x_i7:
-        argument.integers.push_back(reader_.integer(*line, 1, 7, false));
-        argument.integers.push_back(reader_.integer(*line, 9, 15, false));
+        argument.integers.push_back(reader_.integer(*line, 1, 7));
+        argument.integers.push_back(reader_.integer(*line, 9, 15));
         break;
-      case PostproLineFormat::list_integer: return list_integers(*line, 1, argument, step.what);
-      case PostproLineFormat::list_integer_pair: return list_integers(*line, 2, argument, step.what);
-      case PostproLineFormat::list_integer_quad: return list_integers(*line, 4, argument, step.what);
-      case PostproLineFormat::list_real: return list_real(*line, argument, step.what);
-      case PostproLineFormat::es14_7: argument.reals.push_back(reader_.real(*line, 1, 14, 7, false)); break;
+      case PostproLineFormat::list_integer:
+        return list_integers(*line, 1, argument, step.what);
+      case PostproLineFormat::list_integer_pair:
+        return list_integers(*line, 2, argument, step.what);
+      case PostproLineFormat::list_integer_quad:
+        return list_integers(*line, 4, argument, step.what);
+      case PostproLineFormat::list_real:
+        return list_real(*line, argument, step.what);
+      case PostproLineFormat::es14_7:
+        argument.reals.push_back(reader_.real(*line, 1, 14));
+        break;
       case PostproLineFormat::dense_sample: {
         // Always consumes one line; 'INTER' in columns 1-5 names an interior body (columns 7-13).
         const std::string_view text = trim_right(columns(line->text, 1, 30));
         argument.word = Word{std::string(text), reader_.span(*line, 1, 30)};
-        if (starts_with(text, "INTER")) argument.integers.push_back(reader_.integer(*line, 7, 13, false));
+        if (starts_with(text, "INTER")) argument.integers.push_back(reader_.integer(*line, 7, 13));
         break;
       }
     }
@@ -183,7 +221,8 @@ class PostproParser {
         }
       }
       command.arguments.push_back(std::move(argument));
-      const std::size_t body = std::min<std::size_t>(static_cast<std::size_t>(step.body), steps.size() - i - 1);
+      const std::size_t body =
+          std::min<std::size_t>(static_cast<std::size_t>(step.body), steps.size() - i - 1);
       // A Fortran DO with a count below 1 runs no pass; each pass reads at least one line, so
       // the loop ends at the end of the file whatever the count.
       for (std::int64_t k = 0; k < count; ++k)
@@ -195,9 +234,11 @@ class PostproParser {
 
   std::optional<PostproCommand> parse_command(const PostproCommandKind& kind, const Line& name_line) {
     PostproCommand command;
-    command.name = Word{std::string(kind.name), reader_.span(name_line, 1, static_cast<int>(kind.name.size()))};
+    command.name =
+        Word{std::string(kind.name), reader_.span(name_line, 1, static_cast<int>(kind.name.size()))};
     if (index_ >= source_.lines().size()) {
-      reader_.report_at_end("L1006", "file ends after '" + std::string(kind.name) + "'; a 'STEP n' line is expected");
+      reader_.report_at_end("L1006",
+                            "file ends after '" + std::string(kind.name) + "'; a 'STEP n' line is expected");
       return std::nullopt;
     }
     const Line& step = source_.lines()[index_];
@@ -224,7 +265,8 @@ class PostproParser {
     }
     command.period = Integer{period->value, reader_.span(step, first, last)};
     if (period->value < 1)
-      reader_.report("L1003", step, first, last, "'STEP' period must be >= 1 (LMGC90 runs the command when Nstep mod n == 0)");
+      reader_.report("L1003", step, first, last,
+                     "'STEP' period must be >= 1 (LMGC90 runs the command when Nstep mod n == 0)");
     if (!run(kind.layout(dimension_), command)) return std::nullopt;
     return command;
   }

@@ -3,7 +3,6 @@
 // diagnostics in all. Bad input never crashes and never hangs (rows with a 10 MB line run in
 // milliseconds). The bases are valid files (from reference_cases/disk_bounce_rst and the readers'
 // unit tests), checked clean by BaseFilesAreClean, so each diagnostic comes from the breakage alone.
-// known_wrong() holds, disabled, what a reader should report and does not yet.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -293,6 +292,27 @@ std::vector<Fixture> fixtures() {
        " POLYG      1  color  BLEUx  nb_vertex=      4\n"
        "                             coo1= 0.1000000D+01  coo2= 0.0000000D+00\n",
        "L1006", error, 9, 70, 2},
+      // A polygon announcing 4 vertices with one given: the '$$$$$$' line ends it (LMGC90 would read
+      // it, '$bdyty' and ' RBDY2 2' as vertices); the next body reads normally.
+      {"BodiesPolygonSwallowsEndOfBlock", bodies,
+       "$bdyty\n RBDY2      1\n$blmty\n PLAIN      1  behav  PLEXx  avrd= 0.1000000D+00\n$nodty\n"
+       " NO3xx      1                coo1= 0.0000000D+00  coo2= 0.0000000D+00  coo3= 0.0000000D+00\n$tacty\n"
+       " POLYG      1  color  BLEUx  nb_vertex=      4\n"
+       "                             coo1= 0.1000000D+01  coo2= 0.0000000D+00\n$$$$$$\n" +
+           kBodies.substr(kBodies.find("$bdyty")),
+       "L1013", error, 10, 1},
+      // The same guard for the faces of a polyhedron (RBDY3 POLYR announcing 2 faces, one given).
+      {"BodiesPolyhedronFacesCutByEndOfBlock", bodies,
+       "$bdyty\n RBDY3      1\n$blmty\n PLAIN      1  behav  PLEXx  avrd= 0.1000000D+00\n$nodty\n"
+       " NO6xx      1                coo1= 0.0000000D+00  coo2= 0.0000000D+00  coo3= 0.0000000D+00\n"
+       "                             coo4= 0.0000000D+00  coo5= 0.0000000D+00  coo6= 0.0000000D+00\n$tacty\n"
+       " POLYR      1  color  BLEUx  nb_vertex=      3    nb_faces=      2\n"
+       "                             coo1= 0.0000000D+00  coo2= 0.0000000D+00  coo3= 0.0000000D+00\n"
+       "                             coo1= 0.1000000D+01  coo2= 0.0000000D+00  coo3= 0.0000000D+00\n"
+       "                             coo1= 0.0000000D+00  coo2= 0.1000000D+01  coo3= 0.0000000D+00\n"
+       "                             ver1=      1         ver2=      2         ver3=      3\n"
+       "$$$$$$\n",
+       "L1013", error, 14, 1},
 
       // ---- BULK_BEHAV.DAT
       {"BulkBehavUnknownLaw", bulk_behav, edit(kBulkBehav, "PLEXx  RIGID ", "PLEXx  RIGIX "), "L1001", error,
@@ -337,16 +357,23 @@ std::vector<Fixture> fixtures() {
       {"ModelsTabInFieldSize", models,
        edit(kModels, "                        3\n", "                     \t  3\n"), "L1007", warning, 5, 62},
       {"ModelsNonAscii", models, edit(kModels, "large", "l\xC3\xA0rge"), "L1008", error, 4, 31},
+      {"ModelsUnknownModelType", models, edit(kModels, "MECAx  Q4xxx", "MECAy  Q4xxx"), "L1001", error, 3, 9},
+      {"ModelsUnknownElement", models, edit(kModels, "MECAx  Q4xxx", "MECAx  Q5xxx"), "L1001", error, 3, 16},
 
       // ---- DRV_DOF.DAT
       {"DrvDofTruncatedBlock", drv_dof, kDrvDof.substr(0, kDrvDof.rfind("$$$$$$")), "L1005", error, 9, 104},
       {"DrvDofMissingEndBetweenBlocks", drv_dof,
        edit(kDrvDof, "$$$$$$\n", "") + kDrvDof.substr(kDrvDof.find("$bdyty")), "L1005", error, 10, 1},
-      {"DrvDofUnknownDofKeyword", drv_dof, edit(kDrvDof, " vlocy      3", " vlocx      3"), "L1001", error, 9,
+      // LMGC90 stops at the unknown line (its dof list ends there, then 'nodty vlocx unknown'); the
+      // valid dof line after it is read on, not reported as a second unknown keyword.
+      {"DrvDofUnknownDofKeyword", drv_dof, edit(kDrvDof, " vlocy      2", " vlocx      2"), "L1001", error, 8,
        2},
       {"DrvDofMalformedParameter", drv_dof, edit(kDrvDof, "1  0.0000000D+00", "1  0.0000000D+OO"), "L1002",
        error, 7, 15},
       {"DrvDofDofOutOfRange", drv_dof, edit(kDrvDof, " vlocy      3", " vlocy      4"), "L1003", error, 9, 9},
+      // The dof number written in column 8, outside columns 9-13: LMGC90 reads dof 0.
+      {"DrvDofNumberOutsideItsColumns", drv_dof, edit(kDrvDof, " vlocy      3", " vlocy 3     "), "L1011",
+       warning, 9, 8},
       {"DrvDofParameterOverflow", drv_dof, edit(kDrvDof, "1  0.0000000D+00", "1  0.100000D+999"), "L1003",
        error, 7, 15},
       {"DrvDofCrlfAccepted", drv_dof, crlf(kDrvDof), ""},
@@ -408,14 +435,19 @@ std::vector<Fixture> fixtures() {
        .column = 181,
        .long_line = 13},
       {"GpvTabInValue", gpv, edit(kGpv, " 0.2930000D+03", "\t0.2930000D+03"), "L1007", warning, 13, 1},
-      // The '$bdyty' keyword is reported at its columns 2-6 here (BODIES, DRV_DOF, DOF.INI: column 1).
       {"GpvMissingEndBetweenBlocks", gpv, edit(kGpv, "$$$$$$\n", "") + kGpv.substr(kGpv.find("$bdyty")),
-       "L1005", error, 16, 2},
+       "L1005", error, 16, 1},
 
       // ---- POSTPRO.DAT
       {"PostproUnknownCommand", postpro, edit(kPostpro, "SOLVER INFORMATIONS", "SOLVER INFORMATION "),
        "L1001", error, 7, 1},
+      // LMGC90 stops at an unknown command: its STEP and argument lines are skipped, not reported.
+      {"PostproUnknownCommandWithArguments", postpro, edit(kPostpro, "BODY TRACKING ", "BODY TRAKING  "),
+       "L1001", error, 2, 1},
       {"PostproMissingEnd", postpro, kPostpro.substr(0, kPostpro.find("END")), "L1012", error, 8, 32},
+      // LMGC90 reads columns 1-7 of the I7 line, i.e. body 1025000.
+      {"PostproBodyNumberSpillsOutOfI7", postpro, edit(kPostpro, "1025    ", "10250000"), "L1011", warning, 6,
+       1},
       // A list-directed body-node-body-node line (line 12) whose last item overflows 32 bits.
       {"PostproListedIntegerOverflow", postpro,
        edit(kPostpro, "END", "NEW DIST SETS\nSTEP 1\n1\n1, 2 3 99999999999\nEND"), "L1003", error, 12, 8},
@@ -450,30 +482,6 @@ std::vector<Fixture> fixtures() {
       // ---- case folders (load_case)
       {"CaseMissingBodiesFile", case_folder, "DATBOX/BODIES.DAT", "L9001", error, 0, 0},
       {"CaseWithoutDatbox", case_folder, "DATBOX", "L9002", error, 0, 0},
-  };
-}
-
-// Wrong today: what the readers should report and do not yet. Instantiated as a disabled suite
-// (run it with --gtest_also_run_disabled_tests); each comment says what the reader reports now.
-std::vector<Fixture> known_wrong() {
-  using enum Reader;
-  const Severity error = Severity::error, warning = Severity::warning;
-  return {
-      // Now: no diagnostic at the polygon; it reads '$$$$$$', '$bdyty' and ' RBDY2 2' (lines 10-12) as
-      // vertices 2-4, then reports L1013 at 13:2 ('$blmty' out of order) and two L1014.
-      {"BodiesPolygonSwallowsEndOfBlock", bodies,
-       "$bdyty\n RBDY2      1\n$blmty\n PLAIN      1  behav  PLEXx  avrd= 0.1000000D+00\n$nodty\n"
-       " NO3xx      1                coo1= 0.0000000D+00  coo2= 0.0000000D+00  coo3= 0.0000000D+00\n$tacty\n"
-       " POLYG      1  color  BLEUx  nb_vertex=      4\n"
-       "                             coo1= 0.1000000D+01  coo2= 0.0000000D+00\n$$$$$$\n" +
-           kBodies.substr(kBodies.find("$bdyty")),
-       "L1013", error, 10, 1},
-      // Now: L1001 at 2:1, then each argument line ('2', '54', '1025') as an unknown command (4 errors).
-      {"PostproUnknownCommandWithArguments", postpro, edit(kPostpro, "BODY TRACKING ", "BODY TRAKING  "),
-       "L1001", error, 2, 1},
-      // Now: no diagnostic; LMGC90 reads columns 1-7 of the I7 line, i.e. body 1025000.
-      {"PostproBodyNumberSpillsOutOfI7", postpro, edit(kPostpro, "1025    ", "10250000"), "L1011", warning, 6,
-       1},
   };
 }
 
@@ -572,7 +580,6 @@ TEST_P(BrokenFile, GivesTheExactDiagnostic) {
 
 const auto kFixtureName = [](const testing::TestParamInfo<Fixture>& info) { return info.param.name; };
 INSTANTIATE_TEST_SUITE_P(Fixtures, BrokenFile, testing::ValuesIn(fixtures()), kFixtureName);
-INSTANTIATE_TEST_SUITE_P(DISABLED_KnownWrong, BrokenFile, testing::ValuesIn(known_wrong()), kFixtureName);
 
 // The bases read without any diagnostic, so a fixture's diagnostic is due to its breakage.
 TEST(BrokenFileBases, BaseFilesAreClean) {

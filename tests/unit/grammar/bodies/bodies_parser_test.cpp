@@ -1,8 +1,7 @@
 // BODIES.DAT cards, one behaviour per test, and broken files with their exact diagnostic.
-#include "grammar/bodies/parser.hpp"
-
 #include <gtest/gtest.h>
 
+#include "grammar/bodies/parser.hpp"
 #include "grammar/bodies/writer.hpp"
 
 namespace lmgc::grammar {
@@ -26,7 +25,8 @@ const Diagnostic& first_error(const Parsed& p) {
   return none;
 }
 
-void expect_diagnostic(const std::string& text, const std::string& code, std::uint32_t line, std::uint32_t column) {
+void expect_diagnostic(const std::string& text, const std::string& code, std::uint32_t line,
+                       std::uint32_t column) {
   const Parsed p = parse(text);
   const Diagnostic& d = first_error(p);
   EXPECT_EQ(d.code, code) << d.message;
@@ -65,8 +65,10 @@ TEST(BodiesParser, ReadsARigidDisk) {
 TEST(BodiesParser, CommentsBlankLinesCrlfAndTrailingSpacesAreAccepted) {
   std::string text = "! comment\n#another\n\n";
   for (char c : kDisk) {
-    if (c == '\n') text += "   \r\n";
-    else text += c;
+    if (c == '\n')
+      text += "   \r\n";
+    else
+      text += c;
   }
   const Parsed p = parse(text);
   EXPECT_FALSE(p.sink.has_errors());
@@ -149,13 +151,18 @@ TEST(BodiesWriter, WritesLmgc90EchoLayout) {
   EXPECT_NE(echo.find("$bdyty\n RBDY2        1\n$blmty\n"
                       " PLAIN      1  behav  PLEXx  avrd= 0.1600000D-02  gyrd= 0.1131200D-02\n"),
             std::string::npos);
-  EXPECT_NE(echo.find(" DISKx      1  color  BLEUx  byrd= 0.1600000D-02\n$$$$$$\n      \n"), std::string::npos);
+  EXPECT_NE(echo.find(" DISKx      1  color  BLEUx  byrd= 0.1600000D-02\n$$$$$$\n      \n"),
+            std::string::npos);
 }
 
 // ---- broken files: exact code and position -------------------------------------------------
 
-TEST(BodiesBroken, EmptyFile) { expect_diagnostic("", "L1009", 0, 0); }
-TEST(BodiesBroken, OnlyComments) { expect_diagnostic("! nothing\n\n# here\n", "L1009", 0, 0); }
+TEST(BodiesBroken, EmptyFile) {
+  expect_diagnostic("", "L1009", 0, 0);
+}
+TEST(BodiesBroken, OnlyComments) {
+  expect_diagnostic("! nothing\n\n# here\n", "L1009", 0, 0);
+}
 
 TEST(BodiesBroken, MissingEndOfBodyBeforeNextBody) {
   std::string text = kDisk;
@@ -249,9 +256,37 @@ TEST(BodiesBroken, PolygonCutShortByEndOfFile) {
   expect_diagnostic(text, "L1006", 9, 70);
 }
 
+// A '$...' line where a vertex line is expected ends the polygon (LMGC90 would read '$$$$$$',
+// '$bdyty', ... as vertices): one error, and the next body reads normally.
+TEST(BodiesBroken, PolygonCutShortByEndOfBody) {
+  const std::string text =
+      "$bdyty\n RBDY2      1\n$blmty\n PLAIN      1  behav  PLEX1  avrd= 0.4914880D-02\n$nodty\n"
+      " NO3xx      1                coo1= 0.1997871D-01  coo2= 0.1997871D-01  coo3= 0.0000000D+00\n$tacty\n"
+      " POLYG      1  color  BLEUx  nb_vertex=      4\n"
+      "                             coo1= 0.3071800D-02  coo2= 0.1843080D-02\n$$$$$$\n" +
+      kDisk;
+  const Parsed p = parse(text);
+  ASSERT_EQ(p.sink.items().size(), 1u) << p.sink.items()[0].message;
+  EXPECT_EQ(p.sink.items()[0].code, "L1013");
+  EXPECT_EQ(p.sink.items()[0].where.span.line, 10u);
+  EXPECT_EQ(p.sink.items()[0].where.span.column, 1u);
+  ASSERT_EQ(p.file.bodies.size(), 2u);
+  EXPECT_TRUE(p.file.bodies[0].contactors.empty());  // the cut polygon is dropped
+  EXPECT_EQ(p.file.bodies[1].contactors.size(), 1u);
+}
+
+TEST(BodiesBroken, NodeContinuationCutByNextSection) {
+  const std::string text =
+      "$bdyty\n RBDY3      1\n$blmty\n PLAIN      1  behav  PLEXx  avrd= 0.1000000D+00\n$nodty\n"
+      " NO6xx      1                coo1= 0.0000000D+00  coo2= 0.0000000D+00  coo3= 0.0000000D+00\n"
+      "$tacty\n SPHER      1  color  BLEUx  byrd= 0.1000000D+00\n$$$$$$\n";
+  expect_diagnostic(text, "L1013", 7, 1);
+}
+
 TEST(BodiesBroken, RigidBodyWithTwoNodes) {
   std::string text = kDisk;
-  const std::string node = " NO3xx      1                coo1= 0.5808000D-01  coo2= 0.4928000D-01  coo3= 0.0000000D+00\n";
+  const std::string node =
+      " NO3xx      1                coo1= 0.5808000D-01  coo2= 0.4928000D-01  coo3= 0.0000000D+00\n";
   text.insert(text.find("$tacty"), node);
   expect_diagnostic(text, "L1014", 2, 2);
 }

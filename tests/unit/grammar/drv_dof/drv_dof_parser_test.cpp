@@ -12,7 +12,8 @@ namespace {
 
 const std::string kTemplate =
     "$dofty  numbr [CT......+......AMP..*..cos.(..OMEGA.*.time.+.PHI..)]...*...[RAMPI.....+.....RAMP.*.time]";
-const std::string kValues = "  0.0000000D+00  0.0000000D+00  0.0000000D+00  0.0000000D+00  0.1000000D+01  0.0000000D+00";
+const std::string kValues =
+    "  0.0000000D+00  0.0000000D+00  0.0000000D+00  0.0000000D+00  0.1000000D+01  0.0000000D+00";
 const std::string kDofLine = " vlocy      1" + kValues;  // values at 15-28 ... 90-103
 
 std::string rigid_block(const std::string& dof_line = kDofLine) {
@@ -23,7 +24,8 @@ DrvDofFile parse(const std::string& text, DiagnosticSink& sink) {
   return parse_drv_dof(SourceText("DRV_DOF.DAT", text), sink);
 }
 
-void expect_one(const DiagnosticSink& sink, const std::string& code, std::uint32_t line, std::uint32_t column) {
+void expect_one(const DiagnosticSink& sink, const std::string& code, std::uint32_t line,
+                std::uint32_t column) {
   ASSERT_FALSE(sink.items().empty()) << "expected " << code;
   EXPECT_EQ(sink.items()[0].code, code) << sink.items()[0].message;
   EXPECT_EQ(sink.items()[0].where.span.line, line) << sink.items()[0].message;
@@ -32,9 +34,10 @@ void expect_one(const DiagnosticSink& sink, const std::string& code, std::uint32
 
 TEST(DrvDofParser, ReadsRigidBlock) {
   DiagnosticSink sink;
-  const std::string text = "$bdyty\n RBDY2  1025\n$nodty\n NO3xx      1\n" + kTemplate + "\n" +
-                           " force      2 -0.1000000D+00  0.0000000D+00  0.0000000D+00  0.0000000D+00  0.1000000D+01  "
-                           "0.2500000D+02\n vlocy      1 evolution vy.dat\n$$$$$$\n";
+  const std::string text =
+      "$bdyty\n RBDY2  1025\n$nodty\n NO3xx      1\n" + kTemplate + "\n" +
+      " force      2 -0.1000000D+00  0.0000000D+00  0.0000000D+00  0.0000000D+00  0.1000000D+01  "
+      "0.2500000D+02\n vlocy      1 evolution vy.dat\n$$$$$$\n";
   const DrvDofFile file = parse(text, sink);
   ASSERT_EQ(sink.items().size(), 0u);
   ASSERT_EQ(file.bodies.size(), 1u);
@@ -55,23 +58,23 @@ TEST(DrvDofParser, ReadsRigidBlock) {
 
 TEST(DrvDofParser, EchoSortsDofsAndPadsEvolutionName) {
   DiagnosticSink sink;
-  const std::string text = "$bdyty\n RBDY2  7\n$nodty\n NO3xx      1\n" + kTemplate +
-                           "\n force      1" + kValues + "\n vlocy      2 evolution vy.dat\n vlocy      1" + kValues +
+  const std::string text = "$bdyty\n RBDY2  7\n$nodty\n NO3xx      1\n" + kTemplate + "\n force      1" +
+                           kValues + "\n vlocy      2 evolution vy.dat\n vlocy      1" + kValues +
                            "\n$$$$$$\n";
   const DrvDofFile file = parse(text, sink);
   ASSERT_EQ(sink.items().size(), 0u);
-  const std::string expected = "     \n! DOF\n     \n$bdyty\n RBDY2        7\n$nodty\n NO3xx      1\n" + kTemplate +
-                               "\n vlocy      1" + kValues + "\n force      1" + kValues +
-                               "\n vlocy      2 evolution vy.dat" + std::string(34, ' ') + "\n$$$$$$\n      \n" +
-                               "!" + std::string(71, '-') + "\n";
+  const std::string expected = "     \n! DOF\n     \n$bdyty\n RBDY2        7\n$nodty\n NO3xx      1\n" +
+                               kTemplate + "\n vlocy      1" + kValues + "\n force      1" + kValues +
+                               "\n vlocy      2 evolution vy.dat" + std::string(34, ' ') +
+                               "\n$$$$$$\n      \n" + "!" + std::string(71, '-') + "\n";
   EXPECT_EQ(write_drv_dof(file), expected);
 }
 
 TEST(DrvDofParser, ReadsThermalMailxBlockWithSeveralNodes) {
   DiagnosticSink sink;
   const std::string text = "$bdyty\n MAILx      1\n$models\n THERM\n$nodty\n NO1xx     21\n" + kTemplate +
-                           "\n temp       1" + kValues + "\n$nodty\n NO1xx      2\n" + kTemplate + "\n temp       1" +
-                           kValues + "\n$$$$$$\n";
+                           "\n temp       1" + kValues + "\n$nodty\n NO1xx      2\n" + kTemplate +
+                           "\n temp       1" + kValues + "\n$$$$$$\n";
   const DrvDofFile file = parse(text, sink);
   ASSERT_EQ(sink.items().size(), 0u);
   ASSERT_EQ(file.bodies.size(), 1u);
@@ -88,9 +91,10 @@ TEST(DrvDofParser, ReadsThermalMailxBlockWithSeveralNodes) {
 
 TEST(DrvDofParser, GuideDofytyIsANoteAndDofsAreRead) {
   DiagnosticSink sink;
-  const std::string text = "$bdyty\n RBDY2      1\n$nodty\n NO3xx      1\n$dofyty\n"
-                           "numbr [CT......+......AMP..*..cos.(..OMEGA.*.time.+.PHI..)]\n" +
-                           kDofLine + "\n$$$$$$\n";
+  const std::string text =
+      "$bdyty\n RBDY2      1\n$nodty\n NO3xx      1\n$dofyty\n"
+      "numbr [CT......+......AMP..*..cos.(..OMEGA.*.time.+.PHI..)]\n" +
+      kDofLine + "\n$$$$$$\n";
   const DrvDofFile file = parse(text, sink);
   expect_one(sink, "L1018", 5, 1);
   EXPECT_EQ(sink.items()[0].severity, Severity::note);
@@ -128,6 +132,34 @@ TEST(DrvDofBroken, ValueShiftedOutOfItsColumns) {
   expect_one(sink, "L1011", 6, 15);
 }
 
+// LMGC90 ends the dof list at an unknown keyword and stops there: one error, and the dof line
+// after it is read on (not a second "unknown keyword").
+TEST(DrvDofBroken, UnknownDofKeywordThenAValidDof) {
+  DiagnosticSink sink;
+  const std::string second = " vlocy      2" + kValues;
+  std::string unknown = kDofLine;
+  unknown.replace(1, 5, "vlocx");
+  const DrvDofFile file = parse(rigid_block(unknown + "\n" + second), sink);
+  expect_one(sink, "L1001", 6, 2);
+  EXPECT_EQ(sink.items().size(), 1u);
+  ASSERT_EQ(file.bodies.size(), 1u);
+  ASSERT_EQ(file.bodies[0].nodes.size(), 1u);
+  ASSERT_EQ(file.bodies[0].nodes[0].dofs.size(), 1u);
+  EXPECT_EQ(file.bodies[0].nodes[0].dofs[0].dof.value, 2);
+}
+
+TEST(DrvDofBroken, DofNumberWhollyOutsideItsColumns) {
+  DiagnosticSink sink;
+  parse(rigid_block(" vlocy 1     " + kValues), sink);  // the number in column 8
+  expect_one(sink, "L1011", 6, 8);
+  EXPECT_EQ(sink.items()[0].severity, Severity::warning);
+  EXPECT_EQ(sink.items().size(), 1u);  // not also "dof number 0"
+  DiagnosticSink right;
+  parse(rigid_block(" vlocy       1" + kValues.substr(1)), right);  // the number in column 14
+  expect_one(right, "L1011", 6, 14);
+  EXPECT_EQ(right.items().size(), 1u);
+}
+
 TEST(DrvDofBroken, MissingNodtyLine) {
   DiagnosticSink sink;
   parse("$bdyty\n RBDY2      1\n NO3xx      1\n" + kTemplate + "\n" + kDofLine + "\n$$$$$$\n", sink);
@@ -162,8 +194,8 @@ TEST(DrvDofBroken, EvolutionWithoutFileName) {
 
 TEST(DrvDofBroken, ThermalKeywordInMechanicalBlock) {
   DiagnosticSink sink;
-  parse("$bdyty\n MAILx      1\n$model\n MECAx\n$nodty\n NO2xx      5\n" + kTemplate + "\n temp       1" + kValues +
-            "\n$$$$$$\n",
+  parse("$bdyty\n MAILx      1\n$model\n MECAx\n$nodty\n NO2xx      5\n" + kTemplate + "\n temp       1" +
+            kValues + "\n$$$$$$\n",
         sink);
   expect_one(sink, "L1017", 8, 2);
 }
@@ -181,8 +213,13 @@ TEST(DrvDofBroken, EmptyFile) {
 }
 
 TEST(DrvDofBroken, NeverCrashesOnGarbage) {
-  const std::string inputs[] = {"$bdyty", "$bdyty\n", "$bdyty\n MAILx", "$bdyty\n MAILx\n$model", "$bdyty\n RBDY2\n$nodty",
-                                "$bdyty\n RBDY2\n$nodty\n NO3xx\n$dofyty", "\t\t$$$$$$\n$bdyty\n$$$$$$\n",
+  const std::string inputs[] = {"$bdyty",
+                                "$bdyty\n",
+                                "$bdyty\n MAILx",
+                                "$bdyty\n MAILx\n$model",
+                                "$bdyty\n RBDY2\n$nodty",
+                                "$bdyty\n RBDY2\n$nodty\n NO3xx\n$dofyty",
+                                "\t\t$$$$$$\n$bdyty\n$$$$$$\n",
                                 std::string(500, '$')};
   for (const auto& text : inputs) {
     DiagnosticSink sink;
@@ -198,10 +235,10 @@ EvolutionFile evolution(const std::string& text, DiagnosticSink& sink) {
 
 TEST(EvolutionParser, ReadsListDirectedPairs) {
   DiagnosticSink sink;
-  const EvolutionFile file =
-      evolution("  0.000000000000000E+000  0.000000000000000E+000\n   1.50000000000000      -3.000000000000000E-002\n"
-                "\n 2.0, 4.0\n",
-                sink);
+  const EvolutionFile file = evolution(
+      "  0.000000000000000E+000  0.000000000000000E+000\n   1.50000000000000      -3.000000000000000E-002\n"
+      "\n 2.0, 4.0\n",
+      sink);
   ASSERT_EQ(sink.items().size(), 0u);
   ASSERT_EQ(file.points.size(), 3u);
   EXPECT_DOUBLE_EQ(file.points[1].time.value, 1.5);

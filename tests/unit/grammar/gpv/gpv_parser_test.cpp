@@ -1,9 +1,8 @@
 // GPV files: bodies, elements, model blocks of Gauss-point values kept line by line; broken files
 // with their exact diagnostic.
-#include "grammar/gpv/parser.hpp"
-
 #include <gtest/gtest.h>
 
+#include "grammar/gpv/parser.hpp"
 #include "grammar/gpv/writer.hpp"
 
 namespace lmgc::grammar {
@@ -32,9 +31,12 @@ const std::string kWrapped =
     "$blmty\n H8xxx     13\n$model\n MECAx\n 0.1000000D+01\n$model\n THERM\n 0.2930000D+03\n"
     "$$$$$$\n!-----------------------------------------------------------------------\n";
 
-GpvFile parse(const std::string& text, DiagnosticSink& sink) { return parse_gpv(SourceText("GPV.LAST", text), sink); }
+GpvFile parse(const std::string& text, DiagnosticSink& sink) {
+  return parse_gpv(SourceText("GPV.LAST", text), sink);
+}
 
-void expect_diagnostic(const std::string& text, const std::string& code, std::uint32_t line, std::uint32_t column) {
+void expect_diagnostic(const std::string& text, const std::string& code, std::uint32_t line,
+                       std::uint32_t column) {
   DiagnosticSink sink;
   parse_gpv(SourceText("GPV.INI", text), sink);
   ASSERT_FALSE(sink.items().empty());
@@ -89,7 +91,8 @@ TEST(GpvWriter, FileWithoutBodiesEndsWithTheDashedLine) {
   f.step = Integer{0};
   f.time = Real{0.0};
   const std::string text = write_gpv(f);
-  EXPECT_EQ(text.substr(text.size() - 73), "!-----------------------------------------------------------------------\n");
+  EXPECT_EQ(text.substr(text.size() - 73),
+            "!-----------------------------------------------------------------------\n");
   DiagnosticSink sink;
   EXPECT_EQ(parse(text, sink), f);
   EXPECT_FALSE(sink.has_errors());
@@ -97,7 +100,8 @@ TEST(GpvWriter, FileWithoutBodiesEndsWithTheDashedLine) {
 
 TEST(GpvParser, HeaderOnlyInitialFile) {
   DiagnosticSink sink;
-  const GpvFile f = parse("! Gauss Point Values\n\n$steps      0                time= 0.0000000D+00      \n", sink);
+  const GpvFile f =
+      parse("! Gauss Point Values\n\n$steps      0                time= 0.0000000D+00      \n", sink);
   EXPECT_FALSE(sink.has_errors());
   EXPECT_TRUE(f.bodies.empty());
 }
@@ -112,7 +116,9 @@ TEST(GpvParser, EveryTruncationOfAFileIsReadWithoutCrashing) {
 }
 
 // Broken inputs: one diagnostic each, with its exact code and position.
-TEST(GpvBroken, MissingStepsHeader) { expect_diagnostic("$bdyty\n MAILx      1\n$$$$$$\n", "L1012", 1, 2); }
+TEST(GpvBroken, MissingStepsHeader) {
+  expect_diagnostic("$bdyty\n MAILx      1\n$$$$$$\n", "L1012", 1, 2);
+}
 TEST(GpvBroken, NotAMailxBody) {
   std::string t = kFile;
   t.replace(t.find(" MAILx"), 6, " RBDY2");
@@ -130,7 +136,7 @@ TEST(GpvBroken, UnclosedBody) {
 TEST(GpvBroken, NextBodyBeforeTheEndOfThisOne) {
   std::string t = kFile;
   t.replace(t.find("$$$$$$"), 6, "$bdyty\n MAILx      2\n$$$$$$");
-  expect_diagnostic(t, "L1005", 15, 2);
+  expect_diagnostic(t, "L1005", 15, 1);  // at the '$bdyty' keyword, column 1 as in BODIES and DRV_DOF
 }
 TEST(GpvBroken, MalformedValue) {
   std::string t = kFile;
@@ -147,10 +153,14 @@ TEST(GpvBroken, MalformedElementNumber) {
   t.replace(t.find(" Q4xxx      1"), 13, " Q4xxx     1a");
   expect_diagnostic(t, "L1004", 10, 7);
 }
-TEST(GpvBroken, StrayLineBetweenBodies) { expect_diagnostic(kFile + "garbage\n", "L1013", 17, 1); }
+TEST(GpvBroken, StrayLineBetweenBodies) {
+  expect_diagnostic(kFile + "garbage\n", "L1013", 17, 1);
+}
 TEST(GpvBroken, TruncatedAfterModel) {
-  expect_diagnostic("$steps      0                time= 0.0000000D+00\n$bdyty\n MAILx      1\n$blmty\n Q4xxx      1\n$model\n",
-                    "L1006", 6, 7);
+  expect_diagnostic(
+      "$steps      0                time= 0.0000000D+00\n$bdyty\n MAILx      1\n$blmty\n Q4xxx      "
+      "1\n$model\n",
+      "L1006", 6, 7);
 }
 
 }  // namespace

@@ -1,8 +1,7 @@
 // POSTPRO.DAT: commands and arguments as LMGC90 reads them, and broken files.
-#include "grammar/postpro/parser.hpp"
-
 #include <gtest/gtest.h>
 
+#include "grammar/postpro/parser.hpp"
 #include "grammar/postpro/writer.hpp"
 
 namespace lmgc::grammar {
@@ -19,8 +18,8 @@ const std::string kFile =
     "STEP 10                       :\n"
     "END                           :\n";
 
-void expect_diagnostic(const std::string& text, const std::string& code, std::uint32_t line, std::uint32_t column,
-                       int dimension = 2) {
+void expect_diagnostic(const std::string& text, const std::string& code, std::uint32_t line,
+                       std::uint32_t column, int dimension = 2) {
   DiagnosticSink sink;
   parse_postpro(SourceText("POSTPRO.DAT", text), sink, dimension);
   ASSERT_FALSE(sink.items().empty());
@@ -112,16 +111,62 @@ TEST(PostproParser, DimensionDecidesTheSectorsArgument) {
   EXPECT_TRUE(parse_postpro(SourceText("P", text), s3, 3).commands[0].arguments.empty());
 }
 
-TEST(PostproBroken, UnknownCommand) { expect_diagnostic("BODY TRAKING\nSTEP 1\nEND\n", "L1001", 1, 1); }
-TEST(PostproBroken, BlankLine) { expect_diagnostic("\nEND\n", "L1013", 1, 1); }
-TEST(PostproBroken, MissingStepLine) { expect_diagnostic("SOLVER INFORMATIONS\nEND\n", "L1013", 2, 1); }
-TEST(PostproBroken, StepWithoutPeriod) { expect_diagnostic("SOLVER INFORMATIONS\nSTEP\nEND\n", "L1015", 2, 5); }
-TEST(PostproBroken, MissingEnd) { expect_diagnostic("SOLVER INFORMATIONS\nSTEP 1\n", "L1012", 2, 7); }
-TEST(PostproBroken, BodyListCutShort) { expect_diagnostic("BODY TRACKING\nSTEP 1\n3\n1\n", "L1006", 4, 2); }
-TEST(PostproBroken, MalformedBodyNumber) { expect_diagnostic("BODY TRACKING\nSTEP 1\n1\n5x\nEND\n", "L1004", 4, 1); }
-TEST(PostproBroken, CommandOfTheOtherDimension) { expect_diagnostic("#\nTRIAXIAL COMPACITY\nSTEP 1\nEND\n", "L1001", 2, 1, 2); }
-TEST(PostproBroken, ZeroPeriod) { expect_diagnostic("KINETIC ENERGY\nSTEP   0\nEND\n", "L1003", 2, 8); }
-TEST(PostproBroken, MalformedPeriod) { expect_diagnostic("KINETIC ENERGY\nSTEP x1\nEND\n", "L1004", 2, 6); }
+TEST(PostproBroken, UnknownCommand) {
+  expect_diagnostic("BODY TRAKING\nSTEP 1\nEND\n", "L1001", 1, 1);
+}
+// LMGC90 stops at an unknown command: its STEP and argument lines are skipped up to the next
+// command, not reported one by one.
+TEST(PostproBroken, UnknownCommandSkipsItsArguments) {
+  std::string t = kFile;
+  t.replace(t.find("BODY TRACKING "), 14, "BODY TRAKING  ");
+  DiagnosticSink sink;
+  const PostproFile f = parse_postpro(SourceText("POSTPRO.DAT", t), sink, 2);
+  ASSERT_EQ(sink.items().size(), 1u);
+  EXPECT_EQ(sink.items()[0].code, "L1001");
+  EXPECT_EQ(sink.items()[0].where.span.line, 2u);
+  ASSERT_EQ(f.commands.size(), 1u);
+  EXPECT_EQ(f.commands[0].name.value, "SOLVER INFORMATIONS");
+}
+// An I7 argument is columns 1-7 of its line: a longer number is read cut, and said so.
+TEST(PostproBroken, BodyNumberSpillsOutOfI7) {
+  std::string t = kFile;
+  t.replace(t.find("1025    "), 8, "10250000");
+  DiagnosticSink sink;
+  const PostproFile f = parse_postpro(SourceText("POSTPRO.DAT", t), sink, 2);
+  ASSERT_EQ(sink.items().size(), 1u);
+  EXPECT_EQ(sink.items()[0].code, "L1011");
+  EXPECT_EQ(sink.items()[0].severity, Severity::warning);
+  EXPECT_EQ(sink.items()[0].where.span.line, 6u);
+  EXPECT_EQ(sink.items()[0].where.span.column, 1u);
+  EXPECT_EQ(f.commands[0].arguments[2].integers[0].value, 1025000);
+}
+TEST(PostproBroken, BlankLine) {
+  expect_diagnostic("\nEND\n", "L1013", 1, 1);
+}
+TEST(PostproBroken, MissingStepLine) {
+  expect_diagnostic("SOLVER INFORMATIONS\nEND\n", "L1013", 2, 1);
+}
+TEST(PostproBroken, StepWithoutPeriod) {
+  expect_diagnostic("SOLVER INFORMATIONS\nSTEP\nEND\n", "L1015", 2, 5);
+}
+TEST(PostproBroken, MissingEnd) {
+  expect_diagnostic("SOLVER INFORMATIONS\nSTEP 1\n", "L1012", 2, 7);
+}
+TEST(PostproBroken, BodyListCutShort) {
+  expect_diagnostic("BODY TRACKING\nSTEP 1\n3\n1\n", "L1006", 4, 2);
+}
+TEST(PostproBroken, MalformedBodyNumber) {
+  expect_diagnostic("BODY TRACKING\nSTEP 1\n1\n5x\nEND\n", "L1004", 4, 1);
+}
+TEST(PostproBroken, CommandOfTheOtherDimension) {
+  expect_diagnostic("#\nTRIAXIAL COMPACITY\nSTEP 1\nEND\n", "L1001", 2, 1, 2);
+}
+TEST(PostproBroken, ZeroPeriod) {
+  expect_diagnostic("KINETIC ENERGY\nSTEP   0\nEND\n", "L1003", 2, 8);
+}
+TEST(PostproBroken, MalformedPeriod) {
+  expect_diagnostic("KINETIC ENERGY\nSTEP x1\nEND\n", "L1004", 2, 6);
+}
 TEST(PostproBroken, UnknownCompacityModel) {
   expect_diagnostic("COMPACITY EVOLUTION\nSTEP 1\nMAT01\nDENSE SAMPLE\nEND\n", "L1017", 4, 1);
 }
