@@ -30,7 +30,7 @@ CardReader::CardReader(const SourceText& source, DiagnosticSink& sink) : source_
   skip_insignificant();
 }
 
-bool CardReader::check_records() {
+bool CardReader::check_records(Empty empty) {
   bool any = false;
   for (const Line& line : source_.lines()) {
     const std::string_view text = line.text;
@@ -65,7 +65,7 @@ bool CardReader::check_records() {
     }
     if (!any && !is_skipped_line(text)) any = true;
   }
-  if (!any) {
+  if (!any && empty == Empty::error) {
     sink_.report("L1009", Location{source_.path(), SourceSpan{}},
                  source_.lines().empty() ? "file is empty" : "file holds only comments and blank lines");
   }

@@ -30,8 +30,10 @@ class CardReader {
   DiagnosticSink& sink() { return sink_; }
 
   // Record-level checks, once per file: non-ASCII bytes, text past column 180, empty file.
-  // Returns false when the file holds no significant line (after reporting L1009).
-  bool check_records();
+  // Returns false when the file holds no significant line (after reporting L1009, unless the
+  // file kind may be empty: LMGC90 reads a DRV_DOF.DAT without any body as "nothing driven").
+  enum class Empty { error, allowed };
+  bool check_records(Empty empty = Empty::error);
 
   // Cursor over significant lines (comments and blanks skipped).
   bool at_end() const;

@@ -52,7 +52,7 @@ class DrvDofParser {
 
   DrvDofFile run() {
     DrvDofFile file;
-    if (!reader_.check_records()) return file;
+    if (!reader_.check_records(CardReader::Empty::allowed)) return file;
     // Bounded: every iteration consumes at least one line.
     while (!reader_.at_end()) {
       const Line& line = reader_.peek();
