@@ -89,37 +89,49 @@ ContactStatus wet_status(ContactStatus s) {
   }
 }
 
-// The law's reaction (correction included) for the local free velocity ufree_loc.
-inline void local_solve(const HotContact2D& c, double uft, double ufn, double& rt, double& rn, ContactStatus& status) {
+// The cohesive-zone reaction (contact-laws.md §3.5): with A = (I − WW K)⁻¹ the auxiliary
+// problem is uu = A (v + WW radh) + A WW rr, solved for rr; then r = rr + radh + K uu.
+// Out of line: rare, and its 2×2 inverse would bloat the sweep's hot loop.
+[[gnu::noinline]] void cohesive_solve(const HotContact2D& c, double vt, double vn, double& rt, double& rn,
+                                      ContactStatus& status) {
+  Matrix2d WW;
+  WW << c.wwtt, c.wtn, c.wtn, c.wwnn;
+  Matrix2d M = Matrix2d::Identity();
+  M(0, 0) -= c.wwtt * c.kt;
+  M(0, 1) -= c.wtn * c.kn;
+  M(1, 0) -= c.wtn * c.kt;
+  M(1, 1) -= c.wwnn * c.kn;
+  const Matrix2d A = M.inverse();
+  const Vector2d shifted = Vector2d(vt, vn) + WW * Vector2d(c.radh_t, 0.0);
+  const Vector2d uf = A * shifted;
+  const Matrix2d Wp = A * WW;
+  const LocalSolution2D s = solve_signorini_coulomb_2d(Wp, uf, c.mu);
+  const Vector2d uu = uf + Wp * s.r;
+  rt = s.r(0) + c.radh_t + c.kt * uu(0);
+  rn = s.r(1) + c.kn * uu(1);
+  status = cohesive_status(s.status);
+  if (s.status == ContactStatus::noctc && rn != 0.0) status = ContactStatus::Cstck;
+}
+
+// Bilateral glue: WW r = -v.
+[[gnu::noinline]] void glued_solve(const HotContact2D& c, double vt, double vn, double& rt, double& rn,
+                                   ContactStatus& status) {
+  const double det = c.wwtt * c.wwnn - c.wtn * c.wtn;
+  rt = -(c.wwnn * vt - c.wtn * vn) / det;
+  rn = -(-c.wtn * vt + c.wwtt * vn) / det;
+  status = ContactStatus::stick;
+}
+
+// The law's reaction (correction included) for the local free velocity ufree_loc. The plain
+// Signorini–Coulomb path, taken by almost every contact, is inlined in the sweep.
+[[gnu::always_inline]] inline void local_solve(const HotContact2D& c, double uft, double ufn, double& rt, double& rn, ContactStatus& status) {
   const double vt = uft + c.cov_t, vn = ufn + c.cov_n;
-  if (c.glued) {
-    // Bilateral glue: WW r = -v.
-    const double det = c.wwtt * c.wwnn - c.wtn * c.wtn;
-    rt = -(c.wwnn * vt - c.wtn * vn) / det;
-    rn = -(-c.wtn * vt + c.wwtt * vn) / det;
-    status = ContactStatus::stick;
+  if (c.glued) [[unlikely]] {
+    glued_solve(c, vt, vn, rt, rn, status);
     return;
   }
-  if (c.cohesive) {
-    // Cohesive zone (contact-laws.md §3.5): with A = (I − WW K)⁻¹ the auxiliary problem is
-    // uu = A (v + WW radh) + A WW rr, solved for rr; then r = rr + radh + K uu.
-    Matrix2d WW;
-    WW << c.wwtt, c.wtn, c.wtn, c.wwnn;
-    Matrix2d M = Matrix2d::Identity();
-    M(0, 0) -= c.wwtt * c.kt;
-    M(0, 1) -= c.wtn * c.kn;
-    M(1, 0) -= c.wtn * c.kt;
-    M(1, 1) -= c.wwnn * c.kn;
-    const Matrix2d A = M.inverse();
-    const Vector2d shifted = Vector2d(vt, vn) + WW * Vector2d(c.radh_t, 0.0);
-    const Vector2d uf = A * shifted;
-    const Matrix2d Wp = A * WW;
-    const LocalSolution2D s = solve_signorini_coulomb_2d(Wp, uf, c.mu);
-    const Vector2d uu = uf + Wp * s.r;
-    rt = s.r(0) + c.radh_t + c.kt * uu(0);
-    rn = s.r(1) + c.kn * uu(1);
-    status = cohesive_status(s.status);
-    if (s.status == ContactStatus::noctc && rn != 0.0) status = ContactStatus::Cstck;
+  if (c.cohesive) [[unlikely]] {
+    cohesive_solve(c, vt, vn, rt, rn, status);
     return;
   }
   ContactStatus plain = ContactStatus::noctc;
