@@ -1,0 +1,113 @@
+#!/usr/bin/python3
+"""Speed and achieved error of lmgc-solve on LMGC90's RIGID_2D examples, against LMGC90's own run.
+
+For every example with reference_lmgc90/RUN.md: runs lmgc-solve (release build) with the parameters
+of the example's command.py (as RUN.md records them) for the number of steps LMGC90 ran (or
+--steps-cap), then reads OUTBOX/run_report.csv and prints one markdown table row: seconds per step,
+NLGS sweep rate (contact updates per second = sum(iterations x contacts) / NLGS time), mean NLGS
+iterations, steps that hit the iteration cap, and the achieved natural-map residual / |q| (median
+and worst over the steps with contacts), next to LMGC90's seconds per step, sweep rate and
+unconverged steps from RUN.md. Single thread.
+
+Usage: bench/rigid_2d_examples.py [--build build/release] [--steps-cap N] [--only NAME] [--out FILE]
+       [--extra "--residual-target 1e-6"]
+"""
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+EXAMPLES = os.environ.get("LMGC_SHARED_DIR", os.path.join(os.path.dirname(ROOT), "shared"))
+EXAMPLES = os.path.join(EXAMPLES, "lmgc90-examples", "RIGID_2D")
+
+
+def run_md(case):
+    text = open(os.path.join(case, "reference_lmgc90", "RUN.md")).read()
+    params = dict(re.findall(r"`(\w+) = ([^`]+)`", text.split("script parameters", 1)[1].split("\n", 1)[0]))
+    params = {k: v.strip("'").strip() for k, v in params.items()}
+
+    def row(label):
+        m = re.search(r"^\| " + re.escape(label) + r"[^|]*\| (.+?) \|$", text, re.M)
+        return m.group(1) if m else ""
+
+    steps = int(row("steps run").split()[0])
+    per_step = float(row("wall time per step").split()[0])
+    rate = re.search(r"= ([0-9.e+]+) updates/s", text)
+    unconverged = re.search(r"\| (\d+) of (\d+) steps with contacts", text)
+    return params, steps, per_step, float(rate.group(1)) if rate else float("nan"), (
+        f"{unconverged.group(1)}/{unconverged.group(2)}" if unconverged else "")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--build", default=os.path.join(ROOT, "build", "release"))
+    parser.add_argument("--steps-cap", type=int, default=None)
+    parser.add_argument("--only", default=None)
+    parser.add_argument("--out", default=None)
+    parser.add_argument("--extra", default="", help="extra lmgc-solve flags")
+    args = parser.parse_args()
+    solve = os.path.join(args.build, "tools", "lmgc-solve")
+    if not os.path.isdir(EXAMPLES):
+        print(f"no examples at {EXAMPLES}", file=sys.stderr)
+        return 2
+    header = ("| example | steps | lmgc s/step | LMGC90 s/step | speed-up | lmgc updates/s | LMGC90 updates/s "
+              "| mean iterations | capped steps (lmgc / LMGC90) | residual/‖q‖ median | worst |")
+    lines = [header, "|" + "---|" * header.count("|")[:-1] if False else "|" + "---|" * (header.count("|") - 1)]
+    for name in sorted(os.listdir(EXAMPLES)):
+        case = os.path.join(EXAMPLES, name)
+        if args.only and name != args.only:
+            continue
+        if not os.path.exists(os.path.join(case, "reference_lmgc90", "RUN.md")):
+            continue
+        params, steps, lmgc90_per_step, lmgc90_rate, lmgc90_capped = run_md(case)
+        if args.steps_cap:
+            steps = min(steps, args.steps_cap)
+        work = tempfile.mkdtemp(prefix="lmgc_bench_")
+        shutil.copytree(os.path.join(case, "DATBOX"), os.path.join(work, "DATBOX"))
+        os.remove(os.path.join(work, "DATBOX", "COMMAND.DAT")) if os.path.exists(
+            os.path.join(work, "DATBOX", "COMMAND.DAT")) else None
+        command = [solve, work, "--quiet", "--steps", str(steps), "--write-every", "0"]
+        for key, flag in (("dt", "--dt"), ("theta", "--theta"), ("tol", "--tol"), ("relax", "--relax"),
+                          ("gs_it1", "--gs-it1"), ("gs_it2", "--gs-it2"), ("norm", "--norm"),
+                          ("solver_type", "--solver"), ("lx", "--xperiod")):
+            if key in params:
+                command += [flag, params[key]]
+        if name == "BouncingBallsDK":
+            command += ["--ymin-boundary", "0"]
+        command += args.extra.split()
+        start = time.perf_counter()
+        subprocess.run(command, check=True)
+        wall = time.perf_counter() - start
+        report = np.genfromtxt(os.path.join(work, "OUTBOX", "run_report.csv"), delimiter=",", names=True)
+        shutil.rmtree(work)
+        contacts, iterations = report["contacts"], report["iterations"]
+        with_contacts = contacts > 0
+        per_step = report["step_seconds"].mean()
+        nlgs = report["nlgs_seconds"].sum()
+        rate = (iterations * contacts).sum() / nlgs if nlgs > 0 else float("nan")
+        capped = int(((report["converged"] == 0) & with_contacts).sum())
+        residual = report["residual_natural_map_over_q"][with_contacts]
+        median = np.median(residual) if residual.size else 0.0
+        worst = residual.max() if residual.size else 0.0
+        lines.append(
+            f"| {name} | {steps} | {per_step:.3g} | {lmgc90_per_step:.3g} | {lmgc90_per_step / per_step:.1f}x "
+            f"| {rate:.3g} | {lmgc90_rate:.3g} | {iterations[with_contacts].mean() if with_contacts.any() else 0:.0f} "
+            f"| {capped}/{int(with_contacts.sum())} / {lmgc90_capped} | {median:.2e} | {worst:.2e} |")
+        print(lines[-1], f"(wall {wall:.1f} s)", file=sys.stderr)
+    text = "\n".join(lines) + "\n"
+    print(text)
+    if args.out:
+        with open(args.out, "w") as f:
+            f.write(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
