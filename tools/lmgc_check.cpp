@@ -1,15 +1,17 @@
-// lmgc-check: reads a case folder like a compiler reads a program, and reports every problem with
-// its file, line and column. Exit: 0 no error, 1 errors in the data, 2 usage error or unreadable
-// folder.
+// lmgc-check: reads a case folder like a compiler reads a program (syntax of every file, then the
+// semantic checks of validate/checks.hpp), and reports every problem with its file, line and
+// column. Exit: 0 no error, 1 errors in the data, 2 usage error or unreadable folder.
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
-#include <unistd.h>
 
 #include "grammar/common/diagnostic_catalogue.hpp"
 #include "grammar/common/output_file.hpp"
 #include "validate/case_files.hpp"
+#include "validate/checks.hpp"
 #include "validate/render.hpp"
 
 namespace {
@@ -24,7 +26,8 @@ int explain(const std::string& code) {
     std::cerr << "lmgc-check: unknown diagnostic code '" << code << "'\n";
     return kExitUsage;
   }
-  std::cout << kind->code << " (" << lmgc::grammar::severity_name(kind->severity) << "): " << kind->summary << "\n\n"
+  std::cout << kind->code << " (" << lmgc::grammar::severity_name(kind->severity) << "): " << kind->summary
+            << "\n\n"
             << kind->explanation << "\n";
   return kExitOk;
 }
@@ -37,8 +40,10 @@ int main(int argc, char** argv) {
   std::string explain_code;
   bool echo = false, json = false, quiet = false, werror = false, no_color = false;
   app.add_option("CASE_DIR", case_dir, "case folder holding DATBOX/");
-  app.add_flag("--echo", echo, "also write the echo files LMGC90 writes when it reads the case (OUTBOX/*.OUT)");
-  app.add_flag("--json", json, "print the diagnostics as one JSON array on standard output (schema: docs/diagnostics.md)");
+  app.add_flag("--echo", echo,
+               "also write the echo files LMGC90 writes when it reads the case (OUTBOX/*.OUT)");
+  app.add_flag("--json", json,
+               "print the diagnostics as one JSON array on standard output (schema: docs/diagnostics.md)");
   app.add_flag("-q,--quiet", quiet, "print only errors and the summary");
   app.add_flag("--werror", werror, "treat warnings as errors (exit code 1)");
   app.add_flag("--no-color", no_color, "never color the output (NO_COLOR in the environment does the same)");
@@ -58,15 +63,20 @@ int main(int argc, char** argv) {
 
   lmgc::grammar::DiagnosticSink sink(5000);
   auto files = lmgc::validate::load_case(case_dir, sink);
+  // Semantic checks (references, consistency, physics) run on whatever could be read: a file
+  // with syntax errors still gets its cross references checked.
+  if (files) lmgc::validate::check_case(*files, sink);
 
   // Echo files are written only from a case that read without error, and never into DATBOX/.
   if (files && echo && !sink.has_errors()) {
     for (const auto& output : lmgc::validate::echo_files(*files)) {
       std::string error;
-      if (!lmgc::grammar::write_file_whole(std::filesystem::path(case_dir) / output.relative_path, output.content,
-                                                 error))
-        sink.report("L9003", lmgc::grammar::Location{(std::filesystem::path(case_dir) / output.relative_path).string(), {}},
-                    error);
+      if (!lmgc::grammar::write_file_whole(std::filesystem::path(case_dir) / output.relative_path,
+                                           output.content, error))
+        sink.report(
+            "L9003",
+            lmgc::grammar::Location{(std::filesystem::path(case_dir) / output.relative_path).string(), {}},
+            error);
     }
   }
 

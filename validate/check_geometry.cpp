@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 
+#include "validate/case_index.hpp"
 #include "validate/checks.hpp"
 
 namespace lmgc::validate {
@@ -19,19 +20,20 @@ using grammar::Real;
 struct Reporter {
   grammar::DiagnosticSink& sink;
   std::string file;
-  void operator()(std::string_view code, grammar::SourceSpan span, std::string message, std::string hint = {}) {
+  void operator()(std::string_view code, grammar::SourceSpan span, std::string message,
+                  std::string hint = {}) {
     sink.report(code, grammar::Location{file, span}, std::move(message), std::move(hint));
   }
 };
 
-std::string body_name(const Body& body, std::size_t rank) {
-  return fmt::format("{} {}", grammar::body_type_keyword(body.type), rank);
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return a.x() * b.y() - a.y() * b.x();
 }
 
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-bool segments_cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c, const Eigen::Vector2d& d) {
-  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a), d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+bool segments_cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                    const Eigen::Vector2d& d) {
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a), d3 = cross(d - c, a - c),
+               d4 = cross(d - c, b - c);
   return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
 }
 
@@ -40,7 +42,8 @@ void check_polygon(const Contactor& c, const std::string& owner, Reporter& repor
   std::vector<Eigen::Vector2d> v;
   for (const auto& p : c.vertices) v.emplace_back(p[0].value, p[1].value);
   if (n < 3) {
-    report("L3009", c.type.span, fmt::format("polygon of {} has {} vertices; at least 3 are needed", owner, n));
+    report("L3009", c.type.span,
+           fmt::format("polygon of {} has {} vertices; at least 3 are needed", owner, n));
     return;
   }
   double area2 = 0.0;
@@ -61,21 +64,24 @@ void check_polygon(const Contactor& c, const std::string& owner, Reporter& repor
   if (std::fabs(area2) <= 1e-12 * scale * scale) {
     report("L3009", c.type.span, fmt::format("polygon of {} is degenerate (zero area)", owner));
   } else if (area2 < 0.0) {
-    report("L3009", c.type.span,
-           fmt::format("polygon of {} is clockwise; LMGC90 requires counter-clockwise vertices (it stops on a "
-                       "negative area)",
-                       owner),
-           "list the vertices in the reverse order");
+    report(
+        "L3009", c.type.span,
+        fmt::format("polygon of {} is clockwise; LMGC90 requires counter-clockwise vertices (it stops on a "
+                    "negative area)",
+                    owner),
+        "list the vertices in the reverse order");
   }
 }
 
+// LMGC90 orients the faces of a POLYR itself (set_orientation_surface_T3) and turns them all
+// over when the volume comes out negative (mod_DiscreteGeometry.f90), so the order of a face's
+// vertices does not matter; what it cannot repair is a surface that is not closed (an edge not
+// shared by exactly two faces), a degenerate face or a face naming a missing vertex.
 void check_polyhedron(const Contactor& c, const std::string& owner, Reporter& report) {
   const std::size_t nv = c.vertices.size();
   std::vector<Eigen::Vector3d> v;
   for (const auto& p : c.vertices) v.emplace_back(p[0].value, p[1].value, p[2].value);
-  // Every edge of a closed, consistently oriented surface appears once in each direction.
-  std::map<std::pair<std::int64_t, std::int64_t>, int> edges;
-  double volume6 = 0.0;
+  std::map<std::pair<std::int64_t, std::int64_t>, int> edges;  // undirected: (smaller, larger)
   for (const auto& f : c.faces) {
     std::array<std::int64_t, 3> id{f[0].value, f[1].value, f[2].value};
     bool valid = true;
@@ -89,25 +95,24 @@ void check_polyhedron(const Contactor& c, const std::string& owner, Reporter& re
     const Eigen::Vector3d& b = v[static_cast<std::size_t>(id[1] - 1)];
     const Eigen::Vector3d& d = v[static_cast<std::size_t>(id[2] - 1)];
     if ((b - a).cross(d - a).norm() <= 1e-14 * std::max(1.0, (b - a).squaredNorm())) {
-      report("L3010", f[0].span, fmt::format("face ({}, {}, {}) of {} has zero area", id[0], id[1], id[2], owner));
+      report("L3010", f[0].span,
+             fmt::format("face ({}, {}, {}) of {} has zero area", id[0], id[1], id[2], owner));
       return;
     }
-    volume6 += a.dot(b.cross(d));
-    for (int k = 0; k < 3; ++k) ++edges[{id[static_cast<std::size_t>(k)], id[static_cast<std::size_t>((k + 1) % 3)]}];
+    for (int k = 0; k < 3; ++k) {
+      const std::int64_t p = id[static_cast<std::size_t>(k)], q = id[static_cast<std::size_t>((k + 1) % 3)];
+      ++edges[{std::min(p, q), std::max(p, q)}];
+    }
   }
   for (const auto& [edge, count] : edges) {
-    const auto reverse = edges.find({edge.second, edge.first});
-    if (count != 1 || reverse == edges.end() || reverse->second != 1) {
-      report("L3010", c.type.span,
-             fmt::format("polyhedron of {} is not closed with consistent faces (edge {}-{})", owner, edge.first,
-                         edge.second));
+    if (count != 2) {
+      report(
+          "L3010", c.type.span,
+          fmt::format("polyhedron of {} is not a closed surface: edge {}-{} belongs to {} face{} (2 needed)",
+                      owner, edge.first, edge.second, count, count == 1 ? "" : "s"));
       return;
     }
   }
-  if (volume6 <= 0.0)
-    report("L3010", c.type.span,
-           fmt::format("polyhedron of {} has inward faces (negative volume); LMGC90 stops on it", owner),
-           "order every face's vertices counter-clockwise seen from outside");
 }
 
 // Jacobian of linear elements at their nodes: the signed area (2D) or volume (3D).
@@ -149,7 +154,8 @@ void check_element(const Body& body, const grammar::Element& e, const std::strin
     }
     if ((p[1] - p[0]).cross(p[2] - p[0]).dot(p[3] - p[0]) <= 0.0)
       report("L3011", e.type.span,
-             fmt::format("element TE4xx {} of {} has a non-positive Jacobian", &e - body.elements.data() + 1, owner));
+             fmt::format("element TE4xx {} of {} has a non-positive Jacobian", &e - body.elements.data() + 1,
+                         owner));
   }
 }
 
@@ -164,16 +170,18 @@ void check_geometry(const CaseFiles& files, grammar::DiagnosticSink& sink) {
     for (const Contactor& c : body.contactors) {
       const std::string& type = c.type.value;
       // Sizes: radius, half lengths and heights must be positive.
-      const bool sized = type == "DISKx" || type == "DISKb" || type == "xKSID" || type == "DISPx" || type == "xPSID" ||
-                         type == "SPHER" || type == "SPHEb" || type == "JONCx" || type == "CYLND" || type == "DNLYC" ||
-                         type == "PLANx";
+      const bool sized = type == "DISKx" || type == "DISKb" || type == "xKSID" || type == "DISPx" ||
+                         type == "xPSID" || type == "SPHER" || type == "SPHEb" || type == "JONCx" ||
+                         type == "CYLND" || type == "DNLYC" || type == "PLANx";
       if (sized) {
-        const std::size_t count = type == "JONCx" || type == "CYLND" || type == "DNLYC" ? 2 : type == "PLANx" ? 3 : 1;
+        const std::size_t count = type == "JONCx" || type == "CYLND" || type == "DNLYC" ? 2
+                                  : type == "PLANx"                                     ? 3
+                                                                                        : 1;
         for (std::size_t k = 0; k < count && k < c.values.size(); ++k)
           if (!(c.values[k].value > 0.0))
             report("L3001", c.values[k].span,
-                   fmt::format("{} size of contactor {} of {} is {}; it must be > 0", type, &c - body.contactors.data() + 1,
-                               owner, c.values[k].value));
+                   fmt::format("{} size of contactor {} of {} is {}; it must be > 0", type,
+                               &c - body.contactors.data() + 1, owner, c.values[k].value));
       }
       if (type == "POLYG") check_polygon(c, owner, report);
       if (type == "POLYR") check_polyhedron(c, owner, report);
@@ -181,9 +189,11 @@ void check_geometry(const CaseFiles& files, grammar::DiagnosticSink& sink) {
     if (body.rigid_bulk) {
       const auto& b = *body.rigid_bulk;
       if (b.avrd.value < 0.0)
-        report("L3001", b.avrd.span, fmt::format("avrd of {} is {}; it must be >= 0 (0: computed)", owner, b.avrd.value));
+        report("L3001", b.avrd.span,
+               fmt::format("avrd of {} is {}; it must be >= 0 (0: computed)", owner, b.avrd.value));
       if (b.gyrd.value < 0.0)
-        report("L3001", b.gyrd.span, fmt::format("gyrd of {} is {}; it must be >= 0 (0: computed)", owner, b.gyrd.value));
+        report("L3001", b.gyrd.span,
+               fmt::format("gyrd of {} is {}; it must be >= 0 (0: computed)", owner, b.gyrd.value));
     }
     for (const auto& e : body.elements) check_element(body, e, owner, report);
   }

@@ -1,18 +1,35 @@
 #pragma once
 // Semantic checks of a loaded case: cross references between files, consistency, physical sanity.
-// Each check emits diagnostics with a stable code (grammar/common/diagnostic_catalogue.cpp).
+// Each check emits diagnostics with a stable code (grammar/common/diagnostic_catalogue.cpp);
+// docs/diagnostics.md lists them with an example.
 #include "grammar/common/diagnostic.hpp"
 #include "validate/case_files.hpp"
 
 namespace lmgc::validate {
 
+// Every check below, in this order.
 void check_case(const CaseFiles& files, grammar::DiagnosticSink& sink);
 
 // The families, callable one by one (tests).
+// L2001-L2006, L2008, L2012, L2017: names a file gives to bodies, behaviours, models, laws, nodes.
 void check_references(const CaseFiles& files, grammar::DiagnosticSink& sink);
+// L2003, L2006, L2007: bodies, elements, contactors and nodes named by the state files
+// (Vloc_Rloc.INI, GPV.INI) and POSTPRO.DAT.
+void check_state_references(const CaseFiles& files, grammar::DiagnosticSink& sink);
+// L2009, L2013, L2016, L2018-L2020: dimensions, element/model/law compatibility, evolution files.
+void check_consistency(const CaseFiles& files, grammar::DiagnosticSink& sink);
+// L3001, L3009-L3011: contactor sizes, polygons, polyhedra, element Jacobians.
 void check_geometry(const CaseFiles& files, grammar::DiagnosticSink& sink);
+// L3002-L3004, L3014: densities, elastic constants, loading.
+void check_materials(const CaseFiles& files, grammar::DiagnosticSink& sink);
+// L3003, L3005-L3007, L3016: contact law parameters and alert distances.
 void check_contact_laws(const CaseFiles& files, grammar::DiagnosticSink& sink);
+// L2010, L2011, L2014, L2015, L3008: the visibility table against the contactors present.
 void check_visibility(const CaseFiles& files, grammar::DiagnosticSink& sink);
+// L3012: rigid contactors overlapping at the start.
+void check_interpenetration(const CaseFiles& files, grammar::DiagnosticSink& sink);
+// L3013: COMMAND.DAT's time step against the fastest time scales of the case.
+void check_time_step(const CaseFiles& files, grammar::DiagnosticSink& sink);
 
 // Path of a DATBOX file of the case, as used in diagnostics.
 std::string datbox_path(const CaseFiles& files, const std::string& name);

@@ -86,17 +86,30 @@ constexpr std::array kCatalogue = {
     DiagnosticKind{"L2002", error, "unknown contact law",
                    "A '$seety' row names a law nickname that TACT_BEHAV.DAT does not define."},
     DiagnosticKind{"L2003", error, "unknown body",
-                   "A body number in DRV_DOF.DAT, DOF.INI, Vloc_Rloc.INI, GPV.INI or POSTPRO.DAT does not "
-                   "exist among the bodies of that type in BODIES.DAT."},
+                   "A body number in DRV_DOF.DAT, DOF.INI, GPV.INI or POSTPRO.DAT does not exist among the "
+                   "bodies of that type in BODIES.DAT (bodies are numbered by order within their type). "
+                   "Vloc_Rloc.INI is reported by L2007."},
     DiagnosticKind{"L2004", error, "unknown model",
                    "A MAILx element names a model that MODELS.DAT does not define."},
     DiagnosticKind{"L2005", error, "unknown element node",
                    "An element connectivity or a MAILx contactor names a node number that its body does "
                    "not have."},
     DiagnosticKind{"L2006", error, "unknown node",
-                   "DRV_DOF.DAT, DOF.INI or GPV.INI names a node (or element) that the body does not have."},
+                   "DRV_DOF.DAT, DOF.INI or POSTPRO.DAT names a node that the body does not have, or GPV.INI "
+                   "names an element that the body does not have (or of another type)."},
+    DiagnosticKind{
+        "L2007", warning, "initial interaction names a missing contactor",
+        "An interaction of Vloc_Rloc.INI names a body that does not exist, a contactor number that "
+        "its body does not have, or a contactor of another type. LMGC90's read_ini_Vloc_Rloc finds "
+        "no contactor to attach it to and skips it silently: its initial reaction and internal "
+        "variables are lost."},
     DiagnosticKind{"L2008", error, "unknown dof",
                    "A driven dof number is larger than the number of dofs of its node (NO3xx has 3)."},
+    DiagnosticKind{"L2009", error, "element incompatible with its model",
+                   "A MAILx element names a model whose finite element is for another element shape or node "
+                   "count (a T3xxx model on a Q4xxx element). LMGC90 takes the element of the model and the "
+                   "connectivity of the body, and computes with mismatched arrays. Q4P0x is a Q4xxx, Q8Rxx a "
+                   "Q8xxx, H20Rx a H20xx, SHB6x a PRI6x."},
     DiagnosticKind{"L2010", warning, "visibility row never matches",
                    "No contactor of the type and colour named by a '$seety' row exists, so the row never "
                    "creates a contact. Often a misspelt colour."},
@@ -104,7 +117,15 @@ constexpr std::array kCatalogue = {
                    "Contactors of this type and colour appear in no '$seety' row: they never touch "
                    "anything. Intended for decorations, a mistake otherwise."},
     DiagnosticKind{"L2012", warning, "duplicate definition",
-                   "A nickname (law, bulk behaviour, model) is defined twice; LMGC90 uses the first."},
+                   "A nickname (contact law, bulk behaviour, model) is defined twice, and LMGC90 uses the "
+                   "first; or a dof of DRV_DOF.DAT is driven twice, or DOF.INI gives a body's initial state "
+                   "twice."},
+    DiagnosticKind{"L2013", error, "dimension mismatch",
+                   "A body, node, element or contactor belongs to the other dimension than the case: LMGC90 "
+                   "runs in 2D (RBDY2 bodies, NO2xx nodes, T3xxx/Q4xxx elements, CLxxx/ALpxx contactors) or "
+                   "in 3D (RBDY3 bodies, NO3xx MAILx nodes, H8xxx/TE4xx elements, CSpxx/ASpxx contactors), "
+                   "never both; the case's dimension is set by its first rigid body, else by its MAILx "
+                   "nodes."},
     DiagnosticKind{"L2014", warning, "no interaction for this pair",
                    "LMGC90 has no interaction module for this candidate/antagonist contactor pair in this "
                    "order (for instance JONCx as candidate of a DISKx). The row creates no contact."},
@@ -112,12 +133,55 @@ constexpr std::array kCatalogue = {
                    "Two '$seety' rows give different laws to the same pair of contactor classes (in either "
                    "order); LMGC90 stops on this."},
     // L3xxx — physical sanity.
-    DiagnosticKind{"L3001", error, "non-positive size",
-                   "A radius, half length, half thickness or height of a contactor is zero or negative, or an "
-                   "avrd/gyrd is negative."},
-    DiagnosticKind{"L3003", error, "non-positive stiffness",
-                   "A stiffness-like parameter (Young's modulus, a spring stiffness of a contact law) is "
-                   "zero or negative."},
+    DiagnosticKind{"L2016", error, "evolution times not increasing",
+                   "An evolution file named by DRV_DOF.DAT has a time that is not after the time before it. "
+                   "LMGC90 stops on two equal consecutive times, and its interpolation assumes increasing "
+                   "times."},
+    DiagnosticKind{"L2017", note, "body number is not its rank",
+                   "LMGC90 numbers the bodies of BODIES.DAT by order of appearance within their type and "
+                   "never reads the number written after the type. DRV_DOF.DAT, DOF.INI, Vloc_Rloc.INI, "
+                   "GPV.INI and POSTPRO.DAT name bodies by that rank, so a body written with another number "
+                   "is easily driven or tracked by mistake. Said once per body type, at the first mismatch."},
+    DiagnosticKind{
+        "L2018", error, "contact law not usable for this interaction",
+        "A '$seety' row gives a law that LMGC90's NLGS cannot apply to the row's interaction in the "
+        "case's dimension: the law has no variant in this dimension ('Unsupported nbDIME'), or "
+        "prep_nlgs stops with 'not implemented for this contact element' (cohesive zone laws need "
+        "a contact length or surface: in 2D MAC_CZM and the gap CZMs work with CLALp, CLJCx, "
+        "PLALp, DKALp, IQS_MAC_CZM and the IQS CZMs with DKDKx, DKJCx, PLPLx, PLJCx, DKDKL; in 3D "
+        "the gap CZMs with CSASp, CSPRx, PRASp, the IQS CZMs with rigid contactors; NARD_ROD only "
+        "with PTPT2/PTPT3)."},
+    DiagnosticKind{
+        "L2019", error, "invalid model options",
+        "A model of MODELS.DAT lacks an option, or has a value, that LMGC90 stops on when it sets up "
+        "its models (init_models): 'isext' is "
+        "mandatory; with 'isext no___' (LMGC90's own elements) a mechanical model needs 'kine_' "
+        "small or large, 'kine_ large' needs 'form_ UpdtL' (MULTI has no large deformations), and a "
+        "THERM model needs 'form_' class or discr. Other 'isext' values hand the model to an external "
+        "library, which checks its own options."},
+    DiagnosticKind{
+        "L2020", error, "bulk behaviour lacks what its user needs",
+        "A bulk behaviour is used where it cannot work: a rigid body whose behaviour has no density "
+        "(DISCRETE, JOINT_*), a mechanical model whose behaviour has no ELAS block (Young's modulus, "
+        "Poisson ratio), a J2 plasticity model ('mater J2...') without a PLAS block, a THERM model "
+        "without a THERM block (heat capacity, conductivity)."},
+    DiagnosticKind{
+        "L3001", error, "non-positive size",
+        "A radius, half length, half thickness or height of a contactor is zero or negative, or an "
+        "avrd/gyrd is negative."},
+    DiagnosticKind{
+        "L3002", error, "non-positive density",
+        "The density 'Umas' of a bulk behaviour is negative, or zero while a rigid body uses it (a "
+        "rigid body's mass is its density times its area or volume). A zero density is accepted for "
+        "deformable bodies (quasi-static runs)."},
+    DiagnosticKind{
+        "L3003", error, "non-positive stiffness",
+        "A stiffness-like parameter (Young's or shear modulus of an ELAS block, a spring stiffness "
+        "of a contact law) is zero or negative."},
+    DiagnosticKind{"L3004", error, "Poisson ratio out of range",
+                   "The Poisson ratio 'EPss' of an isotropic ELAS block is outside (-1, 0.5): the elastic "
+                   "energy is then not positive (0.5 itself is incompressible and makes the elastic matrix "
+                   "singular)."},
     DiagnosticKind{"L3005", error, "negative friction",
                    "A friction coefficient is negative; Coulomb's law needs mu >= 0."},
     DiagnosticKind{"L3006", error, "restitution out of range",
@@ -130,12 +194,37 @@ constexpr std::array kCatalogue = {
     DiagnosticKind{"L3009", error, "bad polygon",
                    "A POLYG is clockwise (LMGC90 stops on a negative area), degenerate (zero area), "
                    "self-intersecting, or has fewer than 3 vertices."},
-    DiagnosticKind{"L3010", error, "bad polyhedron",
-                   "A POLYR is not a closed surface with consistently oriented faces, has inward faces "
-                   "(negative volume), a zero-area face, or a face naming a missing vertex."},
+    DiagnosticKind{
+        "L3010", error, "bad polyhedron",
+        "A POLYR is not a closed surface (an edge not shared by exactly two faces), has a zero-area "
+        "face, or a face naming a missing vertex. The order of a face's vertices does not matter: "
+        "LMGC90 orients the faces consistently and outward itself."},
     DiagnosticKind{"L3011", error, "non-positive Jacobian",
                    "A finite element is inverted or degenerate at one of its nodes (nodes must turn "
                    "counter-clockwise in 2D; positive volume in 3D)."},
+    DiagnosticKind{
+        "L3012", warning, "initial interpenetration",
+        "Two rigid contactors that a visibility row lets touch overlap at the start by more than "
+        "0.1 % of the smaller one (disks and spheres against each other, against JONCx walls and "
+        "PLANx boxes; positions from BODIES.DAT plus DOF.INI displacements, RBDY3 bodies turned by "
+        "DOF.INI's frame). With IQS laws LMGC90 keeps the overlap for the whole run; with GAP laws it "
+        "removes it in one step, which throws the bodies apart. The first 20 pairs are named, the "
+        "rest counted."},
+    DiagnosticKind{
+        "L3013", warning, "time step too large",
+        "COMMAND.DAT's time step dt is large against a time scale of the case. (1) Penalty laws "
+        "(parameter F/gap = k, ELASTIC_REPELL_CLB and relatives) on the lightest free body of mass m "
+        "the law applies to: warning when dt > sqrt(m/k), i.e. fewer than 2 pi steps per period "
+        "2 pi sqrt(m/k) of the contact spring. (2) Free fall: a disk or sphere that falls a height "
+        "d down to the first contactor below it that it may touch reaches v = sqrt(2 g d) and moves "
+        "v dt per step; warning when v dt exceeds the alert distance of the pair, since the contact "
+        "is then first detected already penetrated (equivalently, the fall lasts longer than "
+        "alert / (g dt), the time after which a body falling from rest moves more than the alert "
+        "distance per step). Masses come from 'Umas' and avrd or the contactors; bodies whose "
+        "translation is driven do not fall."},
+    DiagnosticKind{"L3014", warning, "nothing loads the case",
+                   "Gravity is zero (in the plane of a 2D case), no driven dof imposes a non-zero value and "
+                   "DOF.INI gives no body a velocity: nothing can move. Often a forgotten '$gravy' value."},
     DiagnosticKind{"L3016", warning, "dynamic friction above static friction",
                    "A law's dynamic friction coefficient is larger than its static one; usually the two are "
                    "swapped."},
@@ -149,9 +238,10 @@ constexpr std::array kCatalogue = {
     DiagnosticKind{"L4003", error, "case kind not handled by the solver",
                    "lmgc-solve runs rigid 2D cases (RBDY2 bodies only) for now; a case with RBDY3 or MAILx "
                    "bodies is checked by lmgc-check but not run."},
-    DiagnosticKind{"L4004", warning, "post-processing command not computed",
-                   "A POSTPRO.DAT command that lmgc-solve does not compute yet for this kind of case; the run "
-                   "goes on without that file."},
+    DiagnosticKind{
+        "L4004", warning, "post-processing command not computed",
+        "A POSTPRO.DAT command that lmgc-solve does not compute yet for this kind of case; the run "
+        "goes on without that file."},
     // L9xxx — input/output.
     DiagnosticKind{"L9001", error, "cannot read file",
                    "A file that the case needs does not exist or cannot be read."},
@@ -164,7 +254,9 @@ constexpr std::array kCatalogue = {
 
 }  // namespace
 
-std::span<const DiagnosticKind> diagnostic_catalogue() { return kCatalogue; }
+std::span<const DiagnosticKind> diagnostic_catalogue() {
+  return kCatalogue;
+}
 
 const DiagnosticKind* find_diagnostic_kind(std::string_view code) {
   auto it = std::lower_bound(kCatalogue.begin(), kCatalogue.end(), code,
