@@ -400,7 +400,7 @@ EvolutionFile parse_evolution(const SourceText& source, DiagnosticSink& sink) {
       reader.report("L1019", line, tokens[2].first, tokens.back().last,
                     "text after the pair is ignored by LMGC90's list-directed read");
     if (!file.points.empty() && !(values[0].value > file.points.back().time.value)) {
-      reader.report("L1003", line, tokens[0].first, tokens[0].last,
+      reader.report("L2016", line, tokens[0].first, tokens[0].last,
                     "time " + std::string(tokens[0].text) + " is not greater than the previous time",
                     "times of an evolution file must increase strictly");
       continue;

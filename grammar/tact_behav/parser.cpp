@@ -178,7 +178,7 @@ class TactBehavParser {
       const Location where{reader_.source().path(), dropped.law_nickname.span};
       const std::string earlier = "the see entry of line " + std::to_string(kept.law_nickname.span.line);
       if (padded5(kept.law_nickname.value) != padded5(dropped.law_nickname.value))
-        reader_.sink().report("L1013", where,
+        reader_.sink().report("L2015", where,
                               "see entry names the same pair as " + earlier + " with another law ('" +
                                   dropped.law_nickname.value + "' vs '" + kept.law_nickname.value + "'); LMGC90 stops",
                               "keep one entry per pair (candidate and antagonist may be swapped)");

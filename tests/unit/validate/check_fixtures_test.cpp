@@ -279,16 +279,17 @@ const std::string kOpenTetrahedron =
 const std::string kFirstSphere =
     " SPHER      1  color  BLEUx  byrd= 0.1000000D+00\n$$$$$$\n$bdyty\n RBDY3      2";
 
-// The parser of evolution files already rejects a time that does not increase (L1003) and drops
-// its point; the L2016 row swaps two times of the loaded AST instead.
+// The evolution reader reports a time that does not increase (L2016) and drops its point, so the
+// check sees it only in an AST made otherwise (a script); this row swaps two loaded times.
 void swap_evolution_times(validate::CaseFiles& files) {
   for (auto& [name, evolution] : files.evolutions)
     if (evolution.points.size() >= 3)
       std::swap(evolution.points[1].time.value, evolution.points[2].time.value);
 }
 
-// The reader of TACT_BEHAV.DAT already stops on two rows giving different laws to one pair
-// (L1013); the L2015 row adds the second row (swapped sides, law 'iqsc0', line 13) to the AST.
+// The TACT_BEHAV.DAT reader reports two rows giving different laws to one pair (L2015); the
+// check covers an AST made otherwise: this row adds the second row (swapped sides, law 'iqsc0',
+// line 13) to the loaded AST.
 void add_conflicting_row(validate::CaseFiles& files) {
   grammar::SeeEntry row = files.tact_behav->sees.front();
   std::swap(row.candidate_body, row.antagonist_body);

@@ -262,13 +262,13 @@ TEST(EvolutionBroken, SinglePair) {
 TEST(EvolutionBroken, RepeatedTime) {
   DiagnosticSink sink;
   evolution("0.0 0.0\n1.0 1.0\n  1.0 2.0\n", sink);
-  expect_one(sink, "L1003", 3, 3);
+  expect_one(sink, "L2016", 3, 3);
 }
 
 TEST(EvolutionBroken, DecreasingTime) {
   DiagnosticSink sink;
   evolution("0.0 0.0\n2.0 1.0\n1.0 2.0\n", sink);
-  expect_one(sink, "L1003", 3, 1);
+  expect_one(sink, "L2016", 3, 1);
 }
 
 TEST(EvolutionBroken, MalformedValue) {

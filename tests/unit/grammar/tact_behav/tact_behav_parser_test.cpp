@@ -114,7 +114,7 @@ TEST(TactBehavParserErrors, SeeEntryRepeatedWithAnotherLaw) {
             "$seety\n" + kSeeTitle + " RBDY2  JONCx  WALLx  iqsc1  RBDY2  DISKx  BLEUx       0.5000000D-03\n",
         sink);
   ASSERT_EQ(sink.items().size(), 1u);
-  EXPECT_EQ(sink.items()[0].code, "L1013");
+  EXPECT_EQ(sink.items()[0].code, "L2015");
   EXPECT_EQ(sink.items()[0].where.span.line, 6u);
   EXPECT_EQ(sink.items()[0].where.span.column, 23u);
 }
