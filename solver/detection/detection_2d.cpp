@@ -164,9 +164,12 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
         }
     }
   }
+  // Big contactors against every other one (a pair of two big ones once).
+  std::vector<std::uint8_t> is_big(n, 0);
+  for (std::size_t b : big) is_big[b] = 1;
   for (std::size_t b : big)
     for (std::size_t j = 0; j < n; ++j)
-      if (j != b && !(std::find(big.begin(), big.end(), j) != big.end() && j < b)) consider(std::min(b, j), std::max(b, j));
+      if (j != b && !(is_big[j] && j < b)) consider(std::min(b, j), std::max(b, j));
   // Periodic in x: contactors near the right edge against images of those near the left edge
   // (docs/lmgc90-facts/rigid-2d.md §6). JONCx and points have no periodic pairs in LMGC90.
   if (scene.x_period > 0.0) {

@@ -44,7 +44,7 @@ inline Vector2d relative_velocity(const HotContact2D& c, const std::vector<Vecto
   return Vector2d(ut, un);
 }
 
-inline void inject(const HotContact2D& c, double dt_, double dn, const std::vector<Vector3d>& inverse_mass,
+[[gnu::always_inline]] inline void inject(const HotContact2D& c, double dt_, double dn, const std::vector<Vector3d>& inverse_mass,
                    std::vector<Vector3d>& v) {
   const double tx = c.ny, ty = -c.nx;
   const double fx = dt_ * tx + dn * c.nx, fy = dt_ * ty + dn * c.ny;
