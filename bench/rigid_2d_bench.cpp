@@ -37,11 +37,17 @@ void BM_StepDiskBox(benchmark::State& state) {
   }
   state.counters["contacts"] = contacts / static_cast<double>(steps);
   state.counters["residual"] = residual / static_cast<double>(steps);
-  state.counters["s_per_step"] = benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.counters["contact_updates_per_s"] =
-      benchmark::Counter(contacts * 50.0, benchmark::Counter::kIsRate);
+  state.counters["s_per_step"] = benchmark::Counter(
+      static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["contact_updates_per_s"] = benchmark::Counter(contacts * 50.0, benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_StepDiskBox)->Arg(1000)->Arg(4000)->Arg(16000)->Arg(64000)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_StepDiskBox)
+    ->Arg(1000)
+    ->Arg(4000)
+    ->Arg(16000)
+    ->Arg(64000)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 }  // namespace
 

@@ -1,10 +1,11 @@
 // lmgc-solve: runs an LMGC90 case (rigid 2D for now) and writes what LMGC90 writes: OUTBOX echo
 // and state files, DISPLAY, POSTPRO, plus a per-step run report with the achieved residual.
 // Exit: 0 success, 1 invalid data, 2 usage, 3 not converged under --strict, 130 interrupted.
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
-#include <unistd.h>
 
 #include "grammar/common/output_file.hpp"
 #include "solver/driver/case_input.hpp"
@@ -23,27 +24,35 @@ constexpr int kExitInterrupted = 130;
 
 int main(int argc, char** argv) {
   using namespace lmgc;
-  CLI::App app{"lmgc-solve: run an LMGC90 case folder (CASE_DIR/DATBOX/) with the Moreau-Jean scheme and NLGS"};
+  CLI::App app{
+      "lmgc-solve: run an LMGC90 case folder (CASE_DIR/DATBOX/) with the Moreau-Jean scheme and NLGS"};
   std::string case_dir;
   solver::RunOptions options;
   std::string storage = "Stored_Delassus_Loops", norm = "Quad";
   app.add_option("CASE_DIR", case_dir, "case folder holding DATBOX/")->required();
   app.add_option("--dt", options.dt, "time step [s]")->check(CLI::PositiveNumber);
-  app.add_option("--theta", options.theta, "theta of the Moreau-Jean scheme, in [0.5, 1]")->check(CLI::Range(0.5, 1.0));
+  app.add_option("--theta", options.theta, "theta of the Moreau-Jean scheme, in [0.5, 1]")
+      ->check(CLI::Range(0.5, 1.0));
   app.add_option("--steps", options.steps, "number of steps")->check(CLI::NonNegativeNumber);
   app.add_option("--solver", storage, "NLGS storage: Stored_Delassus_Loops or Exchange_Local_Global");
   app.add_option("--norm", norm, "NLGS convergence norm: Quad, QuaN, Maxm or QM/16");
   app.add_option("--tol", options.nlgs.tolerance, "NLGS tolerance of the norm")->check(CLI::PositiveNumber);
   app.add_option("--relax", options.nlgs.relax, "NLGS relaxation")->check(CLI::Range(0.0, 2.0));
-  app.add_option("--gs-it1", options.nlgs.gs_it1, "NLGS sweeps between two convergence checks")->check(CLI::PositiveNumber);
-  app.add_option("--gs-it2", options.nlgs.gs_it2, "maximum number of convergence checks")->check(CLI::PositiveNumber);
-  app.add_flag("--quick-scramble", options.nlgs.quick_scramble, "shuffle the contact order before each block of sweeps");
+  app.add_option("--gs-it1", options.nlgs.gs_it1, "NLGS sweeps between two convergence checks")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--gs-it2", options.nlgs.gs_it2, "maximum number of convergence checks")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--quick-scramble", options.nlgs.quick_scramble,
+               "shuffle the contact order before each block of sweeps");
   app.add_option("--residual-target", options.nlgs.residual_target,
                  "also stop a step when the natural-map residual / |q| is below this (0 = off)");
-  app.add_option("--rloc-tol", options.rloc_tol, "warm-start matching tolerance (accepted; contactor matching is used)");
-  app.add_option("--write-every", options.write_every, "write DOF/Vloc_Rloc .OUT.n every n steps (0 = never)");
+  app.add_option("--rloc-tol", options.rloc_tol,
+                 "warm-start matching tolerance (accepted; contactor matching is used)");
+  app.add_option("--write-every", options.write_every,
+                 "write DOF/Vloc_Rloc .OUT.n every n steps (0 = never)");
   app.add_option("--display-every", options.display_every, "write DISPLAY files every n steps (0 = never)");
-  app.add_option("--ymin-boundary", options.y_min, "bodies whose centre goes below this become invisible (RBDY2_SetYminBoundary)");
+  app.add_option("--ymin-boundary", options.y_min,
+                 "bodies whose centre goes below this become invisible (RBDY2_SetYminBoundary)");
   app.add_option("--ymax-boundary", options.y_max, "... above this");
   app.add_option("--xmin-boundary", options.x_min, "... left of this");
   app.add_option("--xmax-boundary", options.x_max, "... right of this");
@@ -52,9 +61,11 @@ int main(int argc, char** argv) {
   app.add_flag("--strict", options.strict, "exit 3 when a step stopped at the iteration cap");
   app.set_version_flag("--version", "lmgc-solve 0.1.0");
   app.footer(
-      "Run parameters come from CASE_DIR/DATBOX/COMMAND.DAT when it exists (TIME STEP, THETA, the step loop's\n"
+      "Run parameters come from CASE_DIR/DATBOX/COMMAND.DAT when it exists (TIME STEP, THETA, the step "
+      "loop's\n"
       "REPETE count, NLGS CHECK TYPE, the NLGS loops, WRITE OUT DOF STEP, ...); a flag given here overrides\n"
-      "the file. Without COMMAND.DAT the defaults are --dt 1e-3 --theta 0.5 --steps 1000 --norm Quad --tol 1.666e-4\n"
+      "the file. Without COMMAND.DAT the defaults are --dt 1e-3 --theta 0.5 --steps 1000 --norm Quad --tol "
+      "1.666e-4\n"
       "--gs-it1 50 --gs-it2 500.\n"
       "Outputs: OUTBOX/ (echo files, DOF and Vloc_Rloc .OUT.n and .LAST, run_report.csv with the achieved\n"
       "natural-map residual of every step), POSTPRO/ (POSTPRO.DAT's commands), DISPLAY/ (ParaView).\n"
@@ -104,7 +115,8 @@ int main(int argc, char** argv) {
     return it == files->sources.end() ? std::string_view{} : it->second.line_text(line);
   };
   for (const auto& d : sink.items())
-    if (d.severity == grammar::Severity::error || (!options.quiet && d.severity == grammar::Severity::warning))
+    if (d.severity == grammar::Severity::error ||
+        (!options.quiet && d.severity == grammar::Severity::warning))
       std::cerr << validate::render_text(d, lookup, {color});
   if (!ready) {
     std::cerr << "lmgc-solve: the case cannot run (" << sink.error_count() << " error"
@@ -114,7 +126,8 @@ int main(int argc, char** argv) {
   // The echo files, as LMGC90 writes them when it reads the case.
   for (const auto& output : solver::echo_files_2d(*files)) {
     std::string error;
-    if (!grammar::write_file_whole(std::filesystem::path(case_dir) / output.relative_path, output.content, error)) {
+    if (!grammar::write_file_whole(std::filesystem::path(case_dir) / output.relative_path, output.content,
+                                   error)) {
       std::cerr << "lmgc-solve: " << error << "\n";
       return kExitData;
     }
@@ -126,8 +139,10 @@ int main(int argc, char** argv) {
     return kExitData;
   }
   if (!options.quiet)
-    std::fprintf(stderr, "%ld steps to t=%.6g; %ld not converged within gs_it1*gs_it2; worst natural-map residual/|q| %.3e\n",
-                 summary.steps_done, summary.final_time, summary.steps_not_converged, summary.worst_residual);
+    std::fprintf(
+        stderr,
+        "%ld steps to t=%.6g; %ld not converged within gs_it1*gs_it2; worst natural-map residual/|q| %.3e\n",
+        summary.steps_done, summary.final_time, summary.steps_not_converged, summary.worst_residual);
   if (summary.interrupted) return kExitInterrupted;
   if (options.strict && summary.steps_not_converged > 0) return kExitNotConverged;
   return kExitOk;

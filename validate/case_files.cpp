@@ -47,9 +47,13 @@ constexpr DatboxFileKind kDatboxFiles[] = {
     {"BODIES.DAT", Requirement::always,
      [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.bodies = grammar::parse_bodies(s, d); }},
     {"BULK_BEHAV.DAT", Requirement::always,
-     [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.bulk_behav = grammar::parse_bulk_behav(s, d); }},
+     [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) {
+       c.bulk_behav = grammar::parse_bulk_behav(s, d);
+     }},
     {"TACT_BEHAV.DAT", Requirement::with_contactors,
-     [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.tact_behav = grammar::parse_tact_behav(s, d); }},
+     [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) {
+       c.tact_behav = grammar::parse_tact_behav(s, d);
+     }},
     {"MODELS.DAT", Requirement::with_mailx,
      [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.models = grammar::parse_models(s, d); }},
     {"DRV_DOF.DAT", Requirement::always,
@@ -57,7 +61,9 @@ constexpr DatboxFileKind kDatboxFiles[] = {
     {"DOF.INI", Requirement::always,
      [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.dof_ini = grammar::parse_dof(s, d); }},
     {"Vloc_Rloc.INI", Requirement::optional,
-     [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.vloc_rloc_ini = grammar::parse_vloc_rloc(s, d); }},
+     [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) {
+       c.vloc_rloc_ini = grammar::parse_vloc_rloc(s, d);
+     }},
     {"GPV.INI", Requirement::with_mailx,
      [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.gpv_ini = grammar::parse_gpv(s, d); }},
     {"POSTPRO.DAT", Requirement::optional,

@@ -11,6 +11,8 @@
 #include "grammar/bodies/ast.hpp"
 #include "grammar/bulk_behav/ast.hpp"
 #include "grammar/command/ast.hpp"
+#include "grammar/common/diagnostic.hpp"
+#include "grammar/common/source.hpp"
 #include "grammar/dof/ast.hpp"
 #include "grammar/drv_dof/ast.hpp"
 #include "grammar/gpv/ast.hpp"
@@ -18,8 +20,6 @@
 #include "grammar/postpro/ast.hpp"
 #include "grammar/tact_behav/ast.hpp"
 #include "grammar/vloc_rloc/ast.hpp"
-#include "grammar/common/diagnostic.hpp"
-#include "grammar/common/source.hpp"
 
 namespace lmgc::validate {
 

@@ -27,9 +27,10 @@ void check_contact_laws(const CaseFiles& files, grammar::DiagnosticSink& sink) {
                                 law.nickname.value, value.value));
       if ((name == "restn" || name == "restt") && (value.value < 0.0 || value.value > 1.0))
         sink.report("L3006", where,
-                    fmt::format("restitution '{}' of law '{}' is {}; it must be in [0, 1]", name, law.nickname.value,
-                                value.value));
-      if ((name == "F/gap" || name == "F/str" || name == "cn" || name == "ct" || name == "kn" || name == "kt") &&
+                    fmt::format("restitution '{}' of law '{}' is {}; it must be in [0, 1]", name,
+                                law.nickname.value, value.value));
+      if ((name == "F/gap" || name == "F/str" || name == "cn" || name == "ct" || name == "kn" ||
+           name == "kt") &&
           value.value <= 0.0)
         sink.report("L3003", where,
                     fmt::format("stiffness '{}' of law '{}' is {}; it must be > 0", name, law.nickname.value,
@@ -43,12 +44,14 @@ void check_contact_laws(const CaseFiles& files, grammar::DiagnosticSink& sink) {
     }
     if (s >= 0 && d >= 0 && d > s)
       sink.report("L3016", grammar::Location{path, law.keyword.span},
-                  fmt::format("law '{}' has a dynamic friction {} above its static friction {}", law.nickname.value, d, s));
+                  fmt::format("law '{}' has a dynamic friction {} above its static friction {}",
+                              law.nickname.value, d, s));
   }
   for (const auto& see : files.tact_behav->sees)
     if (!(see.alert.value > 0.0))
       sink.report("L3007", grammar::Location{path, see.alert.span},
-                  fmt::format("alert distance is {}; it must be > 0 (contacts are created only within it)", see.alert.value));
+                  fmt::format("alert distance is {}; it must be > 0 (contacts are created only within it)",
+                              see.alert.value));
 }
 
 }  // namespace lmgc::validate

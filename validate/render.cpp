@@ -12,9 +12,12 @@ constexpr std::string_view kBold = "\033[1m";
 
 std::string_view severity_color(grammar::Severity s) {
   switch (s) {
-    case grammar::Severity::error: return "\033[1;31m";
-    case grammar::Severity::warning: return "\033[1;35m";
-    case grammar::Severity::note: return "\033[1;36m";
+    case grammar::Severity::error:
+      return "\033[1;31m";
+    case grammar::Severity::warning:
+      return "\033[1;35m";
+    case grammar::Severity::note:
+      return "\033[1;36m";
   }
   return "";
 }
@@ -43,8 +46,8 @@ std::string render_text(const grammar::Diagnostic& d, const LineLookup& lines, T
   std::string out;
   const std::string_view severity = grammar::severity_name(d.severity);
   if (style.color) {
-    out += fmt::format("{}{}:{} {}{}[{}]:{} {}{}{}\n", kBold, location_text(d.where), kReset, severity_color(d.severity),
-                       severity, d.code, kReset, kBold, d.message, kReset);
+    out += fmt::format("{}{}:{} {}{}[{}]:{} {}{}{}\n", kBold, location_text(d.where), kReset,
+                       severity_color(d.severity), severity, d.code, kReset, kBold, d.message, kReset);
   } else {
     out += fmt::format("{}: {}[{}]: {}\n", location_text(d.where), severity, d.code, d.message);
   }
@@ -54,13 +57,14 @@ std::string render_text(const grammar::Diagnostic& d, const LineLookup& lines, T
     out += fmt::format("{} | {}\n", gutter, displayable(text));
     if (d.where.span.column > 0 && d.where.span.column <= 241) {
       const std::size_t first = d.where.span.column - 1;
-      std::size_t width = d.where.span.end_column > d.where.span.column ? d.where.span.end_column - d.where.span.column : 1;
+      std::size_t width =
+          d.where.span.end_column > d.where.span.column ? d.where.span.end_column - d.where.span.column : 1;
       width = std::min<std::size_t>(width, 60);
       std::string caret(first, ' ');
       caret += '^';
       if (width > 1) caret.append(width - 1, '~');
-      out += fmt::format("{} | {}{}{}\n", std::string(gutter.size(), ' '), style.color ? severity_color(d.severity) : "",
-                         caret, style.color ? kReset : "");
+      out += fmt::format("{} | {}{}{}\n", std::string(gutter.size(), ' '),
+                         style.color ? severity_color(d.severity) : "", caret, style.color ? kReset : "");
     }
   }
   for (const auto& r : d.related) out += fmt::format("   note: {}: {}\n", location_text(r.where), r.message);

@@ -84,9 +84,9 @@ struct PolyhedronPatch {
 struct Contactor {
   Word type;  // "DISKx", "POLYG", "CLxxx", ...
   Ordinal number;
-  Word color;                        // columns 23-27
-  std::vector<Real> values;          // parameters of the first line (and the offset line)
-  std::vector<Integer> nodes;        // MAILx contactors: node ranks on the first line
+  Word color;                                 // columns 23-27
+  std::vector<Real> values;                   // parameters of the first line (and the offset line)
+  std::vector<Integer> nodes;                 // MAILx contactors: node ranks on the first line
   std::vector<std::array<Real, 3>> vertices;  // POLYG (third component 0), POLYR, POLYD
   std::vector<std::array<Integer, 3>> faces;  // POLYR, POLYD
   std::vector<PolyhedronPatch> patches;       // POLYF

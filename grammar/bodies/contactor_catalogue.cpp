@@ -15,9 +15,25 @@ constexpr ContactorKind kContactors[] = {
     {"DISKx", kRigid2, L::values, {"byrd="}, 1, {}, 0, 0, 2, ""},
     {"xKSID", kRigid2, L::values, {"byrd="}, 1, {}, 0, 0, 2, ""},
     {"DISKb", kRigid2, L::values_offset, {"byrd="}, 1, {"coo1=", "coo2="}, 2, 0, 2, ""},
-    {"DISPx", kRigid2, L::values, {"byrd="}, 1, {}, 0, 0, 2,
+    {"DISPx",
+     kRigid2,
+     L::values,
+     {"byrd="},
+     1,
+     {},
+     0,
+     0,
+     2,
      "the user's guide lists 'DISPx' (pneumatic disk) but LMGC90's RBDY2 reader rejects it"},
-    {"xPSID", kRigid2, L::values, {"byrd="}, 1, {}, 0, 0, 2,
+    {"xPSID",
+     kRigid2,
+     L::values,
+     {"byrd="},
+     1,
+     {},
+     0,
+     0,
+     2,
      "the user's guide lists 'xPSID' (hollow pneumatic disk) but LMGC90's RBDY2 reader rejects it"},
     {"JONCx", kRigid2, L::values, {"ax1 =", "ax2 ="}, 2, {}, 0, 0, 2, ""},
     {"POLYG", kRigid2, L::polygon, {}, 0, {"coo1=", "coo2="}, 2, 0, 2, ""},
@@ -40,9 +56,25 @@ constexpr ContactorKind kContactors[] = {
     {"CSpx1", kMailx, L::node_patch, {}, 0, {}, 0, 0, 3, ""},
     {"CSpx2", kMailx, L::node_patch, {}, 0, {}, 0, 0, 3, ""},
     {"ASpxx", kMailx, L::node_patch, {}, 0, {}, 0, 0, 3, ""},
-    {"CSxx3", kMailx, L::node_patch, {}, 0, {}, 0, 3, 3,
+    {"CSxx3",
+     kMailx,
+     L::node_patch,
+     {},
+     0,
+     {},
+     0,
+     3,
+     3,
      "'CSxx3' is the pre-processor's name; LMGC90's BODIES.DAT reader expects 'CSpxx'"},
-    {"CSxx4", kMailx, L::node_patch, {}, 0, {}, 0, 4, 3,
+    {"CSxx4",
+     kMailx,
+     L::node_patch,
+     {},
+     0,
+     {},
+     0,
+     4,
+     3,
      "'CSxx4' is the pre-processor's name; LMGC90's BODIES.DAT reader expects 'CSpxx'"},
     {"CSpx3", kMailx, L::node_patch, {}, 0, {}, 0, 3, 3, "'CSpx3' is read only by LMGC90's v2.0 format"},
     {"CSpx4", kMailx, L::node_patch, {}, 0, {}, 0, 4, 3, "'CSpx4' is read only by LMGC90's v2.0 format"},
@@ -56,13 +88,15 @@ constexpr ContactorKind kContactors[] = {
 };
 
 constexpr ElementKind kElements[] = {
-    {"S2xxx", 2}, {"S3xxx", 3},  {"T3xxx", 3}, {"T6xxx", 6},   {"Q4xxx", 4}, {"Q8xxx", 8},
+    {"S2xxx", 2}, {"S3xxx", 3},  {"T3xxx", 3}, {"T6xxx", 6},  {"Q4xxx", 4}, {"Q8xxx", 8},
     {"H8xxx", 8}, {"H20xx", 20}, {"TE4xx", 4}, {"TE10x", 10}, {"PRI6x", 6}, {"PRI15", 15},
 };
 
 }  // namespace
 
-std::span<const ContactorKind> contactor_catalogue() { return kContactors; }
+std::span<const ContactorKind> contactor_catalogue() {
+  return kContactors;
+}
 
 const ContactorKind* find_contactor_kind(std::string_view keyword) {
   auto it = std::find_if(std::begin(kContactors), std::end(kContactors),
@@ -70,7 +104,9 @@ const ContactorKind* find_contactor_kind(std::string_view keyword) {
   return it == std::end(kContactors) ? nullptr : &*it;
 }
 
-std::span<const ElementKind> element_catalogue() { return kElements; }
+std::span<const ElementKind> element_catalogue() {
+  return kElements;
+}
 
 const ElementKind* find_element_kind(std::string_view keyword) {
   auto it = std::find_if(std::begin(kElements), std::end(kElements),

@@ -11,16 +11,16 @@
 namespace lmgc::grammar {
 
 enum class ContactorLayout {
-  values,         // reals on the first line at 35-48, 56-69, 77-90 (DISKx, JONCx, SPHER, ...)
-  values_offset,  // + next line: offset of the contactor centre (DISKb, SPHEb)
-  values_frame,   // + optional 'localframe' block of 5 lines (CYLND, PLANx)
-  polygon,        // 'nb_vertex=' count at 40-46, then one vertex per line (POLYG)
-  polyhedron,     // counts at 40-47 / 60-67, vertex lines, face lines (POLYR)
+  values,                 // reals on the first line at 35-48, 56-69, 77-90 (DISKx, JONCx, SPHER, ...)
+  values_offset,          // + next line: offset of the contactor centre (DISKb, SPHEb)
+  values_frame,           // + optional 'localframe' block of 5 lines (CYLND, PLANx)
+  polygon,                // 'nb_vertex=' count at 40-46, then one vertex per line (POLYG)
+  polyhedron,             // counts at 40-47 / 60-67, vertex lines, face lines (POLYR)
   polyhedron_patches,     // patch count, then per patch counts, vertices, faces (POLYF)
   deformable_polyhedron,  // counts, then face lines of node ranks (POLYD)
-  node_point,     // noda nodb apab [bdyr brpm] (CLxxx, PT2DL, PT2TL, DISKL)
-  node_polyline,  // noda nodb, then '+ALpxx' lines with the next segments (ALpxx)
-  node_patch,     // 3, 4, 6 or 8 node ranks, then '+' lines with further faces (CSpxx, ASpxx)
+  node_point,             // noda nodb apab [bdyr brpm] (CLxxx, PT2DL, PT2TL, DISKL)
+  node_polyline,          // noda nodb, then '+ALpxx' lines with the next segments (ALpxx)
+  node_patch,             // 3, 4, 6 or 8 node ranks, then '+' lines with further faces (CSpxx, ASpxx)
 };
 
 // Bit mask of the body types that accept a contactor.
@@ -35,9 +35,9 @@ struct ContactorKind {
   std::array<std::string_view, 5> labels;  // labels of the first-line values, as LMGC90 writes them
   int value_count;                         // reals on the first line
   std::array<std::string_view, 3> offset_labels;
-  int offset_count;      // reals on the offset line (values_offset)
-  int patch_nodes;       // node_patch: nodes per face given by the name (0 = detected from labels)
-  int dimension;         // 2 or 3 (vertex components, offsets)
+  int offset_count;             // reals on the offset line (values_offset)
+  int patch_nodes;              // node_patch: nodes per face given by the name (0 = detected from labels)
+  int dimension;                // 2 or 3 (vertex components, offsets)
   std::string_view guide_only;  // non-empty: a spelling LMGC90's reader rejects; the reason
 };
 

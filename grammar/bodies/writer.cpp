@@ -29,7 +29,8 @@ constexpr std::string_view kHeader =
     "!                                                                       \n"
     "                                                                      \n";
 
-constexpr std::string_view kDashes = "!-----------------------------------------------------------------------\n";
+constexpr std::string_view kDashes =
+    "!-----------------------------------------------------------------------\n";
 
 // (2X,A5,D14.7) label/value pairs after `lead` blanks: the common value layout (§1.3).
 void append_pairs(std::string& out, const std::string_view* labels, const Real* values, int count) {
@@ -61,8 +62,10 @@ void append_contactor_head(std::string& out, char first, std::string_view type, 
 }
 
 // (2X,A5,I5) node-rank pairs of MAILx contactors.
-void append_node_ranks(std::string& out, const std::vector<Integer>& nodes, std::size_t first, std::size_t count) {
-  static constexpr std::string_view kLabels[] = {"noda=", "nodb=", "nodc=", "nodd=", "node=", "nodf=", "nodg=", "nodh="};
+void append_node_ranks(std::string& out, const std::vector<Integer>& nodes, std::size_t first,
+                       std::size_t count) {
+  static constexpr std::string_view kLabels[] = {
+      "noda=", "nodb=", "nodc=", "nodd=", "node=", "nodf=", "nodg=", "nodh="};
   for (std::size_t i = 0; i < count && first + i < nodes.size(); ++i) {
     append_blanks(out, 2);
     append_fortran_a(out, kLabels[i % 8], 5);
@@ -80,8 +83,10 @@ void append_polyhedron(std::string& out, std::int64_t vertex_count, std::int64_t
   out += '\n';
 }
 
-void append_vertices(std::string& out, const ContactorKind& kind, const std::vector<std::array<Real, 3>>& vertices) {
-  for (const auto& v : vertices) append_continuation(out, kind.offset_labels.data(), v.data(), kind.dimension);
+void append_vertices(std::string& out, const ContactorKind& kind,
+                     const std::vector<std::array<Real, 3>>& vertices) {
+  for (const auto& v : vertices)
+    append_continuation(out, kind.offset_labels.data(), v.data(), kind.dimension);
 }
 
 // Face lines: 27 blanks then 3 × (2X,A5,I7,7X) (format 132 of the POLYR writer).
@@ -105,13 +110,15 @@ void append_contactor(std::string& out, const Contactor& c, std::int64_t rank) {
   append_contactor_head(out, ' ', c.type.value, rank, c.color.value);
   switch (kind->layout) {
     case ContactorLayout::values:
-      append_pairs(out, kind->labels.data(), c.values.data(), std::min<int>(kind->value_count, static_cast<int>(c.values.size())));
+      append_pairs(out, kind->labels.data(), c.values.data(),
+                   std::min<int>(kind->value_count, static_cast<int>(c.values.size())));
       out += '\n';
       break;
     case ContactorLayout::values_offset:
       append_pairs(out, kind->labels.data(), c.values.data(), kind->value_count);
       out += '\n';
-      append_continuation(out, kind->offset_labels.data(), c.values.data() + kind->value_count, kind->offset_count);
+      append_continuation(out, kind->offset_labels.data(), c.values.data() + kind->value_count,
+                          kind->offset_count);
       break;
     case ContactorLayout::values_frame: {
       append_pairs(out, kind->labels.data(), c.values.data(), kind->value_count);
@@ -136,7 +143,8 @@ void append_contactor(std::string& out, const Contactor& c, std::int64_t rank) {
       append_vertices(out, *kind, c.vertices);
       break;
     case ContactorLayout::polyhedron:
-      append_polyhedron(out, static_cast<std::int64_t>(c.vertices.size()), static_cast<std::int64_t>(c.faces.size()));
+      append_polyhedron(out, static_cast<std::int64_t>(c.vertices.size()),
+                        static_cast<std::int64_t>(c.faces.size()));
       append_vertices(out, *kind, c.vertices);
       append_faces(out, c.faces);
       break;
@@ -154,13 +162,15 @@ void append_contactor(std::string& out, const Contactor& c, std::int64_t rank) {
       }
       break;
     case ContactorLayout::deformable_polyhedron:
-      append_polyhedron(out, c.nodes.empty() ? 0 : c.nodes[0].value, static_cast<std::int64_t>(c.faces.size()));
+      append_polyhedron(out, c.nodes.empty() ? 0 : c.nodes[0].value,
+                        static_cast<std::int64_t>(c.faces.size()));
       append_faces(out, c.faces);
       break;
     case ContactorLayout::node_point: {
       static constexpr std::string_view kExtra[] = {"apab=", "bdyr=", "brpm="};
       append_node_ranks(out, c.nodes, 0, 2);
-      append_pairs(out, kExtra, c.values.data(), std::min<int>(kind->value_count, static_cast<int>(c.values.size())));
+      append_pairs(out, kExtra, c.values.data(),
+                   std::min<int>(kind->value_count, static_cast<int>(c.values.size())));
       out += '\n';
       break;
     }
@@ -188,7 +198,8 @@ void append_contactor(std::string& out, const Contactor& c, std::int64_t rank) {
 }
 
 void append_body(std::string& out, const Body& body, std::int64_t rank) {
-  static constexpr std::string_view kCoordinateLabels[] = {"coo1=", "coo2=", "coo3=", "coo4=", "coo5=", "coo6="};
+  static constexpr std::string_view kCoordinateLabels[] = {
+      "coo1=", "coo2=", "coo3=", "coo4=", "coo5=", "coo6="};
   out += "$bdyty\n ";
   out += body_type_keyword(body.type);
   if (body.type != BodyType::mailx) append_blanks(out, 2);  // MAILx (1X,A5,I7), rigid (1X,A5,2X,I7)

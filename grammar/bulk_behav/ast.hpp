@@ -22,9 +22,9 @@ struct BulkValues {
 // A sub-block (ELAS, CPLT, PLAS, ...), walked by its catalogue steps.
 struct BulkBlock {
   BulkBlockKind kind = BulkBlockKind::elas;
-  std::vector<Word> options;       // option words in step order ('standard', 'isotropic', 'Swift', ...)
-  std::vector<BulkValues> lines;   // value lines in file order
-  Word file_name;                  // UMAT: user material file, relative to DATBOX/
+  std::vector<Word> options;      // option words in step order ('standard', 'isotropic', 'Swift', ...)
+  std::vector<BulkValues> lines;  // value lines in file order
+  Word file_name;                 // UMAT: user material file, relative to DATBOX/
   friend bool operator==(const BulkBlock&, const BulkBlock&) = default;
 };
 

@@ -15,9 +15,8 @@ using K = BulkBlockKind;
 // --- value lines ---------------------------------------------------------------------------
 constexpr L kElasIsotropic[] = {{{"EYng=", "EPss="}, 2, true}};
 constexpr L kViscoIsotropic[] = {{{"EYng=", "EPss="}, 2, false}};
-constexpr L kOrthotropic[] = {{{"EY11=", "EY22=", "EY33="}, 3},
-                              {{"EP12=", "EP13=", "EP23="}, 3},
-                              {{"G12_=", "G13_=", "G23_="}, 3}};
+constexpr L kOrthotropic[] = {
+    {{"EY11=", "EY22=", "EY33="}, 3}, {{"EP12=", "EP13=", "EP23="}, 3}, {{"G12_=", "G13_=", "G23_="}, 3}};
 // Anisotropic: 7 lines of 3 values, written with blank labels.
 constexpr L kAnisotropic[] = {{{"     ", "     ", "     "}, 3}, {{"     ", "     ", "     "}, 3},
                               {{"     ", "     ", "     "}, 3}, {{"     ", "     ", "     "}, 3},
@@ -41,20 +40,29 @@ constexpr L kLmm05[] = {{{"WS__=", "WSvr="}, 2}, {{"TMlt=", "Tvar="}, 2}};
 constexpr L kRen[] = {{{"WSmx=", "WSmn="}, 2}, {{"CtTi="}, 1}};
 constexpr L kNhu14[] = {{{"WSmx=", "WSmn="}, 2}, {{"CtTi=", "AcTi="}, 2}};
 constexpr L kBiot[] = {{{"BIOT="}, 1, true}};
-constexpr L kDiscrete[] = {{{"k1  =", "k2  =", "k3  ="}, 3, false, true}, {{"c1  =", "c2  =", "c3  ="}, 3, false, true}};
+constexpr L kDiscrete[] = {{{"k1  =", "k2  =", "k3  ="}, 3, false, true},
+                           {{"c1  =", "c2  =", "c3  ="}, 3, false, true}};
 constexpr L kJointMc[] = {{{"kncc=", "ec  ="}, 2}, {{"ftrc="}, 1}, {{"phi =", "C   =", "zmu ="}, 3}};
-constexpr L kJointFczm[] = {{{"kncc=", "ec  ="}, 2}, {{"phi =", "zmu ="}, 2}, {{"pf  =", "pd  ="}, 2},
-                            {{"ct  =", "s2  =", "G2  ="}, 3}, {{"cn  =", "s1  =", "G1  ="}, 3}};
+constexpr L kJointFczm[] = {{{"kncc=", "ec  ="}, 2},
+                            {{"phi =", "zmu ="}, 2},
+                            {{"pf  =", "pd  ="}, 2},
+                            {{"ct  =", "s2  =", "G2  ="}, 3},
+                            {{"cn  =", "s1  =", "G1  ="}, 3}};
 
 // --- option cases --------------------------------------------------------------------------
 // Only 'standard' elasticity is implemented; the other names are read, then LMGC90 stops.
-constexpr C kElasModels[] = {{"standard"}, {"MooneyRivlin", {}, false, false}, {"HartSmith", {}, false, false},
+constexpr C kElasModels[] = {{"standard"},
+                             {"MooneyRivlin", {}, false, false},
+                             {"HartSmith", {}, false, false},
                              {"Signorini", {}, false, false}};
-constexpr C kElasAnisotropy[] = {{"isotropic", kElasIsotropic}, {"orthotropic", kOrthotropic}, {"anisotropic", kAnisotropic}};
-constexpr C kViscoAnisotropy[] = {{"isotropic", kViscoIsotropic}, {"orthotropic", kOrthotropic}, {"anisotropic", kAnisotropic}};
+constexpr C kElasAnisotropy[] = {
+    {"isotropic", kElasIsotropic}, {"orthotropic", kOrthotropic}, {"anisotropic", kAnisotropic}};
+constexpr C kViscoAnisotropy[] = {
+    {"isotropic", kViscoIsotropic}, {"orthotropic", kOrthotropic}, {"anisotropic", kAnisotropic}};
 constexpr C kDilatation[] = {{"isotropic", kDilaIsotropic}, {"orthotropic", kDilaOrthotropic}};
 constexpr C kCriterion[] = {{"none", {}, true}, {"Von-Mises"}};
-constexpr C kIsotropicHardening[] = {{"none"}, {"Swift", kSwift}, {"linear", kIsohLinear}, {"Hollomon", kHollomon}};
+constexpr C kIsotropicHardening[] = {
+    {"none"}, {"Swift", kSwift}, {"linear", kIsohLinear}, {"Hollomon", kHollomon}};
 constexpr C kKinematicHardening[] = {{"none"}, {"linear", kCinhLinear}};
 constexpr C kViscoPlasticity[] = {{"none"}, {"power_law", kPowerLaw}};
 constexpr C kViscoModels[] = {{"none"}, {"KelvinVoigt"}};
@@ -65,31 +73,38 @@ constexpr C kWsLaws[] = {{"LMM05", kLmm05}, {"REN12", kRen}, {"REN13", kRen}, {"
 constexpr S kElasSteps[] = {
     {BulkStepKind::option, "elas:", "elas:", 47, 59, BulkOptionStyle::labelled13, kElasModels},
     {BulkStepKind::option, "ani_:", "ani_:", 47, 59, BulkOptionStyle::labelled13, kElasAnisotropy}};
-constexpr S kCpltSteps[] = {{BulkStepKind::marker, "cplt:", "cplt"},
-                            {BulkStepKind::anisotropy_values, "", "", 0, 0, BulkOptionStyle::labelled13, kDilatation},
-                            {BulkStepKind::values, "", "", 0, 0, BulkOptionStyle::labelled13, {}, kTref}};
+constexpr S kCpltSteps[] = {
+    {BulkStepKind::marker, "cplt:", "cplt"},
+    {BulkStepKind::anisotropy_values, "", "", 0, 0, BulkOptionStyle::labelled13, kDilatation},
+    {BulkStepKind::values, "", "", 0, 0, BulkOptionStyle::labelled13, {}, kTref}};
 constexpr S kThermSteps[] = {{BulkStepKind::marker, "ther:", "ther"},
                              {BulkStepKind::values, "", "", 0, 0, BulkOptionStyle::labelled13, {}, kTherm}};
 constexpr S kVariaSteps[] = {{BulkStepKind::marker, "varf:", "varf"},
                              {BulkStepKind::values, "", "", 0, 0, BulkOptionStyle::labelled13, {}, kVaria}};
 // PLAS labels are not checked by LMGC90 (only the words at 47-59 are).
-constexpr S kPlasSteps[] = {{BulkStepKind::option, "crit:", "", 47, 59, BulkOptionStyle::labelled13, kCriterion},
-                            {BulkStepKind::option, "isoh:", "", 47, 59, BulkOptionStyle::labelled13, kIsotropicHardening},
-                            {BulkStepKind::option, "cinh:", "", 47, 59, BulkOptionStyle::labelled13, kKinematicHardening},
-                            {BulkStepKind::option, "vpla:", "", 47, 59, BulkOptionStyle::labelled13, kViscoPlasticity}};
+constexpr S kPlasSteps[] = {
+    {BulkStepKind::option, "crit:", "", 47, 59, BulkOptionStyle::labelled13, kCriterion},
+    {BulkStepKind::option, "isoh:", "", 47, 59, BulkOptionStyle::labelled13, kIsotropicHardening},
+    {BulkStepKind::option, "cinh:", "", 47, 59, BulkOptionStyle::labelled13, kKinematicHardening},
+    {BulkStepKind::option, "vpla:", "", 47, 59, BulkOptionStyle::labelled13, kViscoPlasticity}};
 constexpr S kViscoSteps[] = {
     {BulkStepKind::option, "visc:", "visc:", 47, 59, BulkOptionStyle::labelled13, kViscoModels},
     {BulkStepKind::option, "ani_:", "ani_:", 47, 59, BulkOptionStyle::labelled13, kViscoAnisotropy}};
-constexpr S kRigidThermSteps[] = {{BulkStepKind::option, "", "", 41, 43, BulkOptionStyle::colon3, kThermModels},
-                                  {BulkStepKind::values, "", "", 0, 0, BulkOptionStyle::labelled13, {}, kThermTail}};
-constexpr S kRigidElecSteps[] = {{BulkStepKind::values, "", "", 0, 0, BulkOptionStyle::labelled13, {}, kElec}};
+constexpr S kRigidThermSteps[] = {
+    {BulkStepKind::option, "", "", 41, 43, BulkOptionStyle::colon3, kThermModels},
+    {BulkStepKind::values, "", "", 0, 0, BulkOptionStyle::labelled13, {}, kThermTail}};
+constexpr S kRigidElecSteps[] = {
+    {BulkStepKind::values, "", "", 0, 0, BulkOptionStyle::labelled13, {}, kElec}};
 constexpr S kWsSteps[] = {{BulkStepKind::option, "WSlw=", "", 47, 51, BulkOptionStyle::labelled5, kWsLaws}};
 constexpr S kUmatSteps[] = {{BulkStepKind::file_name}};
 constexpr S kBiotSteps[] = {{BulkStepKind::marker, "cpl_:", "cpl_"},
                             {BulkStepKind::values, "", "", 0, 0, BulkOptionStyle::labelled13, {}, kBiot}};
-constexpr S kDiscreteSteps[] = {{BulkStepKind::values, "", "", 0, 0, BulkOptionStyle::labelled13, {}, kDiscrete}};
-constexpr S kJointMcSteps[] = {{BulkStepKind::values, "", "", 0, 0, BulkOptionStyle::labelled13, {}, kJointMc}};
-constexpr S kJointFczmSteps[] = {{BulkStepKind::values, "", "", 0, 0, BulkOptionStyle::labelled13, {}, kJointFczm}};
+constexpr S kDiscreteSteps[] = {
+    {BulkStepKind::values, "", "", 0, 0, BulkOptionStyle::labelled13, {}, kDiscrete}};
+constexpr S kJointMcSteps[] = {
+    {BulkStepKind::values, "", "", 0, 0, BulkOptionStyle::labelled13, {}, kJointMc}};
+constexpr S kJointFczmSteps[] = {
+    {BulkStepKind::values, "", "", 0, 0, BulkOptionStyle::labelled13, {}, kJointFczm}};
 
 // Indexed by BulkBlockKind.
 constexpr BulkBlockInfo kBlocks[] = {
@@ -155,13 +170,18 @@ constexpr BulkLawKind kKinds[] = {
 
 }  // namespace
 
-std::span<const BulkLawKind> bulk_law_catalogue() { return kKinds; }
+std::span<const BulkLawKind> bulk_law_catalogue() {
+  return kKinds;
+}
 
 const BulkLawKind* find_bulk_law_kind(std::string_view law_type) {
-  auto it = std::find_if(std::begin(kKinds), std::end(kKinds), [&](const BulkLawKind& k) { return k.law_type == law_type; });
+  auto it = std::find_if(std::begin(kKinds), std::end(kKinds),
+                         [&](const BulkLawKind& k) { return k.law_type == law_type; });
   return it == std::end(kKinds) ? nullptr : &*it;
 }
 
-const BulkBlockInfo& bulk_block_info(BulkBlockKind kind) { return kBlocks[static_cast<std::size_t>(kind)]; }
+const BulkBlockInfo& bulk_block_info(BulkBlockKind kind) {
+  return kBlocks[static_cast<std::size_t>(kind)];
+}
 
 }  // namespace lmgc::grammar

@@ -13,7 +13,20 @@
 namespace lmgc::grammar {
 
 enum class BulkBlockKind {
-  elas, cplt, therm, varia, plas, visco, rigid_therm, rigid_elec, ws, umat, biot, discrete, joint_mc, joint_fczm
+  elas,
+  cplt,
+  therm,
+  varia,
+  plas,
+  visco,
+  rigid_therm,
+  rigid_elec,
+  ws,
+  umat,
+  biot,
+  discrete,
+  joint_mc,
+  joint_fczm
 };
 
 // One line of up to 3 values at 46-59, 67-80, 88-101 (read as (k(7X,D14.7)) from column 39).
@@ -49,9 +62,9 @@ enum class BulkStepKind {
 
 struct BulkStep {
   BulkStepKind kind = BulkStepKind::values;
-  std::string_view label{};  // marker/option: label LMGC90 writes ('cplt:', 'ani_:', 'WSlw=')
+  std::string_view label{};    // marker/option: label LMGC90 writes ('cplt:', 'ani_:', 'WSlw=')
   std::string_view checked{};  // text LMGC90 checks from column 41 (fatal otherwise); empty: none
-  int first = 0;             // option: columns of the value
+  int first = 0;               // option: columns of the value
   int last = 0;
   BulkOptionStyle style = BulkOptionStyle::labelled13;
   std::span<const BulkOptionCase> cases{};   // option, anisotropy_values

@@ -14,10 +14,16 @@ namespace lmgc::grammar {
 namespace {
 
 // Value k (0-based) of a value line sits at columns 46+21k .. 59+21k ('(k(7X,D14.7))' from 39).
-constexpr int value_first(int k) { return 46 + 21 * k; }
-constexpr int value_last(int k) { return 59 + 21 * k; }
+constexpr int value_first(int k) {
+  return 46 + 21 * k;
+}
+constexpr int value_last(int k) {
+  return 59 + 21 * k;
+}
 
-bool is_blank(std::string_view text) { return text.find_first_not_of(" \t") == std::string_view::npos; }
+bool is_blank(std::string_view text) {
+  return text.find_first_not_of(" \t") == std::string_view::npos;
+}
 
 // A line whose first non-blank character is '!': not a comment for LMGC90's reader (column 1
 // only), but skipped as any line between blocks; LMGC90's own echo header has three of them.
@@ -72,7 +78,8 @@ class BulkBehavParser {
           file.laws.push_back(std::move(*law));
         }
       } else if (!skipping_unknown_law && !is_indented_comment(line.text)) {
-        reader_.report("L1019", line, 1, static_cast<int>(std::max<std::size_t>(trim_right(line.text).size(), 1)),
+        reader_.report("L1019", line, 1,
+                       static_cast<int>(std::max<std::size_t>(trim_right(line.text).size(), 1)),
                        "line outside any '$behav' block; LMGC90 skips it");
       }
     }
@@ -84,7 +91,8 @@ class BulkBehavParser {
  private:
   void read_gravity(BulkBehavFile& file, const Line& line, bool guide_spelling) {
     if (guide_spelling)
-      reader_.report("L1018", line, 1, static_cast<int>(std::max<std::size_t>(trim_right(line.text).size(), 1)),
+      reader_.report("L1018", line, 1,
+                     static_cast<int>(std::max<std::size_t>(trim_right(line.text).size(), 1)),
                      "'$gravity' is the user's guide spelling; LMGC90 reads only '$gravy' (columns 2-6) and "
                      "would stop with 'error reading gravy'",
                      "write '$gravy'");
@@ -133,8 +141,10 @@ class BulkBehavParser {
     if (layout.field_allowed && columns(line->text, 46, 50) == "field") {
       values.field = true;
     } else {
-      for (int k = 0; k < layout.count && k < 3; ++k) values.values.push_back(reader_.real(*line, value_first(k), value_last(k)));
-      if (layout.by_dimension) third_columns_blank_ = third_columns_blank_ && is_blank(columns(line->text, 88, 101));
+      for (int k = 0; k < layout.count && k < 3; ++k)
+        values.values.push_back(reader_.real(*line, value_first(k), value_last(k)));
+      if (layout.by_dimension)
+        third_columns_blank_ = third_columns_blank_ && is_blank(columns(line->text, 88, 101));
     }
     out.push_back(std::move(values));
     return true;
@@ -162,41 +172,57 @@ class BulkBehavParser {
       bool ends_block = false;
       switch (step.kind) {
         case BulkStepKind::marker: {
-          const Line* line = next_line("the '" + std::string(step.checked) + "' line of " + std::string(info.name));
-          if (!line) { complete = false; break; }
+          const Line* line =
+              next_line("the '" + std::string(step.checked) + "' line of " + std::string(info.name));
+          if (!line) {
+            complete = false;
+            break;
+          }
           const int last = 40 + static_cast<int>(step.checked.size());
           if (columns(line->text, 41, last) != step.checked)
             reader_.report("L1016", *line, 41, last,
-                           "expected '" + std::string(step.checked) + "' in columns 41-" + std::to_string(last) + " (" +
-                               std::string(info.name) + " sub-block); LMGC90 stops with 'BULK_BEHAV.DAT unreadable'");
+                           "expected '" + std::string(step.checked) + "' in columns 41-" +
+                               std::to_string(last) + " (" + std::string(info.name) +
+                               " sub-block); LMGC90 stops with 'BULK_BEHAV.DAT unreadable'");
           break;
         }
         case BulkStepKind::option: {
-          const std::string what = step.label.empty() ? "the model of " + std::string(info.name)
-                                                      : "the '" + std::string(step.label) + "' line of " + std::string(info.name);
+          const std::string what =
+              step.label.empty() ? "the model of " + std::string(info.name)
+                                 : "the '" + std::string(step.label) + "' line of " + std::string(info.name);
           const Line* line = next_line(what);
-          if (!line) { complete = false; break; }
+          if (!line) {
+            complete = false;
+            break;
+          }
           if (!step.checked.empty() && columns(line->text, 41, 45) != step.checked)
-            reader_.report("L1016", *line, 41, 45,
-                           "expected '" + std::string(step.checked) + "' in columns 41-45; LMGC90 stops here");
+            reader_.report(
+                "L1016", *line, 41, 45,
+                "expected '" + std::string(step.checked) + "' in columns 41-45; LMGC90 stops here");
           Word word = reader_.word(*line, step.first, step.last);
           const auto match = std::find_if(step.cases.begin(), step.cases.end(),
                                           [&](const BulkOptionCase& c) { return c.value == word.value; });
           block.options.push_back(word);
           if (match == step.cases.end()) {
             std::string accepted;
-            for (const BulkOptionCase& c : step.cases) accepted += (accepted.empty() ? "" : ", ") + std::string(c.value);
+            for (const BulkOptionCase& c : step.cases)
+              accepted += (accepted.empty() ? "" : ", ") + std::string(c.value);
             reader_.report("L1017", *line, step.first, step.last,
-                           "'" + word.value + "' in columns " + std::to_string(step.first) + "-" + std::to_string(step.last) +
-                               " is not one of " + accepted + " (" + std::string(info.name) + " sub-block)");
+                           "'" + word.value + "' in columns " + std::to_string(step.first) + "-" +
+                               std::to_string(step.last) + " is not one of " + accepted + " (" +
+                               std::string(info.name) + " sub-block)");
             break;
           }
           if (!match->supported)
             reader_.report("L1017", *line, step.first, step.last,
-                           "'" + word.value + "' is accepted by LMGC90's reader but not implemented: it stops with "
-                           "'Not implemented yet'",
+                           "'" + word.value +
+                               "' is accepted by LMGC90's reader but not implemented: it stops with "
+                               "'Not implemented yet'",
                            "only 'standard' elasticity is implemented");
-          if (!read_lines(match->lines, block.lines)) { complete = false; break; }
+          if (!read_lines(match->lines, block.lines)) {
+            complete = false;
+            break;
+          }
           ends_block = match->ends_block;
           break;
         }
@@ -219,12 +245,17 @@ class BulkBehavParser {
         }
         case BulkStepKind::file_name: {
           const Line* line = next_line("the user material file name");
-          if (!line) { complete = false; break; }
+          if (!line) {
+            complete = false;
+            break;
+          }
           const std::string_view text = columns(line->text, 1, static_cast<int>(kRecordLength));
           // LMGC90 keeps the name in a character(len=50).
-          block.file_name = Word{list_directed_word(text).substr(0, 50), reader_.span(*line, 1, static_cast<int>(trim_right(text).size()))};
+          block.file_name = Word{list_directed_word(text).substr(0, 50),
+                                 reader_.span(*line, 1, static_cast<int>(trim_right(text).size()))};
           if (block.file_name.value.empty())
-            reader_.report("L1015", *line, 1, static_cast<int>(std::max<std::size_t>(trim_right(text).size(), 1)),
+            reader_.report("L1015", *line, 1,
+                           static_cast<int>(std::max<std::size_t>(trim_right(text).size(), 1)),
                            "the user material file name is missing");
           break;
         }
@@ -257,11 +288,14 @@ class BulkBehavParser {
     third_columns_blank_ = true;
     if (kind->first_line == BulkFirstLine::umas) {
       // spec: datbox-inputs.md §2 read_UMASS: 'field' at 46-50, else Umas at 46-59.
-      if (columns(line->text, 46, 50) == "field") law.density_field = true;
-      else law.density = reader_.real(*line, 46, 59);
+      if (columns(line->text, 46, 50) == "field")
+        law.density_field = true;
+      else
+        law.density = reader_.real(*line, 46, 59);
     } else {
       const BulkValueLayout& layout = kind->first_values;
-      for (int k = 0; k < layout.count && k < 3; ++k) law.first_line_values.push_back(reader_.real(*line, value_first(k), value_last(k)));
+      for (int k = 0; k < layout.count && k < 3; ++k)
+        law.first_line_values.push_back(reader_.real(*line, value_first(k), value_last(k)));
       if (layout.by_dimension) third_columns_blank_ = is_blank(columns(line->text, 88, 101));
     }
     for (BulkBlockKind block : kind->blocks)

@@ -106,7 +106,8 @@ std::string anisotropy_of(const BulkLaw& law) {
 }
 
 const BulkOptionCase* find_case(std::span<const BulkOptionCase> cases, std::string_view value) {
-  const auto it = std::find_if(cases.begin(), cases.end(), [&](const BulkOptionCase& c) { return c.value == value; });
+  const auto it =
+      std::find_if(cases.begin(), cases.end(), [&](const BulkOptionCase& c) { return c.value == value; });
   return it == cases.end() ? nullptr : &*it;
 }
 
@@ -134,7 +135,8 @@ void write_block(std::string& out, const BulkLaw& law, const BulkBlock& block) {
         writer.lines(step.lines);
         break;
       case BulkStepKind::anisotropy_values:
-        if (const BulkOptionCase* chosen = find_case(step.cases, anisotropy_of(law))) writer.lines(chosen->lines);
+        if (const BulkOptionCase* chosen = find_case(step.cases, anisotropy_of(law)))
+          writer.lines(chosen->lines);
         break;
       case BulkStepKind::file_name:  // (38X,1(2X,A50))
         out += kIndent;

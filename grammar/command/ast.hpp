@@ -42,13 +42,13 @@ struct CommandValue {
 struct CommandLine {
   CommandLineKind kind = CommandLineKind::blank;
   // The line is indent blanks + text + trailer, byte for byte.
-  std::uint32_t indent = 0;  // leading blanks of columns 1-30 (CHIC strips them)
-  Word text;                 // the rest of columns 1-30, trailing blanks removed: what CHIC compares
-  std::string trailer;       // everything after `text`: blanks, the ':' of column 31, the comment
-  bool crlf = false;         // the line ended with "\r\n"
-  std::string keyword;       // keyword / control: the catalogue spelling matched
-  std::string parameter;     // keyword / control: the text after the keyword ("STEP 100", "32 FOIS",
-                             // the label of DEPUIS/SUR/INTO, the name of APPELLE/SUB)
+  std::uint32_t indent = 0;           // leading blanks of columns 1-30 (CHIC strips them)
+  Word text;                          // the rest of columns 1-30, trailing blanks removed: what CHIC compares
+  std::string trailer;                // everything after `text`: blanks, the ':' of column 31, the comment
+  bool crlf = false;                  // the line ended with "\r\n"
+  std::string keyword;                // keyword / control: the catalogue spelling matched
+  std::string parameter;              // keyword / control: the text after the keyword ("STEP 100", "32 FOIS",
+                                      // the label of DEPUIS/SUR/INTO, the name of APPELLE/SUB)
   std::optional<CommandValue> value;  // argument lines
   friend bool operator==(const CommandLine&, const CommandLine&) = default;
 };

@@ -10,9 +10,9 @@ using I = CommandInline;
 constexpr A kReal[] = {A::real};
 constexpr A kInteger[] = {A::integer};
 constexpr A kWord[] = {A::word};
-constexpr A kNlgsCheck[] = {A::type_tol, A::real};                                  // type tol / relax
+constexpr A kNlgsCheck[] = {A::type_tol, A::real};                                    // type tol / relax
 constexpr A kNlgsSolver[] = {A::word, A::type_tol, A::real, A::integer, A::integer};  // storage .. block iter
-constexpr A kSourcePoint[] = {A::integer, A::real, A::reals};                       // first body, radius, shift
+constexpr A kSourcePoint[] = {A::integer, A::real, A::reals};  // first body, radius, shift
 constexpr A kTwoReals[] = {A::reals, A::reals};
 constexpr A kBiaxialWalls[] = {A::reals, A::real, A::real, A::word};
 constexpr std::span<const A> kNone{};
@@ -224,12 +224,15 @@ constexpr CommandKeyword kKeywords[] = {
 
 }  // namespace
 
-std::span<const CommandKeyword> command_catalogue() { return kKeywords; }
+std::span<const CommandKeyword> command_catalogue() {
+  return kKeywords;
+}
 
 const CommandKeyword* find_command_keyword(std::string_view text) {
   const CommandKeyword* best = nullptr;
   for (const CommandKeyword& k : kKeywords) {
-    const bool matches = k.match == CommandMatch::exact ? text == k.keyword : text.substr(0, k.keyword.size()) == k.keyword;
+    const bool matches =
+        k.match == CommandMatch::exact ? text == k.keyword : text.substr(0, k.keyword.size()) == k.keyword;
     if (matches && (!best || k.keyword.size() > best->keyword.size())) best = &k;
   }
   return best;

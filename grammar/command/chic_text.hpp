@@ -33,7 +33,10 @@ inline std::vector<std::string_view> list_items(std::string_view text) {
   while (p < text.size()) {
     while (p < text.size() && (text[p] == ' ' || text[p] == '\t')) ++p;
     if (p >= text.size() || text[p] == '/') break;
-    if (text[p] == ',') { ++p; continue; }
+    if (text[p] == ',') {
+      ++p;
+      continue;
+    }
     const std::size_t begin = p;
     while (p < text.size() && text[p] != ' ' && text[p] != '\t' && text[p] != ',' && text[p] != '/') ++p;
     items.push_back(text.substr(begin, p - begin));

@@ -52,7 +52,8 @@ class Compiler {
           for (std::size_t s = main_end + 1; s < file_end && sub == file_end; ++s)
             if (text(s) == target) sub = s;
           if (sub == file_end) {
-            report("L1012", entry, "'" + target + "' not found after 'FIN DU PROGRAMME' (LMGC90: introuvable)");
+            report("L1012", entry,
+                   "'" + target + "' not found after 'FIN DU PROGRAMME' (LMGC90: introuvable)");
             return std::nullopt;
           }
           deployed.push_back(sub);
@@ -109,7 +110,9 @@ class Compiler {
 
  private:
   const std::string& text(std::size_t line) const { return file_.lines[line].text.value; }
-  const std::string& deployed_text(const CommandProgram& p, std::size_t k) const { return text(p.entries[k]); }
+  const std::string& deployed_text(const CommandProgram& p, std::size_t k) const {
+    return text(p.entries[k]);
+  }
   void report(std::string_view code, std::size_t line, std::string message) {
     sink_.report(code, Location{path_, file_.lines[line].text.span}, std::move(message));
   }
@@ -123,7 +126,8 @@ class Compiler {
 };
 
 // The first deployed entry with this text and occurrence (CHIC's target search); n if none.
-std::size_t find_entry(const CommandFile& file, const CommandProgram& p, std::string_view target, std::int64_t occurrence) {
+std::size_t find_entry(const CommandFile& file, const CommandProgram& p, std::string_view target,
+                       std::int64_t occurrence) {
   for (std::size_t k = 0; k < p.entries.size(); ++k)
     if (file.lines[p.entries[k]].text.value == target && p.occurrence[k] == occurrence) return k;
   return p.entries.size();
@@ -176,7 +180,8 @@ std::size_t run_command_program(const CommandFile& file, std::size_t max_command
       command.module = kind ? std::string(kind->module) : std::string();
       command.text = line.text.value;
       command.parameter = line.parameter;
-      for (std::size_t a = p.entries[k] + 1; a < file.lines.size() && file.lines[a].kind == CommandLineKind::argument; ++a)
+      for (std::size_t a = p.entries[k] + 1;
+           a < file.lines.size() && file.lines[a].kind == CommandLineKind::argument; ++a)
         if (file.lines[a].value) command.arguments.push_back(*file.lines[a].value);
       command.line = line.text.span.line;
       command.deployed = k;
@@ -202,7 +207,8 @@ std::size_t run_command_program(const CommandFile& file, std::size_t max_command
         // Leave through the next REPETE line with its counter at zero.
         for (std::size_t i = k + 1; i < n_entries; ++i) {
           if (!starts_with(text(i), "REPETE")) continue;
-          const auto loop = std::find_if(p.loops.begin(), p.loops.end(), [&](const CommandLoop& c) { return c.repete == i; });
+          const auto loop = std::find_if(p.loops.begin(), p.loops.end(),
+                                         [&](const CommandLoop& c) { return c.repete == i; });
           if (loop != p.loops.end()) {
             counter[static_cast<std::size_t>(loop - p.loops.begin())] = 0;
             k = i - 1;
@@ -254,9 +260,11 @@ std::size_t run_command_program(const CommandFile& file, std::size_t max_command
 }
 
 std::vector<ExecutedCommand> expand_command_program(const CommandFile& file, std::size_t max_commands,
-                                                    DiagnosticSink& sink, std::span<const CommandFlagRule> rules) {
+                                                    DiagnosticSink& sink,
+                                                    std::span<const CommandFlagRule> rules) {
   std::vector<ExecutedCommand> executed;
-  run_command_program(file, max_commands, sink, rules, [&](const ExecutedCommand& c) { executed.push_back(c); });
+  run_command_program(file, max_commands, sink, rules,
+                      [&](const ExecutedCommand& c) { executed.push_back(c); });
   return executed;
 }
 

@@ -22,8 +22,8 @@ struct CommandLoop {
 };
 
 struct CommandProgram {
-  std::vector<std::size_t> entries;        // deployed list: indices into CommandFile::lines
-  std::vector<std::int64_t> occurrence;    // 'OCCURENCE m' on the next entry, else 0
+  std::vector<std::size_t> entries;      // deployed list: indices into CommandFile::lines
+  std::vector<std::int64_t> occurrence;  // 'OCCURENCE m' on the next entry, else 0
   std::vector<CommandLoop> loops;
 };
 
@@ -39,8 +39,8 @@ struct ExecutedCommand {
   std::string text;       // the significant text of the line ("WRITE OUT DOF STEP 100")
   std::string parameter;  // the text after the keyword ("STEP 100")
   std::vector<CommandValue> arguments;
-  std::uint32_t line = 0;      // line in COMMAND.DAT
-  std::size_t deployed = 0;    // index in the deployed program
+  std::uint32_t line = 0;    // line in COMMAND.DAT
+  std::size_t deployed = 0;  // index in the deployed program
 };
 
 // A flag that a command sets when it runs (CHIC flags: AFTER ITER CHECK sets flag 1 to 0 when
@@ -63,19 +63,19 @@ std::vector<ExecutedCommand> expand_command_program(const CommandFile& file, std
 struct CommandRunParameters {
   double dt = 0.0;
   double theta = 0.5;
-  long steps = 0;                 // INCREMENT STEP executed (run bounded to 10^7 commands)
-  std::string norm;               // 'Quad', 'QuaN', 'Maxm', 'QM/16' (trailing blanks removed)
+  long steps = 0;    // INCREMENT STEP executed (run bounded to 10^7 commands)
+  std::string norm;  // 'Quad', 'QuaN', 'Maxm', 'QM/16' (trailing blanks removed)
   double tolerance = 0.0;
   double relax = 1.0;
-  std::string storage;            // Stored_Delassus_Loops / Exchange_Local_Global
-  int gs_it1 = 0, gs_it2 = 0;     // sweeps per check, checks: REPETE counts + 1
-  long write_every = 0;           // WRITE OUT DOF STEP p
-  long display_every = 0;         // WRITE OUTPUT GMV STEP n
+  std::string storage;         // Stored_Delassus_Loops / Exchange_Local_Global
+  int gs_it1 = 0, gs_it2 = 0;  // sweeps per check, checks: REPETE counts + 1
+  long write_every = 0;        // WRITE OUT DOF STEP p
+  long display_every = 0;      // WRITE OUTPUT GMV STEP n
   bool quick_scramble = false;
   double y_min = 0.0;
   bool has_y_min = false;
-  double x_period = 0.0;          // PERIODIC CONDITION (2D) / XPERIODIC CONDITION (3D); 0 = none
-  double y_period = 0.0;          // YPERIODIC CONDITION (3D)
+  double x_period = 0.0;  // PERIODIC CONDITION (2D) / XPERIODIC CONDITION (3D); 0 = none
+  double y_period = 0.0;  // YPERIODIC CONDITION (3D)
 };
 CommandRunParameters command_run_parameters(const CommandFile& file, DiagnosticSink& sink);
 

@@ -19,12 +19,16 @@ using chic::starts_with;
 constexpr std::size_t kSignificantColumns = 30;  // READ(1,'(A30)')
 constexpr std::size_t kMaxLines = 1000;          // NTXZZZ
 
-bool is_program_end(std::string_view t) { return t == "FIN DU PROGRAMME" || t == "FIN_DU_PROGRAMME"; }
-bool is_file_end(std::string_view t) { return t == "FIN DU FICHIER" || t == "FIN_DU_FICHIER"; }
+bool is_program_end(std::string_view t) {
+  return t == "FIN DU PROGRAMME" || t == "FIN_DU_PROGRAMME";
+}
+bool is_file_end(std::string_view t) {
+  return t == "FIN DU FICHIER" || t == "FIN_DU_FICHIER";
+}
 
 // Characters where a control word's label or name starts (CHIC's CHZZZ(k:30) cuts).
 std::optional<std::size_t> label_offset(std::string_view keyword) {
-  if (keyword == "APPEL") return 8;   // 'APPELLE name': name = CHZZZ(9:30)
+  if (keyword == "APPEL") return 8;  // 'APPELLE name': name = CHZZZ(9:30)
   if (keyword == "SUB ") return 4;
   if (keyword == "DEPUIS") return 7;  // CKZZZ = CHLZZZ(N+1)(8:30)
   if (keyword == "SUR ") return 4;    // CHLZZZ(N+1)(5:30)
@@ -57,7 +61,9 @@ class CommandParser {
     if (main_end == count) {
       at_end("L1012", "no 'FIN DU PROGRAMME' line: LMGC90 reads past the end of the file and stops");
     } else if (file_end == count) {
-      at_end("L1012", "no 'FIN DU FICHIER' line after 'FIN DU PROGRAMME': LMGC90 reads past the end of the file and stops");
+      at_end("L1012",
+             "no 'FIN DU FICHIER' line after 'FIN DU PROGRAMME': LMGC90 reads past the end of the file and "
+             "stops");
     }
     if (main_end != count && main_end + 1 > kMaxLines)
       report("L1003", file.lines[kMaxLines], "more than 1000 lines before 'FIN DU PROGRAMME' (CHIC's limit)");
@@ -70,7 +76,8 @@ class CommandParser {
     if (main_end + 1 < last) classify(file, main_end + 1, last);
     resolve_labels(file, last);
     check_chic_command(file, std::min(main_end + 1, count));
-    if (main_end != count && file_end != count && sink_.error_count() == errors_before) compile_command_program(file, sink_, source_.path());
+    if (main_end != count && file_end != count && sink_.error_count() == errors_before)
+      compile_command_program(file, sink_, source_.path());
     return file;
   }
 
@@ -88,7 +95,8 @@ class CommandParser {
       std::string_view text = significant.substr(indent);
       while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
       out.indent = static_cast<std::uint32_t>(indent);
-      out.text = Word{std::string(text), make_span(line.number, indent + 1, indent + std::max<std::size_t>(text.size(), 1))};
+      out.text = Word{std::string(text),
+                      make_span(line.number, indent + 1, indent + std::max<std::size_t>(text.size(), 1))};
       out.trailer = std::string(raw.substr(indent + text.size()));
       file.lines.push_back(std::move(out));
     }
@@ -101,8 +109,10 @@ class CommandParser {
                  std::string message) {
     const std::uint32_t number = line.text.span.line;
     const std::size_t first = line.indent + offset + 1;
-    sink_.report(code, Location{source_.path(), make_span(number, first, first + std::max<std::size_t>(length, 1) - 1)},
-                 std::move(message));
+    sink_.report(
+        code,
+        Location{source_.path(), make_span(number, first, first + std::max<std::size_t>(length, 1) - 1)},
+        std::move(message));
   }
   void at_end(std::string_view code, std::string message) {
     const auto& lines = source_.lines();
@@ -118,23 +128,38 @@ class CommandParser {
     for (std::size_t i = begin; i < end; ++i) {
       CommandLine& line = file.lines[i];
       const std::string_view text = line.text.value;
-      if (text.empty()) { line.kind = CommandLineKind::blank; continue; }
-      if (text[0] == '#') { line.kind = CommandLineKind::comment; continue; }
-      if (text[0] == '.') { line.kind = CommandLineKind::message; continue; }
+      if (text.empty()) {
+        line.kind = CommandLineKind::blank;
+        continue;
+      }
+      if (text[0] == '#') {
+        line.kind = CommandLineKind::comment;
+        continue;
+      }
+      if (text[0] == '.') {
+        line.kind = CommandLineKind::message;
+        continue;
+      }
       const CommandKeyword* keyword = find_command_keyword(text);
-      if (!keyword) { line.kind = CommandLineKind::unknown; continue; }
+      if (!keyword) {
+        line.kind = CommandLineKind::unknown;
+        continue;
+      }
       line.kind = keyword->control ? CommandLineKind::control : CommandLineKind::keyword;
       line.keyword = std::string(keyword->keyword);
-      if (const auto offset = label_offset(keyword->keyword)) line.parameter = std::string(from(text, *offset));
-      else line.parameter = std::string(chic::trim_blanks(from(text, keyword->keyword.size())));
+      if (const auto offset = label_offset(keyword->keyword))
+        line.parameter = std::string(from(text, *offset));
+      else
+        line.parameter = std::string(chic::trim_blanks(from(text, keyword->keyword.size())));
       check_inline(file, i, end, *keyword);
       // Arguments: the following lines, whatever they hold (CHLZZZ(NZZZ+1), ...).
       const auto arguments = keyword->arguments;
       for (std::size_t k = 0; k < arguments.size(); ++k) {
         if (i + 1 >= end) {
-          report("L1006", line, "'" + std::string(keyword->keyword) + "' needs " + std::to_string(arguments.size()) +
-                                    " argument line(s); the " + (end == file.lines.size() ? "file" : "section") +
-                                    " ends first");
+          report("L1006", line,
+                 "'" + std::string(keyword->keyword) + "' needs " + std::to_string(arguments.size()) +
+                     " argument line(s); the " + (end == file.lines.size() ? "file" : "section") +
+                     " ends first");
           break;
         }
         ++i;
@@ -151,29 +176,36 @@ class CommandParser {
     auto next_starts = [&](std::string_view word, std::string_view what) {
       if (i + 1 >= end || !starts_with(file.lines[i + 1].text.value, word)) {
         const CommandLine& where = i + 1 < end ? file.lines[i + 1] : line;
-        report("L1013", where, "'" + std::string(keyword.keyword) + "' must be followed by a '" + std::string(word) +
-                                   "' line (" + std::string(what) + ")");
+        report("L1013", where,
+               "'" + std::string(keyword.keyword) + "' must be followed by a '" + std::string(word) +
+                   "' line (" + std::string(what) + ")");
       }
     };
     if (keyword.inline_part == CommandInline::step_or_dtps) {
       if (parameter.empty()) {
         if (starts_with(keyword.keyword, "WRITE OUT ") || starts_with(keyword.keyword, "BINARY WRITE OUT "))
-          report("L1015", line, "'" + std::string(keyword.keyword) + "' needs 'STEP n' or 'DTPS dt' (LMGC90 stops)");
+          report("L1015", line,
+                 "'" + std::string(keyword.keyword) + "' needs 'STEP n' or 'DTPS dt' (LMGC90 stops)");
       } else if (starts_with(parameter, "STEP")) {
         const auto n = chic::list_integer(from(parameter, 4));
-        if (!n) report_at("L1004", line, parameter_offset, parameter.size(), "'STEP' must be followed by an integer");
-        else if (*n < 1) report_at("L1003", line, parameter_offset, parameter.size(), "'STEP' period must be >= 1");
+        if (!n)
+          report_at("L1004", line, parameter_offset, parameter.size(),
+                    "'STEP' must be followed by an integer");
+        else if (*n < 1)
+          report_at("L1003", line, parameter_offset, parameter.size(), "'STEP' period must be >= 1");
       } else if (starts_with(parameter, "DTPS")) {
         const auto items = chic::list_items(from(parameter, 4));
         const auto value = items.empty() ? std::nullopt : read_list_directed_real(items[0]);
         if (!value || value->error != NumberError::none)
           report_at("L1002", line, parameter_offset, parameter.size(), "'DTPS' must be followed by a real");
       } else {
-        sink_.report(Diagnostic{"L1019", Severity::warning,
+        sink_.report(Diagnostic{"L1019",
+                                Severity::warning,
                                 Location{source_.path(), line.text.span},
                                 "'" + std::string(parameter) + "' after '" + std::string(keyword.keyword) +
                                     "' is neither 'STEP n' nor 'DTPS dt'; LMGC90 ignores it",
-                                {}, {}});
+                                {},
+                                {}});
       }
       return;
     }
@@ -181,24 +213,33 @@ class CommandParser {
     if (k == "DEPUIS") {
       // Only the line after a REPETE (or its DEPUIS line, for 'DEPUIS OCCURENCE m') is read as a
       // loop label; elsewhere CHIC ignores the line (mecaMAILx_2D/taylor lost its REPETE).
-      const std::string_view before = i > 0 ? std::string_view(file.lines[i - 1].text.value) : std::string_view();
-      const bool read = starts_with(before, "REPETE") || (starts_with(parameter, "OCCURENCE") && starts_with(before, "DEPUIS"));
+      const std::string_view before =
+          i > 0 ? std::string_view(file.lines[i - 1].text.value) : std::string_view();
+      const bool read = starts_with(before, "REPETE") ||
+                        (starts_with(parameter, "OCCURENCE") && starts_with(before, "DEPUIS"));
       if (!read)
-        sink_.report(Diagnostic{"L1019", Severity::warning, Location{source_.path(), line.text.span},
-                                "'DEPUIS' does not follow a 'REPETE n FOIS' line: no loop ends here and LMGC90 ignores it",
-                                {}, {}});
+        sink_.report(Diagnostic{
+            "L1019",
+            Severity::warning,
+            Location{source_.path(), line.text.span},
+            "'DEPUIS' does not follow a 'REPETE n FOIS' line: no loop ends here and LMGC90 ignores it",
+            {},
+            {}});
     } else if (k == "REPETE") {
-      if (!chic::repete_count(text)) report("L1004", line, "'REPETE n FOIS' needs an integer n and the word FOIS");
+      if (!chic::repete_count(text))
+        report("L1004", line, "'REPETE n FOIS' needs an integer n and the word FOIS");
       next_starts("DEPUIS", "the loop label");
     } else if (k == "STOP REPETE SI IOK =" || k == "CAP SI IOK =") {
       if (!chic::list_integer(parameter))
-        report_at("L1004", line, parameter_offset, parameter.size(), "'" + std::string(k) + "' must be followed by an integer");
+        report_at("L1004", line, parameter_offset, parameter.size(),
+                  "'" + std::string(k) + "' must be followed by an integer");
       if (k == "CAP SI IOK =") next_starts("SUR ", "the jump target");
     } else if (k == "IOK =" || k == "ROK =") {
       if (starts_with(parameter, "FLAG") || starts_with(parameter, "DRAP")) {
         const auto f = chic::list_integer(from(parameter, 4));
         if (!f || *f < 1 || *f > 15)
-          report_at("L1003", line, parameter_offset, parameter.size(), "flag number must be an integer from 1 to 15");
+          report_at("L1003", line, parameter_offset, parameter.size(),
+                    "flag number must be an integer from 1 to 15");
         next_starts("INTO ", "the command whose flag is read");
       } else if (parameter != "?") {
         const bool ok = k == "IOK =" ? chic::list_integer(parameter).has_value() : [&] {
@@ -206,13 +247,16 @@ class CommandParser {
           const auto v = items.empty() ? std::nullopt : read_list_directed_real(items[0]);
           return v && v->error == NumberError::none;
         }();
-        if (!ok) report_at(k == "IOK =" ? "L1004" : "L1002", line, parameter_offset, parameter.size(),
-                           "'" + std::string(k) + "' must be followed by a value, 'FLAG f'/'DRAP f' or '?'");
+        if (!ok)
+          report_at(k == "IOK =" ? "L1004" : "L1002", line, parameter_offset, parameter.size(),
+                    "'" + std::string(k) + "' must be followed by a value, 'FLAG f'/'DRAP f' or '?'");
       }
     } else if (k == "FLAG" || k == "DRAP") {
       const auto f = chic::flag_number(text, k == "FLAG" ? "= IOK" : "= ROK");
       if (!f || *f < 1 || *f > 15)
-        report("L1003", line, "'" + std::string(k) + " f = " + (k == "FLAG" ? "IOK" : "ROK") + "' needs a flag number from 1 to 15");
+        report("L1003", line,
+               "'" + std::string(k) + " f = " + (k == "FLAG" ? "IOK" : "ROK") +
+                   "' needs a flag number from 1 to 15");
       next_starts("INTO ", "the command whose flag is set");
     }
   }
@@ -240,12 +284,15 @@ class CommandParser {
         break;
       case CommandArgumentKind::integer: {
         const auto items = chic::list_items(text);
-        if (items.empty()) { report("L1015", line, what + ": an integer is expected"); break; }
+        if (items.empty()) {
+          report("L1015", line, what + ": an integer is expected");
+          break;
+        }
         const auto v = read_list_directed_integer(items[0]);
         const std::size_t offset = static_cast<std::size_t>(items[0].data() - text.data());
         if (!v || v->error != NumberError::none) {
-          report_at(v && v->error == NumberError::out_of_range ? "L1003" : "L1004", line, offset, items[0].size(),
-                    what + ": '" + std::string(items[0]) + "' is not an integer");
+          report_at(v && v->error == NumberError::out_of_range ? "L1003" : "L1004", line, offset,
+                    items[0].size(), what + ": '" + std::string(items[0]) + "' is not an integer");
           break;
         }
         const std::size_t first = line.indent + offset + 1;
@@ -255,7 +302,10 @@ class CommandParser {
       case CommandArgumentKind::real:
       case CommandArgumentKind::reals: {
         const auto items = chic::list_items(text);
-        if (items.empty()) { report("L1015", line, what + ": a real is expected"); break; }
+        if (items.empty()) {
+          report("L1015", line, what + ": a real is expected");
+          break;
+        }
         for (std::size_t k = 0; k < (kind == CommandArgumentKind::real ? 1 : items.size()); ++k) {
           const auto r = real_at(items[k]);
           if (!r) break;
@@ -267,9 +317,13 @@ class CommandParser {
         // 'Quad 0.1666D-04': the type is characters 1-5, the tolerance is read from 6-30.
         std::string_view type = text.substr(0, std::min<std::size_t>(5, text.size()));
         while (!type.empty() && type.back() == ' ') type.remove_suffix(1);
-        value.word = Word{std::string(type), make_span(line.text.span.line, line.indent + 1, line.indent + 5)};
+        value.word =
+            Word{std::string(type), make_span(line.text.span.line, line.indent + 1, line.indent + 5)};
         const auto items = chic::list_items(from(text, 5));
-        if (items.empty()) { report("L1015", line, what + ": a check type and a tolerance are expected"); break; }
+        if (items.empty()) {
+          report("L1015", line, what + ": a check type and a tolerance are expected");
+          break;
+        }
         if (const auto r = real_at(items[0])) value.reals.push_back(*r);
         break;
       }
@@ -292,10 +346,15 @@ class CommandParser {
       if (targets.count(line.text.value)) {
         line.kind = CommandLineKind::label;
       } else {
-        sink_.report(Diagnostic{"L1019", Severity::warning, Location{source_.path(), line.text.span},
-                                "'" + line.text.value + "' matches no COMMAND.DAT keyword and no DEPUIS or SUR line "
-                                "names it; LMGC90 ignores it",
-                                {}, "check the spelling (keywords are case-sensitive), or start the line with '#'"});
+        sink_.report(
+            Diagnostic{"L1019",
+                       Severity::warning,
+                       Location{source_.path(), line.text.span},
+                       "'" + line.text.value +
+                           "' matches no COMMAND.DAT keyword and no DEPUIS or SUR line "
+                           "names it; LMGC90 ignores it",
+                       {},
+                       "check the spelling (keywords are case-sensitive), or start the line with '#'"});
       }
     }
   }
@@ -311,8 +370,14 @@ class CommandParser {
       mass = mass || t == "COMPUTE MASS";
     }
     if (no_check) return;
-    if (!box) at_end("L1012", "the main program has no 'COMPUTE BOX' line (LMGC90 stops; write 'NO CHECK CHIC COMMAND' to skip this check)");
-    if (!mass) at_end("L1012", "the main program has no 'COMPUTE MASS' line (LMGC90 stops; write 'NO CHECK CHIC COMMAND' to skip this check)");
+    if (!box)
+      at_end("L1012",
+             "the main program has no 'COMPUTE BOX' line (LMGC90 stops; write 'NO CHECK CHIC COMMAND' to "
+             "skip this check)");
+    if (!mass)
+      at_end("L1012",
+             "the main program has no 'COMPUTE MASS' line (LMGC90 stops; write 'NO CHECK CHIC COMMAND' to "
+             "skip this check)");
   }
 
   const SourceText& source_;
@@ -321,6 +386,8 @@ class CommandParser {
 
 }  // namespace
 
-CommandFile parse_command(const SourceText& source, DiagnosticSink& sink) { return CommandParser(source, sink).parse(); }
+CommandFile parse_command(const SourceText& source, DiagnosticSink& sink) {
+  return CommandParser(source, sink).parse();
+}
 
 }  // namespace lmgc::grammar

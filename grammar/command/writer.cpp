@@ -10,8 +10,10 @@ std::string write_command(const CommandFile& file) {
     out += line.text.value;
     out += line.trailer;
     const bool last = i + 1 == file.lines.size();
-    if (!last || file.final_newline) out += line.crlf ? "\r\n" : "\n";
-    else if (line.crlf) out += '\r';
+    if (!last || file.final_newline)
+      out += line.crlf ? "\r\n" : "\n";
+    else if (line.crlf)
+      out += '\r';
   }
   return out;
 }

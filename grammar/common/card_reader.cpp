@@ -17,7 +17,9 @@ std::string_view columns(std::string_view line, int first, int last) {
   return line.substr(begin, end - begin);
 }
 
-std::string_view keyword_of(std::string_view line) { return columns(line, 2, 6); }
+std::string_view keyword_of(std::string_view line) {
+  return columns(line, 2, 6);
+}
 
 bool is_skipped_line(std::string_view line) {
   if (!line.empty() && (line[0] == '!' || line[0] == '#')) return true;
@@ -44,13 +46,16 @@ bool CardReader::check_records(Empty empty) {
     for (std::size_t i = start; i < text.size(); ++i) {
       if (static_cast<unsigned char>(text[i]) > 127) {
         const int col = static_cast<int>(i) + 1;
-        report("L1008", line, col, col,
-               "non-ASCII byte 0x" + [&] {
-                 static const char* hex = "0123456789ABCDEF";
-                 const auto b = static_cast<unsigned char>(text[i]);
-                 return std::string{hex[b >> 4], hex[b & 15]};
-               }() + " in column " + std::to_string(col),
-               "LMGC90 input files are plain ASCII");
+        report(
+            "L1008", line, col, col,
+            "non-ASCII byte 0x" +
+                [&] {
+                  static const char* hex = "0123456789ABCDEF";
+                  const auto b = static_cast<unsigned char>(text[i]);
+                  return std::string{hex[b >> 4], hex[b & 15]};
+                }() +
+                " in column " + std::to_string(col),
+            "LMGC90 input files are plain ASCII");
         break;  // one report per line
       }
     }
@@ -77,9 +82,13 @@ void CardReader::skip_insignificant() {
   while (index_ < lines.size() && is_skipped_line(lines[index_].text)) ++index_;
 }
 
-bool CardReader::at_end() const { return index_ >= source_.lines().size(); }
+bool CardReader::at_end() const {
+  return index_ >= source_.lines().size();
+}
 
-const Line& CardReader::peek() const { return source_.lines()[index_]; }
+const Line& CardReader::peek() const {
+  return source_.lines()[index_];
+}
 
 const Line& CardReader::next() {
   const Line& line = source_.lines()[index_++];
@@ -132,21 +141,24 @@ void CardReader::check_spill(const Line& line, int first, int last) {
   const std::string_view field = columns(text, first, last);
   if (field.find_first_not_of(" \t") == std::string_view::npos) return;
   const std::size_t after = static_cast<std::size_t>(last);  // 0-based index of column last+1
-  const bool spills_right = after < std::min(text.size(), kRecordLength) && is_number_char(text[after]) &&
-                            field.back() != ' ';
+  const bool spills_right =
+      after < std::min(text.size(), kRecordLength) && is_number_char(text[after]) && field.back() != ' ';
   const std::size_t before = static_cast<std::size_t>(first - 2);  // 0-based index of column first-1
   const bool spills_left = first >= 2 && before < text.size() &&
                            ((text[before] >= '0' && text[before] <= '9') || text[before] == '.') &&
                            field.front() != ' ';
   if (spills_right || spills_left) {
     // The whole token as written, to show what LMGC90 cuts it to.
-    std::size_t begin = static_cast<std::size_t>(first - 1), end = std::min(text.size(), static_cast<std::size_t>(last));
-    while (begin > 0 && (is_number_char(text[begin - 1]) || text[begin - 1] == '-' || text[begin - 1] == '+')) --begin;
+    std::size_t begin = static_cast<std::size_t>(first - 1),
+                end = std::min(text.size(), static_cast<std::size_t>(last));
+    while (begin > 0 && (is_number_char(text[begin - 1]) || text[begin - 1] == '-' || text[begin - 1] == '+'))
+      --begin;
     const std::size_t record = std::min(text.size(), kRecordLength);  // not past what LMGC90 reads
     while (end < record && (is_number_char(text[end]) || text[end] == '-' || text[end] == '+')) ++end;
     report("L1011", line, first, last,
            "value '" + std::string(trim(text.substr(begin, end - begin))) + "' spills out of columns " +
-               std::to_string(first) + "-" + std::to_string(last) + "; LMGC90 reads '" + std::string(trim(field)) + "'",
+               std::to_string(first) + "-" + std::to_string(last) + "; LMGC90 reads '" +
+               std::string(trim(field)) + "'",
            "align the value on columns " + std::to_string(first) + "-" + std::to_string(last) +
                " (LMGC90 reads only those columns)");
   }
@@ -183,8 +195,7 @@ Integer CardReader::integer(const Line& line, int first, int last, bool spill) {
     return Integer{0, span(line, first, last)};
   }
   if (r.error == NumberError::out_of_range) {
-    report("L1003", line, first, last,
-           "'" + std::string(trim(field)) + "' does not fit a 32-bit integer");
+    report("L1003", line, first, last, "'" + std::string(trim(field)) + "' does not fit a 32-bit integer");
     return Integer{0, span(line, first, last)};
   }
   if (spill) check_spill(line, first, last);
@@ -196,12 +207,14 @@ Word CardReader::word(const Line& line, int first, int last) {
   return Word{std::string(trim_right(field)), span(line, first, last)};
 }
 
-std::optional<Integer> CardReader::list_integer(const Line& line, int first, int last, std::string_view what) {
+std::optional<Integer> CardReader::list_integer(const Line& line, int first, int last,
+                                                std::string_view what) {
   const std::string_view field = columns(line.text, first, last);
   auto r = read_list_directed_integer(field);
   if (!r) {
-    report("L1015", line, first, last,
-           std::string(what) + " is missing in columns " + std::to_string(first) + "-" + std::to_string(last));
+    report(
+        "L1015", line, first, last,
+        std::string(what) + " is missing in columns " + std::to_string(first) + "-" + std::to_string(last));
     return std::nullopt;
   }
   if (r->error != NumberError::none) {

@@ -37,8 +37,8 @@ class CardReader {
 
   // Cursor over significant lines (comments and blanks skipped).
   bool at_end() const;
-  const Line& peek() const;       // requires !at_end()
-  const Line& next();             // requires !at_end()
+  const Line& peek() const;  // requires !at_end()
+  const Line& next();        // requires !at_end()
   std::size_t position() const { return index_; }
   void rewind_to(std::size_t position) { index_ = position; }
   void skip_insignificant();

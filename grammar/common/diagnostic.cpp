@@ -6,15 +6,17 @@ namespace lmgc::grammar {
 
 std::string_view severity_name(Severity severity) {
   switch (severity) {
-    case Severity::note: return "note";
-    case Severity::warning: return "warning";
-    case Severity::error: return "error";
+    case Severity::note:
+      return "note";
+    case Severity::warning:
+      return "warning";
+    case Severity::error:
+      return "error";
   }
   return "error";
 }
 
-void DiagnosticSink::report(std::string_view code, Location where, std::string message,
-                            std::string hint) {
+void DiagnosticSink::report(std::string_view code, Location where, std::string message, std::string hint) {
   const DiagnosticKind* kind = find_diagnostic_kind(code);
   Diagnostic d;
   d.code = std::string(code);

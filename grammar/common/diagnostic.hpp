@@ -39,8 +39,7 @@ class DiagnosticSink {
   explicit DiagnosticSink(std::size_t limit = 1000) : limit_(limit) {}
 
   // Reports with the catalogue's default severity for `code`.
-  void report(std::string_view code, Location where, std::string message,
-              std::string hint = {});
+  void report(std::string_view code, Location where, std::string message, std::string hint = {});
   void report(Diagnostic diagnostic);
 
   const std::vector<Diagnostic>& items() const { return items_; }

@@ -22,7 +22,9 @@ void append_fortran_i(std::string& out, std::int64_t value, int width);
 void append_fortran_a(std::string& out, std::string_view text, int width);
 
 // `nX`: n blanks.
-inline void append_blanks(std::string& out, int count) { out.append(static_cast<std::size_t>(count), ' '); }
+inline void append_blanks(std::string& out, int count) {
+  out.append(static_cast<std::size_t>(count), ' ');
+}
 
 // Removes trailing blanks (used where LMGC90 writes a value with A-format trimming).
 std::string_view trim_right(std::string_view text);

@@ -138,8 +138,9 @@ RealResult real_from_compact(const char* first, const char* last, int implied_de
     take(p.integer_digits);
     if (fast) take(p.fraction_digits);
     const long scale = exponent - static_cast<long>(p.fraction_digits.size());
-    static constexpr double kPowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
-                                         1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    static constexpr double kPowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                         1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                         1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
     if (fast && scale >= -22 && scale <= 22) {
       const double m = static_cast<double>(digits);
       value = scale >= 0 ? m * kPowers[scale] : m / kPowers[-scale];
@@ -203,7 +204,8 @@ std::optional<std::string_view> first_list_item(std::string_view text) {
   while (begin < text.size() && (text[begin] == ' ' || text[begin] == '\t' || text[begin] == ',')) ++begin;
   if (begin >= text.size() || text[begin] == '/') return std::nullopt;
   std::size_t end = begin;
-  while (end < text.size() && text[end] != ' ' && text[end] != '\t' && text[end] != ',' && text[end] != '/') ++end;
+  while (end < text.size() && text[end] != ' ' && text[end] != '\t' && text[end] != ',' && text[end] != '/')
+    ++end;
   return text.substr(begin, end - begin);
 }
 

@@ -2,8 +2,7 @@
 
 namespace lmgc::grammar {
 
-SourceText::SourceText(std::string path, std::string text)
-    : path_(std::move(path)), text_(std::move(text)) {
+SourceText::SourceText(std::string path, std::string text) : path_(std::move(path)), text_(std::move(text)) {
   std::string_view all(text_);
   std::size_t begin = 0;
   std::uint32_t number = 1;

@@ -12,20 +12,21 @@ namespace lmgc::grammar {
 // One node of a body. Values are read at columns 35-48, 56-69, 77-90 of the node line and its
 // continuation lines (3 values a line); labels (`X(1)=`, ...) are not read.
 struct DofNode {
-  Word node_type;          // cols 2-6: NO3xx, NO6xx, NO1xx ... (the count of values is the digit)
-  Integer number;          // rigid: cols 9-13; MAILx: cols 7-13 (written I6 in 8-13)
-  std::vector<Real> x;     // X(1..n): displacement (rotation for rigid); THERM: T(1..n)
-  std::vector<Real> v;     // V(1..n): velocity; empty for THERM
-  std::vector<Real> frame; // NO6xx rigid node: a(1..3), b(1..3), g(1..3) (principal frame columns); else empty
+  Word node_type;       // cols 2-6: NO3xx, NO6xx, NO1xx ... (the count of values is the digit)
+  Integer number;       // rigid: cols 9-13; MAILx: cols 7-13 (written I6 in 8-13)
+  std::vector<Real> x;  // X(1..n): displacement (rotation for rigid); THERM: T(1..n)
+  std::vector<Real> v;  // V(1..n): velocity; empty for THERM
+  std::vector<Real>
+      frame;  // NO6xx rigid node: a(1..3), b(1..3), g(1..3) (principal frame columns); else empty
   bool operator==(const DofNode&) const = default;
 };
 
 struct DofBody {
-  Word body_type;  // RBDY2, RBDY3 or MAILx
-  Integer number;  // RBDY2: cols 9-15 (I7); RBDY3: cols 9-15 list-directed; MAILx: cols 7-13
-  Word model;      // MAILx: MECAx, THERM or POROx; empty for rigid bodies
-  std::vector<DofNode> nodes;            // rigid bodies: exactly one
-  std::optional<DofNode> rigid_part;     // MAILx with an attached rigid body (`!rigid part` line)
+  Word body_type;              // RBDY2, RBDY3 or MAILx
+  Integer number;              // RBDY2: cols 9-15 (I7); RBDY3: cols 9-15 list-directed; MAILx: cols 7-13
+  Word model;                  // MAILx: MECAx, THERM or POROx; empty for rigid bodies
+  std::vector<DofNode> nodes;  // rigid bodies: exactly one
+  std::optional<DofNode> rigid_part;  // MAILx with an attached rigid body (`!rigid part` line)
   bool operator==(const DofBody&) const = default;
 };
 

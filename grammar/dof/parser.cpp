@@ -16,9 +16,13 @@ namespace {
 // Value columns of a node line and its continuation lines (state-and-outputs.md §1.3).
 constexpr int kValueColumns[3][2] = {{35, 48}, {56, 69}, {77, 90}};
 
-bool is_dashed_line(std::string_view text) { return text.size() >= 3 && text.substr(0, 3) == "!--"; }
+bool is_dashed_line(std::string_view text) {
+  return text.size() >= 3 && text.substr(0, 3) == "!--";
+}
 
-bool is_rigid_part_line(std::string_view text) { return text.substr(0, std::min<std::size_t>(text.size(), 11)) == "!rigid part"; }
+bool is_rigid_part_line(std::string_view text) {
+  return text.substr(0, std::min<std::size_t>(text.size(), 11)) == "!rigid part";
+}
 
 int node_value_count(std::string_view type) {
   if (type.size() != 5 || type[0] != 'N' || type[1] != 'O' || type[3] != 'x' || type[4] != 'x') return 0;
@@ -32,8 +36,7 @@ int line_end_column(const Line& line) {
 
 class DofParser {
  public:
-  DofParser(const SourceText& source, DiagnosticSink& sink)
-      : lines_(source.lines()), reader_(source, sink) {}
+  DofParser(const SourceText& source, DiagnosticSink& sink) : lines_(source.lines()), reader_(source, sink) {}
 
   DofFile run() {
     DofFile file;
@@ -74,7 +77,8 @@ class DofParser {
       if (keyword == "steps") {
         reader_.report("L1013", line, 1, 6, "second '$steps' header");
       } else {
-        reader_.report("L1019", line, 1, line_end_column(line), "line outside any '$bdyty' block is skipped by LMGC90");
+        reader_.report("L1019", line, 1, line_end_column(line),
+                       "line outside any '$bdyty' block is skipped by LMGC90");
       }
       ++index_;
     }
@@ -249,7 +253,8 @@ class DofParser {
       if (model_line == nullptr) return body;
       body.model = reader_.word(*model_line, 2, 6);
       if (body.model.value != "MECAx" && body.model.value != "THERM" && body.model.value != "POROx") {
-        reader_.report("L1017", *model_line, 2, 6, "model '" + body.model.value + "' is not MECAx, THERM or POROx");
+        reader_.report("L1017", *model_line, 2, 6,
+                       "model '" + body.model.value + "' is not MECAx, THERM or POROx");
         skip_body();
         return body;
       }
@@ -269,7 +274,8 @@ class DofParser {
       }
       if (at >= lines_.size()) {
         index_ = at;
-        reader_.report_at_end("L1005", type + " " + std::to_string(body.number.value) + " is not closed by '$$$$$$'");
+        reader_.report_at_end("L1005",
+                              type + " " + std::to_string(body.number.value) + " is not closed by '$$$$$$'");
         return body;
       }
       const Line& line = lines_[at];
@@ -281,17 +287,20 @@ class DofParser {
       if (keyword == "bdyty") {
         index_ = at;
         reader_.report("L1005", line, 1, 6,
-                       type + " " + std::to_string(body.number.value) + " is not closed by '$$$$$$' before the next '$bdyty'");
+                       type + " " + std::to_string(body.number.value) +
+                           " is not closed by '$$$$$$' before the next '$bdyty'");
         return body;
       }
       index_ = at + 1;
       DofNode node;
-      const bool ok = parse_node(node, line, rigid || rigid_part, rigid_part ? std::string_view() : body.model.value);
+      const bool ok =
+          parse_node(node, line, rigid || rigid_part, rigid_part ? std::string_view() : body.model.value);
       if (rigid_part) {
         body.rigid_part = std::move(node);
       } else {
         if (rigid && body.nodes.size() == 1)
-          reader_.report("L1014", line, 2, 6, type + " has one node; a second node line is not read by LMGC90");
+          reader_.report("L1014", line, 2, 6,
+                         type + " has one node; a second node line is not read by LMGC90");
         body.nodes.push_back(std::move(node));
       }
       if (!ok) {
@@ -310,6 +319,8 @@ class DofParser {
 
 }  // namespace
 
-DofFile parse_dof(const SourceText& source, DiagnosticSink& sink) { return DofParser(source, sink).run(); }
+DofFile parse_dof(const SourceText& source, DiagnosticSink& sink) {
+  return DofParser(source, sink).run();
+}
 
 }  // namespace lmgc::grammar

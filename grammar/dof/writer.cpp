@@ -10,7 +10,8 @@
 namespace lmgc::grammar {
 namespace {
 
-constexpr std::string_view kDashes = "!-----------------------------------------------------------------------\n";
+constexpr std::string_view kDashes =
+    "!-----------------------------------------------------------------------\n";
 
 // k label/value pairs `(2X,A5,D14.7)` after the 27-column lead of a node or continuation line
 // (state-and-outputs.md §1.3: FORMAT(1X,A5,1X,I6,2X,5X,2X,5X,k(2X,A5,D14.7)) and
@@ -30,7 +31,8 @@ void append_pairs(std::string& out, char letter, const std::vector<Real>& values
 
 // Values of one kind, 3 a line; the first line may be the node line (lead already written).
 void append_value_lines(std::string& out, char letter, const std::vector<Real>& values, bool lead_written,
-                        std::size_t label_offset = 0, std::size_t begin = 0, std::size_t end = std::string::npos) {
+                        std::size_t label_offset = 0, std::size_t begin = 0,
+                        std::size_t end = std::string::npos) {
   if (end > values.size()) end = values.size();
   for (std::size_t i = begin; i < end; i += 3) {
     if (!lead_written) append_blanks(out, 27);

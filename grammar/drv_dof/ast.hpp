@@ -12,10 +12,10 @@ namespace lmgc::grammar {
 // One dof line: ` vlocy      1  CT AMP OMEGA PHI RAMPI RAMP` or ` force      2 evolution f.DAT`.
 // Value: v(t) = (CT + AMP cos(OMEGA t + PHI)) min(1, RAMPI + RAMP t) (spec §5).
 struct DrivenDof {
-  Word kind;                   // cols 2-6: vlocy, force (mechanical), temp, flux (thermal)
-  Integer dof;                 // cols 9-13, 1..number of dofs of the node
-  bool uses_evolution = false;  // 'evolution' in cols 15-23
-  Word evolution_file;         // cols 25-64, trimmed (only when uses_evolution)
+  Word kind;                         // cols 2-6: vlocy, force (mechanical), temp, flux (thermal)
+  Integer dof;                       // cols 9-13, 1..number of dofs of the node
+  bool uses_evolution = false;       // 'evolution' in cols 15-23
+  Word evolution_file;               // cols 25-64, trimmed (only when uses_evolution)
   std::array<Real, 6> parameters{};  // CT AMP OMEGA PHI RAMPI RAMP at 15-28 ... 90-103 (zeros with evolution)
   bool operator==(const DrivenDof&) const = default;
 };

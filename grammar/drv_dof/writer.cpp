@@ -18,11 +18,15 @@ namespace {
 // Fixed text of LMGC90's echo (spec: datbox-inputs.md §5 "Echo DRV_DOF.OUT").
 constexpr std::string_view kHeader = "     \n! DOF\n     \n";
 constexpr std::string_view kTemplate =
-    "$dofty  numbr [CT......+......AMP..*..cos.(..OMEGA.*.time.+.PHI..)]...*...[RAMPI.....+.....RAMP.*.time]\n";
-constexpr std::string_view kDashes = "!-----------------------------------------------------------------------\n";
+    "$dofty  numbr "
+    "[CT......+......AMP..*..cos.(..OMEGA.*.time.+.PHI..)]...*...[RAMPI.....+.....RAMP.*.time]\n";
+constexpr std::string_view kDashes =
+    "!-----------------------------------------------------------------------\n";
 
 // Within one dof number LMGC90 writes the imposed-velocity entries before the force ones.
-int kind_order(const std::string& kind) { return (kind == "force" || kind == "flux") ? 1 : 0; }
+int kind_order(const std::string& kind) {
+  return (kind == "force" || kind == "flux") ? 1 : 0;
+}
 
 struct MergedNode {
   std::string type;
@@ -34,7 +38,8 @@ struct MergedBody {
 };
 
 // Bodies of one module, merged by rank (a rank given twice gathers its dofs).
-std::map<std::int64_t, MergedBody> gather(const DrvDofFile& file, std::string_view type, std::string_view model) {
+std::map<std::int64_t, MergedBody> gather(const DrvDofFile& file, std::string_view type,
+                                          std::string_view model) {
   std::map<std::int64_t, MergedBody> bodies;
   for (const DrvDofBody& body : file.bodies) {
     if (body.body_type.value != type || body.model.value != model) continue;
@@ -173,7 +178,9 @@ std::string write_drv_dof(const DrvDofFile& file, const DrvDofEchoSetup& setup) 
   return out;
 }
 
-std::string write_drv_dof(const DrvDofFile& file) { return write_drv_dof(file, drv_dof_echo_setup_of(file)); }
+std::string write_drv_dof(const DrvDofFile& file) {
+  return write_drv_dof(file, drv_dof_echo_setup_of(file));
+}
 
 namespace {
 
@@ -189,7 +196,8 @@ void append_evolution_value(std::string& out, double value) {
   }
   const long exponent = std::strtol(text.c_str() + e + 1, nullptr, 10);
   char exponent_text[32];
-  std::snprintf(exponent_text, sizeof exponent_text, "E%c%03ld", exponent < 0 ? '-' : '+', std::labs(exponent));
+  std::snprintf(exponent_text, sizeof exponent_text, "E%c%03ld", exponent < 0 ? '-' : '+',
+                std::labs(exponent));
   out += (std::signbit(value) && value != 0.0) ? '-' : ' ';
   out.append(text, 0, e);
   out += exponent_text;

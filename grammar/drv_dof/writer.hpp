@@ -10,10 +10,10 @@ namespace lmgc::grammar {
 // (it writes its dashed line even with no driven body), a 3D run the RBDY3 module (no dashed
 // line); each MAILx module that holds bodies writes its driven bodies and a dashed line.
 struct DrvDofEchoSetup {
-  int dimension = 2;          // 2: RBDY2 module, 3: RBDY3 module
-  bool meca_mailx = false;    // the run has mecaMAILx bodies
-  bool ther_mailx = false;    // the run has therMAILx bodies
-  bool poro_mailx = false;    // the run has poroMAILx bodies
+  int dimension = 2;        // 2: RBDY2 module, 3: RBDY3 module
+  bool meca_mailx = false;  // the run has mecaMAILx bodies
+  bool ther_mailx = false;  // the run has therMAILx bodies
+  bool poro_mailx = false;  // the run has poroMAILx bodies
   // LMGC90 writes a MAILx node type from the mesh (`NO2xx` in 2D, `NO3xx` in 3D), not from
   // DRV_DOF.DAT (a thermal `NO1xx` is echoed `NO2xx` in 2D). When true the echo does the same.
   bool node_type_from_mesh = false;

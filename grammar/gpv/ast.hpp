@@ -14,8 +14,8 @@
 namespace lmgc::grammar {
 
 struct GpvModelBlock {
-  Word model;                             // MECAx, THERM, POROx, THMCx (line after '$model')
-  std::vector<std::vector<Real>> lines;   // value lines, in order
+  Word model;                            // MECAx, THERM, POROx, THMCx (line after '$model')
+  std::vector<std::vector<Real>> lines;  // value lines, in order
   friend bool operator==(const GpvModelBlock&, const GpvModelBlock&) = default;
 };
 

@@ -13,10 +13,11 @@ struct ModelOption {
 };
 
 struct Model {
-  Word nickname;    // columns 2-6, referred to by the 'model' lines of MAILx elements
-  Word kind;        // mdlty, columns 9-13: MECAx, THERM, POROx, MULTI
-  Word element;     // finel, columns 16-20: Q4xxx, T3xxx, H8xxx, ...
-  Word user_model;  // 'u_mdl' as the first option: user model name (list-directed from 30-79); empty otherwise
+  Word nickname;  // columns 2-6, referred to by the 'model' lines of MAILx elements
+  Word kind;      // mdlty, columns 9-13: MECAx, THERM, POROx, MULTI
+  Word element;   // finel, columns 16-20: Q4xxx, T3xxx, H8xxx, ...
+  Word
+      user_model;  // 'u_mdl' as the first option: user model name (list-directed from 30-79); empty otherwise
   std::vector<ModelOption> options;  // in file order ('u_mdl' of the mdlty line excluded)
   // Largest size read at 61-65 on the option lines after the mdlty line (0 when none): LMGC90
   // keeps one size per model and writes it on every 'extvf' option line.

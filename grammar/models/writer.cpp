@@ -41,14 +41,17 @@ std::string write_models(const ModelsFile& file) {
     }
     // The mdlty line carries 'u_mdl' or the first option (never with a size).
     std::size_t next = 0;
-    if (user_model) option_line(out, m.kind.value, m.element.value, "u_mdl", m.user_model.value, 50, nullptr);
+    if (user_model)
+      option_line(out, m.kind.value, m.element.value, "u_mdl", m.user_model.value, 50, nullptr);
     else {
-      option_line(out, m.kind.value, m.element.value, m.options[0].id.value, m.options[0].value.value, 30, nullptr);
+      option_line(out, m.kind.value, m.element.value, m.options[0].id.value, m.options[0].value.value, 30,
+                  nullptr);
       next = 1;
     }
     for (; next < m.options.size(); ++next) {
       const ModelOption& o = m.options[next];
-      option_line(out, "", "", o.id.value, o.value.value, 30, o.id.value == "extvf" ? &m.vfield_max_size.value : nullptr);
+      option_line(out, "", "", o.id.value, o.value.value, 30,
+                  o.id.value == "extvf" ? &m.vfield_max_size.value : nullptr);
     }
   }
   return out;

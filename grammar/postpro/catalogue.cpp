@@ -23,8 +23,8 @@ constexpr PostproStep kBodyList[] = {{F::i7, "the number of bodies", R::last_int
 constexpr PostproStep kMpTracking[] = {{F::i7, "the number of bodies", R::last_integer, 1},
                                        {F::i7_x_i3, "a body and contactor"}};
 constexpr PostproStep kDenseSample[] = {{F::dense_sample, "the 'INTER' line (or any line)"}};
-constexpr PostproStep kDoublet[] = {{F::a5, "the interaction type"}, {F::i7, "the first body"},
-                                    {F::i7, "the second body"}};
+constexpr PostproStep kDoublet[] = {
+    {F::a5, "the interaction type"}, {F::i7, "the first body"}, {F::i7, "the second body"}};
 constexpr PostproStep kExtrusion[] = {{F::list_real, "the depth"}, {F::list_real, "the factor"}};
 constexpr PostproStep kFraction2d[] = {{F::es14_7, "the fraction"}};
 constexpr PostproStep kFraction3d[] = {{F::list_real, "the fraction"}};
@@ -37,8 +37,8 @@ constexpr PostproStep kDistSets[] = {{F::i7, "the number of sets", R::last_integ
 constexpr PostproStep kRigidSets[] = {{F::i7, "the number of sets", R::last_integer, 2},
                                       {F::i7, "the set size", R::last_integer, 1},
                                       {F::i7, "a body number"}};
-constexpr PostproStep kBoundedSets[] = {{F::i7, "the number of sets", R::last_integer, 2},
-                                        {F::i7, "idmin"}, {F::i7, "idmax"}};
+constexpr PostproStep kBoundedSets[] = {
+    {F::i7, "the number of sets", R::last_integer, 2}, {F::i7, "idmin"}, {F::i7, "idmax"}};
 constexpr PostproStep kCompacity[] = {{F::a5, "the bulk behaviour"},
                                       {F::a12, "the model", R::compacity_model, 1},
                                       {F::i7, "a wall body number"}};
@@ -105,7 +105,9 @@ void append_left(std::string& out, std::int64_t value, int width) {
 
 }  // namespace
 
-std::span<const PostproCommandKind> postpro_catalogue() { return kCommands; }
+std::span<const PostproCommandKind> postpro_catalogue() {
+  return kCommands;
+}
 
 const PostproCommandKind* find_postpro_command(std::string_view name) {
   auto it = std::find_if(std::begin(kCommands), std::end(kCommands),
@@ -145,7 +147,8 @@ std::string postpro_argument_text(const PostproArgument& a) {
       break;
     case F::list_integer_pair:
     case F::list_integer_quad:
-      for (std::size_t k = 0; k < a.integers.size(); ++k) text += (k ? " " : "") + std::to_string(a.integers[k].value);
+      for (std::size_t k = 0; k < a.integers.size(); ++k)
+        text += (k ? " " : "") + std::to_string(a.integers[k].value);
       break;
     case F::list_real:
     case F::es14_7:

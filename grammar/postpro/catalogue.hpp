@@ -35,7 +35,8 @@ struct PostproCommandKind {
 
   std::span<const PostproStep> layout(int dimension_of_run) const {
     // Dimension not known (0): the 2D layout, or the 3D one for a command only the 3D reader knows.
-    const bool three = dimension_of_run == 3 || (dimension_of_run == 0 && dimension == PostproDimension::only_3d);
+    const bool three =
+        dimension_of_run == 3 || (dimension_of_run == 0 && dimension == PostproDimension::only_3d);
     return three ? layout_3d : layout_2d;
   }
   bool available_in(int dimension_of_run) const {

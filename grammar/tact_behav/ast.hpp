@@ -20,14 +20,14 @@ struct TactLaw {
 // One `$seety` block: the data line (1X,A5,2X,A5,2X,A5,2X,A5,2X,A5,2X,A5,2X,A5,5X,1X,D14.7)
 // and the optional `+` global alert line (value at columns 55-68).
 struct SeeEntry {
-  Word candidate_body;         // cols 2-6 (RBDY2, RBDY3, MAILx; obsolete files: DISKx ...)
-  Word candidate_contactor;    // cols 9-13
-  Word candidate_colour;       // cols 16-20
-  Word law_nickname;           // cols 23-27
-  Word antagonist_body;        // cols 30-34
-  Word antagonist_contactor;   // cols 37-41
-  Word antagonist_colour;      // cols 44-48
-  Real alert;                  // cols 55-68
+  Word candidate_body;               // cols 2-6 (RBDY2, RBDY3, MAILx; obsolete files: DISKx ...)
+  Word candidate_contactor;          // cols 9-13
+  Word candidate_colour;             // cols 16-20
+  Word law_nickname;                 // cols 23-27
+  Word antagonist_body;              // cols 30-34
+  Word antagonist_contactor;         // cols 37-41
+  Word antagonist_colour;            // cols 44-48
+  Real alert;                        // cols 55-68
   std::optional<Real> global_alert;  // `+` line, cols 55-68
   bool operator==(const SeeEntry&) const = default;
 };

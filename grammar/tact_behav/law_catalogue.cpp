@@ -47,10 +47,12 @@ constexpr std::string_view kIQSWETDSCLBParameters[] = {"cohen", "cohet", "Wethk"
 constexpr LawField kIQSWETDSCLBReads[] = {{0, 2, 0}, {1, 1, 2}, {2, 2, 3}};
 constexpr LawField kIQSWETDSCLBWrites[] = {{0, 2, 0}, {1, 1, 2}, {2, 2, 3}};
 // 7 postGAP_IQS_MAC_CZM
-constexpr std::string_view kPostGAPIQSMACCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "visco", "dupre"};
+constexpr std::string_view kPostGAPIQSMACCZMParameters[] = {"dfric", "sfric", "cn   ",
+                                                            "ct   ", "visco", "dupre"};
 constexpr LawField kPostGAPIQSMACCZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
 constexpr LawField kPostGAPIQSMACCZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
-constexpr InternalSlot kPostGAPIQSMACCZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}};
+constexpr InternalSlot kPostGAPIQSMACCZMInternals2D[] = {
+    {2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}};
 // 8 PLASTIC_COUPLED_DOF
 constexpr std::string_view kPLASTICCOUPLEDDOFParameters[] = {"sfric"};
 constexpr LawField kPLASTICCOUPLEDDOFReads[] = {{0, 1, 0}};
@@ -91,7 +93,11 @@ constexpr InternalSlot kGAPWETDSCLBInternals3D[] = {{2, "taille_ele    "}};
 constexpr std::string_view kMSMPCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "visco", "dupre"};
 constexpr LawField kMSMPCZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
 constexpr LawField kMSMPCZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
-constexpr InternalSlot kMSMPCZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}};
+constexpr InternalSlot kMSMPCZMInternals2D[] = {{2, "taille_ele    "},
+                                                {17, "saut_de_ut    "},
+                                                {32, "saut_de_un    "},
+                                                {47, "beta          "},
+                                                {62, "TPSini        "}};
 // 16 GAP_SGR_DS_CLB
 constexpr std::string_view kGAPSGRDSCLBParameters[] = {"dfric", "sfric"};
 constexpr LawField kGAPSGRDSCLBReads[] = {{0, 2, 0}};
@@ -117,11 +123,18 @@ constexpr std::string_view kIQSMOHRDSCLBParameters[] = {"cohen", "cohet", "dfric
 constexpr LawField kIQSMOHRDSCLBReads[] = {{0, 2, 0}, {1, 2, 2}};
 constexpr LawField kIQSMOHRDSCLBWrites[] = {{0, 2, 0}, {1, 2, 2}};
 // 21 MAL_CZM
-constexpr std::string_view kMALCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ", "S2   ", "G1   ", "G2   "};
+constexpr std::string_view kMALCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ",
+                                                  "S1   ", "S2   ", "G1   ", "G2   "};
 constexpr LawField kMALCZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}};
 constexpr LawField kMALCZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}};
-constexpr InternalSlot kMALCZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}};
-constexpr InternalSlot kMALCZMInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}};
+constexpr InternalSlot kMALCZMInternals2D[] = {{2, "taille_ele    "},
+                                               {17, "saut_de_ut    "},
+                                               {32, "saut_de_un    "},
+                                               {47, "beta          "},
+                                               {62, "TPSini        "}};
+constexpr InternalSlot kMALCZMInternals3D[] = {{2, "taille_ele    "},  {17, "saut_de_ut    "},
+                                               {32, "saut_de_un    "}, {47, "saut_de_us    "},
+                                               {62, "beta          "}, {77, "TPSini        "}};
 // 22 ELASTIC_REPELL_CLB
 constexpr std::string_view kELASTICREPELLCLBParameters[] = {"F/gap", "sfric"};
 constexpr LawField kELASTICREPELLCLBReads[] = {{0, 1, 0}, {1, 1, 1}};
@@ -130,8 +143,10 @@ constexpr LawField kELASTICREPELLCLBWrites[] = {{0, 1, 0}, {1, 1, 1}};
 constexpr std::string_view kCRITICALVOIGTCLBParameters[] = {"T/H  ", "v/cv ", "sfric"};
 constexpr LawField kCRITICALVOIGTCLBReads[] = {{0, 2, 0}, {1, 1, 2}};
 constexpr LawField kCRITICALVOIGTCLBWrites[] = {{0, 2, 0}, {1, 1, 2}};
-constexpr InternalSlot kCRITICALVOIGTCLBInternals2D[] = {{2, "lagT          "}, {17, "CVC on = 2    "}, {32, "lagS          "}};
-constexpr InternalSlot kCRITICALVOIGTCLBInternals3D[] = {{2, "lagT          "}, {17, "CVC on = 2    "}, {32, "lagS          "}};
+constexpr InternalSlot kCRITICALVOIGTCLBInternals2D[] = {
+    {2, "lagT          "}, {17, "CVC on = 2    "}, {32, "lagS          "}};
+constexpr InternalSlot kCRITICALVOIGTCLBInternals3D[] = {
+    {2, "lagT          "}, {17, "CVC on = 2    "}, {32, "lagS          "}};
 // 24 ELASTIC_REPELL_WET_CLB
 constexpr std::string_view kELASTICREPELLWETCLBParameters[] = {"F/gap", "cohen", "Wethk", "sfric"};
 constexpr LawField kELASTICREPELLWETCLBReads[] = {{0, 1, 0}, {1, 2, 1}, {2, 1, 3}};
@@ -168,8 +183,10 @@ constexpr LawField kMDJKRsWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 1, 4}};
 constexpr std::string_view kELASTICWETNTParameters[] = {"kn   ", "kt   ", "dampn", "dampt", "adhen", "adhet"};
 constexpr LawField kELASTICWETNTReads[] = {{0, 2, 0}, {1, 2, 2}, {1, 2, 4}};
 constexpr LawField kELASTICWETNTWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
-constexpr InternalSlot kELASTICWETNTInternals2D[] = {{2, "Ix ini        "}, {17, "Iy ini        "}, {32, "Iz ini        "}};
-constexpr InternalSlot kELASTICWETNTInternals3D[] = {{2, "Ix ini        "}, {17, "Iy ini        "}, {32, "Iz ini        "}};
+constexpr InternalSlot kELASTICWETNTInternals2D[] = {
+    {2, "Ix ini        "}, {17, "Iy ini        "}, {32, "Iz ini        "}};
+constexpr InternalSlot kELASTICWETNTInternals3D[] = {
+    {2, "Ix ini        "}, {17, "Iy ini        "}, {32, "Iz ini        "}};
 // 31 COUPLED_DOF
 constexpr std::span<const std::string_view> kCOUPLEDDOFParameters;
 constexpr std::span<const LawField> kCOUPLEDDOFReads;
@@ -190,26 +207,42 @@ constexpr LawField kPERIODOFWrites[] = {{0, 1, 0}, {1, 1, 1}, {2, 1, 2}};
 constexpr std::string_view kGAPSGRCLBWEARParameters[] = {"kcdwe", "kanwe", "fric "};
 constexpr LawField kGAPSGRCLBWEARReads[] = {{0, 2, 0}, {1, 1, 2}};
 constexpr LawField kGAPSGRCLBWEARWrites[] = {{0, 2, 0}, {1, 1, 2}};
-constexpr InternalSlot kGAPSGRCLBWEARInternals2D[] = {{2, "       ?????  "}, {17, "       ?????  "}, {32, "       ?????  "}};
-constexpr InternalSlot kGAPSGRCLBWEARInternals3D[] = {{2, "       ?????  "}, {17, "       ?????  "}, {32, "       ?????  "}};
+constexpr InternalSlot kGAPSGRCLBWEARInternals2D[] = {
+    {2, "       ?????  "}, {17, "       ?????  "}, {32, "       ?????  "}};
+constexpr InternalSlot kGAPSGRCLBWEARInternals3D[] = {
+    {2, "       ?????  "}, {17, "       ?????  "}, {32, "       ?????  "}};
 // 36 IQS_SGR_CLB_WEAR
 constexpr std::string_view kIQSSGRCLBWEARParameters[] = {"scohe", "dcohe", "fric ", "Wethk"};
 constexpr LawField kIQSSGRCLBWEARReads[] = {{0, 2, 0}, {1, 2, 2}};
 constexpr LawField kIQSSGRCLBWEARWrites[] = {{0, 2, 0}, {1, 2, 2}};
-constexpr InternalSlot kIQSSGRCLBWEARInternals2D[] = {{2, "       ?????  "}, {17, "       ?????  "}, {32, "       ?????  "}};
-constexpr InternalSlot kIQSSGRCLBWEARInternals3D[] = {{2, "       ?????  "}, {17, "       ?????  "}, {32, "       ?????  "}};
+constexpr InternalSlot kIQSSGRCLBWEARInternals2D[] = {
+    {2, "       ?????  "}, {17, "       ?????  "}, {32, "       ?????  "}};
+constexpr InternalSlot kIQSSGRCLBWEARInternals3D[] = {
+    {2, "       ?????  "}, {17, "       ?????  "}, {32, "       ?????  "}};
 // 37 MAC_CZM
 constexpr std::string_view kMACCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "visco", "dupre"};
 constexpr LawField kMACCZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
 constexpr LawField kMACCZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
-constexpr InternalSlot kMACCZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}};
-constexpr InternalSlot kMACCZMInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}};
+constexpr InternalSlot kMACCZMInternals2D[] = {{2, "taille_ele    "},
+                                               {17, "saut_de_ut    "},
+                                               {32, "saut_de_un    "},
+                                               {47, "beta          "},
+                                               {62, "TPSini        "}};
+constexpr InternalSlot kMACCZMInternals3D[] = {{2, "taille_ele    "},  {17, "saut_de_ut    "},
+                                               {32, "saut_de_un    "}, {47, "saut_de_us    "},
+                                               {62, "beta          "}, {77, "TPSini        "}};
 // 38 IQS_MAC_CZM
 constexpr std::string_view kIQSMACCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "visco", "dupre"};
 constexpr LawField kIQSMACCZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
 constexpr LawField kIQSMACCZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
-constexpr InternalSlot kIQSMACCZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}};
-constexpr InternalSlot kIQSMACCZMInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}};
+constexpr InternalSlot kIQSMACCZMInternals2D[] = {{2, "taille_ele    "},
+                                                  {17, "saut_de_ut    "},
+                                                  {32, "saut_de_un    "},
+                                                  {47, "beta          "},
+                                                  {62, "TPSini        "}};
+constexpr InternalSlot kIQSMACCZMInternals3D[] = {{2, "taille_ele    "},  {17, "saut_de_ut    "},
+                                                  {32, "saut_de_un    "}, {47, "saut_de_us    "},
+                                                  {62, "beta          "}, {77, "TPSini        "}};
 // 39 WET_CZM
 constexpr std::span<const std::string_view> kWETCZMParameters;
 constexpr std::span<const LawField> kWETCZMReads;
@@ -219,49 +252,84 @@ constexpr std::string_view kGAPMOHRDSCLBParameters[] = {"cohen", "cohet", "dfric
 constexpr LawField kGAPMOHRDSCLBReads[] = {{0, 2, 0}, {1, 2, 2}};
 constexpr LawField kGAPMOHRDSCLBWrites[] = {{0, 2, 0}, {1, 2, 2}};
 // 41 MAC_CZM_nosldt
-constexpr std::string_view kMACCZMNosldtParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "visco", "dupre", "dt___"};
+constexpr std::string_view kMACCZMNosldtParameters[] = {"dfric", "sfric", "cn   ", "ct   ",
+                                                        "visco", "dupre", "dt___"};
 constexpr LawField kMACCZMNosldtReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 1, 6}};
 constexpr LawField kMACCZMNosldtWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 1, 6}};
-constexpr InternalSlot kMACCZMNosldtInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}};
+constexpr InternalSlot kMACCZMNosldtInternals3D[] = {{2, "taille_ele    "},  {17, "saut_de_ut    "},
+                                                     {32, "saut_de_un    "}, {47, "saut_de_us    "},
+                                                     {62, "beta          "}, {77, "TPSini        "}};
 // 42 MAC_CZM_noslds
-constexpr std::string_view kMACCZMNosldsParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "visco", "dupre", "ds___"};
+constexpr std::string_view kMACCZMNosldsParameters[] = {"dfric", "sfric", "cn   ", "ct   ",
+                                                        "visco", "dupre", "ds___"};
 constexpr LawField kMACCZMNosldsReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 1, 6}};
 constexpr LawField kMACCZMNosldsWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 1, 6}};
-constexpr InternalSlot kMACCZMNosldsInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}};
+constexpr InternalSlot kMACCZMNosldsInternals3D[] = {{2, "taille_ele    "},  {17, "saut_de_ut    "},
+                                                     {32, "saut_de_un    "}, {47, "saut_de_us    "},
+                                                     {62, "beta          "}, {77, "TPSini        "}};
 // 43 IQS_MAC_CZM_nosldt
-constexpr std::string_view kIQSMACCZMNosldtParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "visco", "dupre", "dt___"};
+constexpr std::string_view kIQSMACCZMNosldtParameters[] = {"dfric", "sfric", "cn   ", "ct   ",
+                                                           "visco", "dupre", "dt___"};
 constexpr LawField kIQSMACCZMNosldtReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 1, 6}};
 constexpr LawField kIQSMACCZMNosldtWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 1, 6}};
-constexpr InternalSlot kIQSMACCZMNosldtInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}};
+constexpr InternalSlot kIQSMACCZMNosldtInternals3D[] = {{2, "taille_ele    "},  {17, "saut_de_ut    "},
+                                                        {32, "saut_de_un    "}, {47, "saut_de_us    "},
+                                                        {62, "beta          "}, {77, "TPSini        "}};
 // 44 IQS_MAC_CZM_noslds
-constexpr std::string_view kIQSMACCZMNosldsParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "visco", "dupre", "ds___"};
+constexpr std::string_view kIQSMACCZMNosldsParameters[] = {"dfric", "sfric", "cn   ", "ct   ",
+                                                           "visco", "dupre", "ds___"};
 constexpr LawField kIQSMACCZMNosldsReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 1, 6}};
 constexpr LawField kIQSMACCZMNosldsWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 1, 6}};
-constexpr InternalSlot kIQSMACCZMNosldsInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}};
+constexpr InternalSlot kIQSMACCZMNosldsInternals3D[] = {{2, "taille_ele    "},  {17, "saut_de_ut    "},
+                                                        {32, "saut_de_un    "}, {47, "saut_de_us    "},
+                                                        {62, "beta          "}, {77, "TPSini        "}};
 // 45 ER_MAC_CZM
 constexpr std::string_view kERMACCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "visco", "dupre"};
 constexpr LawField kERMACCZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
 constexpr LawField kERMACCZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
-constexpr InternalSlot kERMACCZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}};
-constexpr InternalSlot kERMACCZMInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}};
+constexpr InternalSlot kERMACCZMInternals2D[] = {
+    {2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}};
+constexpr InternalSlot kERMACCZMInternals3D[] = {{2, "taille_ele    "},
+                                                 {17, "saut_de_ut    "},
+                                                 {32, "saut_de_un    "},
+                                                 {47, "saut_de_us    "},
+                                                 {62, "beta          "}};
 // 46 IQS_WET_CZM
 constexpr std::string_view kIQSWETCZMParameters[] = {"cohen", "Wethk", "cn   ", "ct   ", "visco", "dupre"};
 constexpr LawField kIQSWETCZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
 constexpr LawField kIQSWETCZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
-constexpr InternalSlot kIQSWETCZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "Cnd anisotrope"}};
-constexpr InternalSlot kIQSWETCZMInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "Cnd anisotrope"}};
+constexpr InternalSlot kIQSWETCZMInternals2D[] = {{2, "taille_ele    "},
+                                                  {17, "saut_de_ut    "},
+                                                  {32, "saut_de_un    "},
+                                                  {47, "beta          "},
+                                                  {62, "Cnd anisotrope"}};
+constexpr InternalSlot kIQSWETCZMInternals3D[] = {{2, "taille_ele    "},
+                                                  {17, "saut_de_ut    "},
+                                                  {32, "saut_de_un    "},
+                                                  {47, "beta          "},
+                                                  {62, "Cnd anisotrope"}};
 // 47 DEM_FIBs
 constexpr std::string_view kDEMFIBsParameters[] = {"kn   ", "dampn", "gamma"};
 constexpr LawField kDEMFIBsReads[] = {{0, 1, 0}, {1, 2, 1}};
 constexpr LawField kDEMFIBsWrites[] = {{0, 1, 0}, {1, 2, 1}};
-constexpr InternalSlot kDEMFIBsInternals2D[] = {{2, "status        "}, {17, "gapREF        "}, {32, "I0_x          "}, {47, "I0_y          "}, {62, "I0_z          "}};
-constexpr InternalSlot kDEMFIBsInternals3D[] = {{2, "status        "}, {17, "gapREF        "}, {32, "I0_x          "}, {47, "I0_y          "}, {62, "I0_z          "}};
+constexpr InternalSlot kDEMFIBsInternals2D[] = {{2, "status        "},
+                                                {17, "gapREF        "},
+                                                {32, "I0_x          "},
+                                                {47, "I0_y          "},
+                                                {62, "I0_z          "}};
+constexpr InternalSlot kDEMFIBsInternals3D[] = {{2, "status        "},
+                                                {17, "gapREF        "},
+                                                {32, "I0_x          "},
+                                                {47, "I0_y          "},
+                                                {62, "I0_z          "}};
 // 48 KV_WET
 constexpr std::string_view kKVWETParameters[] = {"F/str", "F/sra", "cohen", "Wethk"};
 constexpr LawField kKVWETReads[] = {{0, 2, 0}, {1, 2, 2}};
 constexpr LawField kKVWETWrites[] = {{0, 2, 0}, {1, 2, 2}};
-constexpr InternalSlot kKVWETInternals2D[] = {{2, "       Status "}, {17, "       GapREF "}, {32, "       Length "}};
-constexpr InternalSlot kKVWETInternals3D[] = {{2, "       Status "}, {17, "       GapREF "}, {32, "       Length "}};
+constexpr InternalSlot kKVWETInternals2D[] = {
+    {2, "       Status "}, {17, "       GapREF "}, {32, "       Length "}};
+constexpr InternalSlot kKVWETInternals3D[] = {
+    {2, "       Status "}, {17, "       GapREF "}, {32, "       Length "}};
 // 49 VISCO_ELASTIC_REPELL_WET
 constexpr std::string_view kVISCOELASTICREPELLWETParameters[] = {"F/gap", "F/sra", "cohen", "Wethk", "fric "};
 constexpr LawField kVISCOELASTICREPELLWETReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 1, 4}};
@@ -273,23 +341,30 @@ constexpr std::span<const LawField> kRIGIDWIREWrites;
 constexpr InternalSlot kRIGIDWIREInternals2D[] = {{2, "gapREF        "}};
 constexpr InternalSlot kRIGIDWIREInternals3D[] = {{2, "gapREF        "}};
 // 51 IQS_BW_CLB
-constexpr std::string_view kIQSBWCLBParameters[] = {"Afric", "Bfric", "Atsld", "Btsld", "Alpha", "VtTsh", "CFreq"};
+constexpr std::string_view kIQSBWCLBParameters[] = {"Afric", "Bfric", "Atsld", "Btsld",
+                                                    "Alpha", "VtTsh", "CFreq"};
 constexpr LawField kIQSBWCLBReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 1, 6}};
 constexpr LawField kIQSBWCLBWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 1, 6}};
 constexpr InternalSlot kIQSBWCLBInternals2D[] = {{2, "cycle number  "}, {17, "              "}};
 constexpr InternalSlot kIQSBWCLBInternals3D[] = {{2, "cycle number  "}, {17, "              "}};
 // 52 IQS_CAP_MOHR_DS_CLB
-constexpr std::string_view kIQSCAPMOHRDSCLBParameters[] = {"cohen", "cohet", "dfric", "sfric", "s_ten", "s_com"};
+constexpr std::string_view kIQSCAPMOHRDSCLBParameters[] = {"cohen", "cohet", "dfric",
+                                                           "sfric", "s_ten", "s_com"};
 constexpr LawField kIQSCAPMOHRDSCLBReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
 constexpr LawField kIQSCAPMOHRDSCLBWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
 // 53 IQS_MAL_CZM
-constexpr std::string_view kIQSMALCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ", "S2   ", "G1   ", "G2   "};
+constexpr std::string_view kIQSMALCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ",
+                                                     "S1   ", "S2   ", "G1   ", "G2   "};
 constexpr LawField kIQSMALCZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}};
 constexpr LawField kIQSMALCZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}};
-constexpr InternalSlot kIQSMALCZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}};
-constexpr InternalSlot kIQSMALCZMInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}};
+constexpr InternalSlot kIQSMALCZMInternals2D[] = {
+    {2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}};
+constexpr InternalSlot kIQSMALCZMInternals3D[] = {{2, "taille_ele    "},  {17, "saut_de_ut    "},
+                                                  {32, "saut_de_un    "}, {47, "saut_de_us    "},
+                                                  {62, "beta          "}, {77, "TPSini        "}};
 // 54 GAP_CAP_MOHR_DS_CLB
-constexpr std::string_view kGAPCAPMOHRDSCLBParameters[] = {"cohen", "cohet", "dfric", "sfric", "s_ten", "s_com"};
+constexpr std::string_view kGAPCAPMOHRDSCLBParameters[] = {"cohen", "cohet", "dfric",
+                                                           "sfric", "s_ten", "s_com"};
 constexpr LawField kGAPCAPMOHRDSCLBReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
 constexpr LawField kGAPCAPMOHRDSCLBWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
 // 55 BROKEN_DOF
@@ -311,11 +386,13 @@ constexpr LawField kIQSMAPWrites[] = {{0, 1, 0}};
 constexpr InternalSlot kIQSMAPInternals2D[] = {{2, "fric          "}};
 constexpr InternalSlot kIQSMAPInternals3D[] = {{2, "fric          "}};
 // 58 RST_WET_CLB
-constexpr std::string_view kRSTWETCLBParameters[] = {"cohen", "cohet", "restn", "restt", "Wethk", "dfric", "sfric"};
+constexpr std::string_view kRSTWETCLBParameters[] = {"cohen", "cohet", "restn", "restt",
+                                                     "Wethk", "dfric", "sfric"};
 constexpr LawField kRSTWETCLBReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 1, 4}, {3, 2, 5}};
 constexpr LawField kRSTWETCLBWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 1, 4}, {3, 2, 5}};
 // 59 LJ_POTENTIAL
-constexpr std::string_view kLJPOTENTIALParameters[] = {"sigma", "epsil", "elect", "noycd", "noyan", "radcd", "radan"};
+constexpr std::string_view kLJPOTENTIALParameters[] = {"sigma", "epsil", "elect", "noycd",
+                                                       "noyan", "radcd", "radan"};
 constexpr LawField kLJPOTENTIALReads[] = {{0, 2, 0}, {1, 1, 2}, {2, 2, 3}, {2, 2, 5}};
 constexpr LawField kLJPOTENTIALWrites[] = {{0, 2, 0}, {1, 1, 2}, {2, 2, 3}, {3, 2, 5}};
 // 60 GAP_SGR_CLB_g0
@@ -340,32 +417,65 @@ constexpr InternalSlot kELASTICREPELLCLBG0Internals3D[] = {{2, "g_ref         "}
 constexpr std::string_view kMPCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "dupre"};
 constexpr LawField kMPCZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 1, 4}};
 constexpr LawField kMPCZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 1, 4}};
-constexpr InternalSlot kMPCZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}};
-constexpr InternalSlot kMPCZMInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}};
+constexpr InternalSlot kMPCZMInternals2D[] = {{2, "taille_ele    "},
+                                              {17, "saut_de_ut    "},
+                                              {32, "saut_de_un    "},
+                                              {47, "beta          "},
+                                              {62, "TPSini        "}};
+constexpr InternalSlot kMPCZMInternals3D[] = {{2, "taille_ele    "},  {17, "saut_de_ut    "},
+                                              {32, "saut_de_un    "}, {47, "saut_de_us    "},
+                                              {62, "beta          "}, {77, "TPSini        "}};
 // 64 MP3_CZM
 constexpr std::string_view kMP3CZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "smax ", "dupre"};
 constexpr LawField kMP3CZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
 constexpr LawField kMP3CZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
-constexpr InternalSlot kMP3CZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}};
-constexpr InternalSlot kMP3CZMInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}};
+constexpr InternalSlot kMP3CZMInternals2D[] = {{2, "taille_ele    "},
+                                               {17, "saut_de_ut    "},
+                                               {32, "saut_de_un    "},
+                                               {47, "beta          "},
+                                               {62, "TPSini        "}};
+constexpr InternalSlot kMP3CZMInternals3D[] = {{2, "taille_ele    "},  {17, "saut_de_ut    "},
+                                               {32, "saut_de_un    "}, {47, "saut_de_us    "},
+                                               {62, "beta          "}, {77, "TPSini        "}};
 // 65 MP3_CZM_THER
-constexpr std::string_view kMP3CZMTHERParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "smax ", "dupre", "lmbds", "lmbdc"};
+constexpr std::string_view kMP3CZMTHERParameters[] = {"dfric", "sfric", "cn   ", "ct   ",
+                                                      "smax ", "dupre", "lmbds", "lmbdc"};
 constexpr LawField kMP3CZMTHERReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}};
 constexpr LawField kMP3CZMTHERWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}};
-constexpr InternalSlot kMP3CZMTHERInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}};
-constexpr InternalSlot kMP3CZMTHERInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}};
+constexpr InternalSlot kMP3CZMTHERInternals2D[] = {{2, "taille_ele    "},
+                                                   {17, "saut_de_ut    "},
+                                                   {32, "saut_de_un    "},
+                                                   {47, "beta          "},
+                                                   {62, "TPSini        "}};
+constexpr InternalSlot kMP3CZMTHERInternals3D[] = {{2, "taille_ele    "},  {17, "saut_de_ut    "},
+                                                   {32, "saut_de_un    "}, {47, "saut_de_us    "},
+                                                   {62, "beta          "}, {77, "TPSini        "}};
 // 66 TH_CZM
-constexpr std::string_view kTHCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "s1   ", "s2   ", "G1   ", "G2   ", "l1   ", "l2   "};
+constexpr std::string_view kTHCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "s1   ",
+                                                 "s2   ", "G1   ", "G2   ", "l1   ", "l2   "};
 constexpr LawField kTHCZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}};
 constexpr LawField kTHCZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}};
-constexpr InternalSlot kTHCZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}};
-constexpr InternalSlot kTHCZMInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}};
+constexpr InternalSlot kTHCZMInternals2D[] = {{2, "taille_ele    "},
+                                              {17, "saut_de_ut    "},
+                                              {32, "saut_de_un    "},
+                                              {47, "beta          "},
+                                              {62, "TPSini        "}};
+constexpr InternalSlot kTHCZMInternals3D[] = {{2, "taille_ele    "},  {17, "saut_de_ut    "},
+                                              {32, "saut_de_un    "}, {47, "saut_de_us    "},
+                                              {62, "beta          "}, {77, "TPSini        "}};
 // 67 IQS_TH_CZM
-constexpr std::string_view kIQSTHCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "s1   ", "s2   ", "G1   ", "G2   ", "l1   ", "l2   "};
+constexpr std::string_view kIQSTHCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "s1   ",
+                                                    "s2   ", "G1   ", "G2   ", "l1   ", "l2   "};
 constexpr LawField kIQSTHCZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}};
 constexpr LawField kIQSTHCZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}};
-constexpr InternalSlot kIQSTHCZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}};
-constexpr InternalSlot kIQSTHCZMInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}};
+constexpr InternalSlot kIQSTHCZMInternals2D[] = {{2, "taille_ele    "},
+                                                 {17, "saut_de_ut    "},
+                                                 {32, "saut_de_un    "},
+                                                 {47, "beta          "},
+                                                 {62, "TPSini        "}};
+constexpr InternalSlot kIQSTHCZMInternals3D[] = {{2, "taille_ele    "},  {17, "saut_de_ut    "},
+                                                 {32, "saut_de_un    "}, {47, "saut_de_us    "},
+                                                 {62, "beta          "}, {77, "TPSini        "}};
 // 68 postGAP_IQS_CZM
 constexpr std::span<const std::string_view> kPostGAPIQSCZMParameters;
 constexpr std::span<const LawField> kPostGAPIQSCZMReads;
@@ -379,29 +489,48 @@ constexpr std::string_view kVISCOELASTICREPELLCLBParameters[] = {"F/gap", "etan 
 constexpr LawField kVISCOELASTICREPELLCLBReads[] = {{0, 2, 0}, {1, 1, 2}};
 constexpr LawField kVISCOELASTICREPELLCLBWrites[] = {{0, 2, 0}, {1, 1, 2}};
 // 71 ELASTIC_REPELL_MAC_CZM
-constexpr std::string_view kELASTICREPELLMACCZMParameters[] = {"F/gap", "gcmax", "cn   ", "ct   ", "visco", "dupre"};
+constexpr std::string_view kELASTICREPELLMACCZMParameters[] = {"F/gap", "gcmax", "cn   ",
+                                                               "ct   ", "visco", "dupre"};
 constexpr LawField kELASTICREPELLMACCZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
 constexpr LawField kELASTICREPELLMACCZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
-constexpr InternalSlot kELASTICREPELLMACCZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}};
-constexpr InternalSlot kELASTICREPELLMACCZMInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}};
+constexpr InternalSlot kELASTICREPELLMACCZMInternals2D[] = {
+    {2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}};
+constexpr InternalSlot kELASTICREPELLMACCZMInternals3D[] = {
+    {2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}};
 // 72 IQS_PLAS_CLB
 constexpr std::string_view kIQSPLASCLBParameters[] = {"rnmax", "rovrg", "sfric", "pfric", "dgap ", "dfric"};
 constexpr LawField kIQSPLASCLBReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
 constexpr LawField kIQSPLASCLBWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}};
-constexpr InternalSlot kIQSPLASCLBInternals2D[] = {{2, "pgap          "}, {17, "pfric         "}, {32, "pgap max      "}};
-constexpr InternalSlot kIQSPLASCLBInternals3D[] = {{2, "pgap          "}, {17, "pfric         "}, {32, "pgap max      "}};
+constexpr InternalSlot kIQSPLASCLBInternals2D[] = {
+    {2, "pgap          "}, {17, "pfric         "}, {32, "pgap max      "}};
+constexpr InternalSlot kIQSPLASCLBInternals3D[] = {
+    {2, "pgap          "}, {17, "pfric         "}, {32, "pgap max      "}};
 // 73 ABP_CZM
-constexpr std::string_view kABPCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ", "S2   ", "G1   ", "G2   ", "Du1  ", "Du2  ", "Phi  "};
+constexpr std::string_view kABPCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ", "S2   ",
+                                                  "G1   ", "G2   ", "Du1  ", "Du2  ", "Phi  "};
 constexpr LawField kABPCZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}, {5, 1, 10}};
 constexpr LawField kABPCZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}, {5, 1, 10}};
-constexpr InternalSlot kABPCZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}};
-constexpr InternalSlot kABPCZMInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}};
+constexpr InternalSlot kABPCZMInternals2D[] = {{2, "taille_ele    "},
+                                               {17, "saut_de_ut    "},
+                                               {32, "saut_de_un    "},
+                                               {47, "beta          "},
+                                               {62, "TPSini        "}};
+constexpr InternalSlot kABPCZMInternals3D[] = {{2, "taille_ele    "},  {17, "saut_de_ut    "},
+                                               {32, "saut_de_un    "}, {47, "saut_de_us    "},
+                                               {62, "beta          "}, {77, "TPSini        "}};
 // 74 IQS_ABP_CZM
-constexpr std::string_view kIQSABPCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ", "S2   ", "G1   ", "G2   ", "Du1  ", "Du2  ", "Phi  "};
+constexpr std::string_view kIQSABPCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ", "S2   ",
+                                                     "G1   ", "G2   ", "Du1  ", "Du2  ", "Phi  "};
 constexpr LawField kIQSABPCZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}, {5, 1, 10}};
 constexpr LawField kIQSABPCZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}, {5, 1, 10}};
-constexpr InternalSlot kIQSABPCZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}};
-constexpr InternalSlot kIQSABPCZMInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}};
+constexpr InternalSlot kIQSABPCZMInternals2D[] = {{2, "taille_ele    "},
+                                                  {17, "saut_de_ut    "},
+                                                  {32, "saut_de_un    "},
+                                                  {47, "beta          "},
+                                                  {62, "TPSini        "}};
+constexpr InternalSlot kIQSABPCZMInternals3D[] = {{2, "taille_ele    "},  {17, "saut_de_ut    "},
+                                                  {32, "saut_de_un    "}, {47, "saut_de_us    "},
+                                                  {62, "beta          "}, {77, "TPSini        "}};
 // 75 BRITTLE_COATING_CLB
 constexpr std::string_view kBRITTLECOATINGCLBParameters[] = {"fric ", "F/gap", "snmax", "g0   "};
 constexpr LawField kBRITTLECOATINGCLBReads[] = {{0, 1, 0}, {1, 1, 1}, {2, 1, 2}, {3, 1, 3}};
@@ -436,76 +565,181 @@ constexpr InternalSlot kPreGAPSGRCLBInternals3D[] = {{2, "taille_ele    "}};
 constexpr std::string_view kNARDRODParameters[] = {"E    ", "nu   ", "S1   ", "S2   "};
 constexpr LawField kNARDRODReads[] = {{0, 2, 0}, {1, 2, 2}};
 constexpr LawField kNARDRODWrites[] = {{0, 2, 0}, {1, 2, 2}};
-constexpr InternalSlot kNARDRODInternals2D[] = {{2, "dn         "}, {14, "dt         "}, {26, "ds         "}, {38, "surf       "}, {50, "l0         "}, {62, "Masse      "}};
-constexpr InternalSlot kNARDRODInternals3D[] = {{2, "dn         "}, {14, "dt         "}, {26, "ds         "}, {38, "surf       "}, {50, "l0         "}, {62, "Masse      "}};
+constexpr InternalSlot kNARDRODInternals2D[] = {{2, "dn         "},  {14, "dt         "},
+                                                {26, "ds         "}, {38, "surf       "},
+                                                {50, "l0         "}, {62, "Masse      "}};
+constexpr InternalSlot kNARDRODInternals3D[] = {{2, "dn         "},  {14, "dt         "},
+                                                {26, "ds         "}, {38, "surf       "},
+                                                {50, "l0         "}, {62, "Masse      "}};
 // 82 IQS_EXPO_CZM
-constexpr std::string_view kIQSEXPOCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ", "S2   ", "G1   ", "G2   ", "eta  "};
+constexpr std::string_view kIQSEXPOCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ",
+                                                      "S2   ", "G1   ", "G2   ", "eta  "};
 constexpr LawField kIQSEXPOCZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 1, 8}};
 constexpr LawField kIQSEXPOCZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 1, 8}};
-constexpr InternalSlot kIQSEXPOCZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}};
-constexpr InternalSlot kIQSEXPOCZMInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}, {92, "g0            "}};
+constexpr InternalSlot kIQSEXPOCZMInternals2D[] = {{2, "taille_ele    "},
+                                                   {17, "saut_de_ut    "},
+                                                   {32, "saut_de_un    "},
+                                                   {47, "beta          "},
+                                                   {62, "TPSini        "}};
+constexpr InternalSlot kIQSEXPOCZMInternals3D[] = {
+    {2, "taille_ele    "},  {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "},
+    {62, "beta          "}, {77, "TPSini        "}, {92, "g0            "}};
 // 83 EXPO_CZM
-constexpr std::string_view kEXPOCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ", "S2   ", "G1   ", "G2   ", "eta  "};
+constexpr std::string_view kEXPOCZMParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ",
+                                                   "S2   ", "G1   ", "G2   ", "eta  "};
 constexpr LawField kEXPOCZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 1, 8}};
 constexpr LawField kEXPOCZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 1, 8}};
-constexpr InternalSlot kEXPOCZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}};
-constexpr InternalSlot kEXPOCZMInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}, {92, "g0            "}};
+constexpr InternalSlot kEXPOCZMInternals2D[] = {{2, "taille_ele    "},
+                                                {17, "saut_de_ut    "},
+                                                {32, "saut_de_un    "},
+                                                {47, "beta          "},
+                                                {62, "TPSini        "}};
+constexpr InternalSlot kEXPOCZMInternals3D[] = {
+    {2, "taille_ele    "},  {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "},
+    {62, "beta          "}, {77, "TPSini        "}, {92, "g0            "}};
 // 84 IQS_EXPO_CZM_SPRING
-constexpr std::string_view kIQSEXPOCZMSPRINGParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ", "S2   ", "G1   ", "G2   ", "eta  ", "k1   ", "k2   "};
-constexpr LawField kIQSEXPOCZMSPRINGReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 1, 8}, {5, 2, 9}};
-constexpr LawField kIQSEXPOCZMSPRINGWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 1, 8}, {5, 2, 9}};
-constexpr InternalSlot kIQSEXPOCZMSPRINGInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}, {77, "saut_de_ut_e  "}, {92, "g0            "}, {107, "beta_coh_th   "}, {122, "beta_spring_th"}};
-constexpr InternalSlot kIQSEXPOCZMSPRINGInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}, {92, "saut_de_ut_e  "}, {107, "saut_de_us_e  "}, {122, "g0            "}, {137, "beta_coh_th   "}, {152, "beta_spring_th"}};
+constexpr std::string_view kIQSEXPOCZMSPRINGParameters[] = {
+    "dfric", "sfric", "cn   ", "ct   ", "S1   ", "S2   ", "G1   ", "G2   ", "eta  ", "k1   ", "k2   "};
+constexpr LawField kIQSEXPOCZMSPRINGReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4},
+                                               {3, 2, 6}, {4, 1, 8}, {5, 2, 9}};
+constexpr LawField kIQSEXPOCZMSPRINGWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4},
+                                                {3, 2, 6}, {4, 1, 8}, {5, 2, 9}};
+constexpr InternalSlot kIQSEXPOCZMSPRINGInternals2D[] = {
+    {2, "taille_ele    "},  {17, "saut_de_ut    "},  {32, "saut_de_un    "},
+    {47, "beta          "}, {62, "TPSini        "},  {77, "saut_de_ut_e  "},
+    {92, "g0            "}, {107, "beta_coh_th   "}, {122, "beta_spring_th"}};
+constexpr InternalSlot kIQSEXPOCZMSPRINGInternals3D[] = {
+    {2, "taille_ele    "},   {17, "saut_de_ut    "},  {32, "saut_de_un    "}, {47, "saut_de_us    "},
+    {62, "beta          "},  {77, "TPSini        "},  {92, "saut_de_ut_e  "}, {107, "saut_de_us_e  "},
+    {122, "g0            "}, {137, "beta_coh_th   "}, {152, "beta_spring_th"}};
 // 85 EXPO_CZM_SPRING
-constexpr std::string_view kEXPOCZMSPRINGParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ", "S2   ", "G1   ", "G2   ", "eta  ", "k1   ", "k2   "};
+constexpr std::string_view kEXPOCZMSPRINGParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ", "S2   ",
+                                                         "G1   ", "G2   ", "eta  ", "k1   ", "k2   "};
 constexpr LawField kEXPOCZMSPRINGReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 1, 8}, {5, 2, 9}};
-constexpr LawField kEXPOCZMSPRINGWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 1, 8}, {5, 2, 9}};
-constexpr InternalSlot kEXPOCZMSPRINGInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}, {77, "saut_de_ut_e  "}, {92, "g0            "}, {107, "beta_coh_th   "}, {122, "beta_spring_th"}};
-constexpr InternalSlot kEXPOCZMSPRINGInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}, {92, "saut_de_ut_e  "}, {107, "saut_de_us_e  "}, {122, "g0            "}, {137, "beta_coh_th   "}, {152, "beta_spring_th"}};
+constexpr LawField kEXPOCZMSPRINGWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4},
+                                             {3, 2, 6}, {4, 1, 8}, {5, 2, 9}};
+constexpr InternalSlot kEXPOCZMSPRINGInternals2D[] = {
+    {2, "taille_ele    "},  {17, "saut_de_ut    "},  {32, "saut_de_un    "},
+    {47, "beta          "}, {62, "TPSini        "},  {77, "saut_de_ut_e  "},
+    {92, "g0            "}, {107, "beta_coh_th   "}, {122, "beta_spring_th"}};
+constexpr InternalSlot kEXPOCZMSPRINGInternals3D[] = {
+    {2, "taille_ele    "},   {17, "saut_de_ut    "},  {32, "saut_de_un    "}, {47, "saut_de_us    "},
+    {62, "beta          "},  {77, "TPSini        "},  {92, "saut_de_ut_e  "}, {107, "saut_de_us_e  "},
+    {122, "g0            "}, {137, "beta_coh_th   "}, {152, "beta_spring_th"}};
 // 86 IQS_EXPO_CZM_P
-constexpr std::string_view kIQSEXPOCZMPParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ", "S2   ", "G1   ", "G2   ", "mu_g ", "eta  "};
+constexpr std::string_view kIQSEXPOCZMPParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ",
+                                                       "S2   ", "G1   ", "G2   ", "mu_g ", "eta  "};
 constexpr LawField kIQSEXPOCZMPReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}};
 constexpr LawField kIQSEXPOCZMPWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}};
-constexpr InternalSlot kIQSEXPOCZMPInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}, {77, "saut_de_ut_p  "}, {92, "saut_de_un_p  "}, {107, "saut_de_ut_p1 "}, {122, "saut_de_un_p1 "}};
-constexpr InternalSlot kIQSEXPOCZMPInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}, {92, "g0            "}, {107, "saut_de_ut_p  "}, {122, "saut_de_un_p  "}, {137, "saut_de_us_p  "}, {152, "saut_de_ut_p1 "}, {167, "saut_de_us_p1 "}, {182, "saut_de_un_p1 "}};
+constexpr InternalSlot kIQSEXPOCZMPInternals2D[] = {
+    {2, "taille_ele    "},  {17, "saut_de_ut    "},  {32, "saut_de_un    "},
+    {47, "beta          "}, {62, "TPSini        "},  {77, "saut_de_ut_p  "},
+    {92, "saut_de_un_p  "}, {107, "saut_de_ut_p1 "}, {122, "saut_de_un_p1 "}};
+constexpr InternalSlot kIQSEXPOCZMPInternals3D[] = {
+    {2, "taille_ele    "},   {17, "saut_de_ut    "},  {32, "saut_de_un    "},  {47, "saut_de_us    "},
+    {62, "beta          "},  {77, "TPSini        "},  {92, "g0            "},  {107, "saut_de_ut_p  "},
+    {122, "saut_de_un_p  "}, {137, "saut_de_us_p  "}, {152, "saut_de_ut_p1 "}, {167, "saut_de_us_p1 "},
+    {182, "saut_de_un_p1 "}};
 // 87 EXPO_CZM_P
-constexpr std::string_view kEXPOCZMPParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ", "S2   ", "G1   ", "G2   ", "mu_g ", "eta  "};
+constexpr std::string_view kEXPOCZMPParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ",
+                                                    "S2   ", "G1   ", "G2   ", "mu_g ", "eta  "};
 constexpr LawField kEXPOCZMPReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}};
 constexpr LawField kEXPOCZMPWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}};
-constexpr InternalSlot kEXPOCZMPInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}, {77, "saut_de_ut_p  "}, {92, "saut_de_un_p  "}, {107, "saut_de_ut_p1 "}, {122, "saut_de_un_p1 "}};
-constexpr InternalSlot kEXPOCZMPInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}, {92, "g0            "}, {107, "saut_de_ut_p  "}, {122, "saut_de_un_p  "}, {137, "saut_de_us_p  "}, {152, "saut_de_ut_p1 "}, {167, "saut_de_us_p1 "}, {182, "saut_de_un_p1 "}};
+constexpr InternalSlot kEXPOCZMPInternals2D[] = {
+    {2, "taille_ele    "},  {17, "saut_de_ut    "},  {32, "saut_de_un    "},
+    {47, "beta          "}, {62, "TPSini        "},  {77, "saut_de_ut_p  "},
+    {92, "saut_de_un_p  "}, {107, "saut_de_ut_p1 "}, {122, "saut_de_un_p1 "}};
+constexpr InternalSlot kEXPOCZMPInternals3D[] = {
+    {2, "taille_ele    "},   {17, "saut_de_ut    "},  {32, "saut_de_un    "},  {47, "saut_de_us    "},
+    {62, "beta          "},  {77, "TPSini        "},  {92, "g0            "},  {107, "saut_de_ut_p  "},
+    {122, "saut_de_un_p  "}, {137, "saut_de_us_p  "}, {152, "saut_de_ut_p1 "}, {167, "saut_de_us_p1 "},
+    {182, "saut_de_un_p1 "}};
 // 88 IQS_EXPO_CZM_SPRING_P
-constexpr std::string_view kIQSEXPOCZMSPRINGPParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ", "S2   ", "G1   ", "G2   ", "mu_g ", "eta  ", "k1   ", "k2   "};
-constexpr LawField kIQSEXPOCZMSPRINGPReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}, {5, 2, 10}};
-constexpr LawField kIQSEXPOCZMSPRINGPWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}, {5, 2, 10}};
-constexpr InternalSlot kIQSEXPOCZMSPRINGPInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}, {77, "saut_de_ut_e  "}, {92, "g0            "}, {107, "saut_de_ut_p  "}, {122, "saut_de_un_p  "}, {137, "saut_de_ut_p1 "}, {152, "saut_de_un_p1 "}};
-constexpr InternalSlot kIQSEXPOCZMSPRINGPInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}, {92, "saut_de_ut_e  "}, {107, "saut_de_us_e  "}, {122, "g0            "}, {137, "saut_de_ut_p  "}, {152, "saut_de_us_p  "}, {167, "saut_de_un_p  "}, {182, "saut_de_ut_p1 "}, {197, "saut_de_us_p1 "}, {212, "saut_de_un_p1 "}};
+constexpr std::string_view kIQSEXPOCZMSPRINGPParameters[] = {"dfric", "sfric", "cn   ", "ct   ",
+                                                             "S1   ", "S2   ", "G1   ", "G2   ",
+                                                             "mu_g ", "eta  ", "k1   ", "k2   "};
+constexpr LawField kIQSEXPOCZMSPRINGPReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4},
+                                                {3, 2, 6}, {4, 2, 8}, {5, 2, 10}};
+constexpr LawField kIQSEXPOCZMSPRINGPWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4},
+                                                 {3, 2, 6}, {4, 2, 8}, {5, 2, 10}};
+constexpr InternalSlot kIQSEXPOCZMSPRINGPInternals2D[] = {
+    {2, "taille_ele    "},   {17, "saut_de_ut    "},  {32, "saut_de_un    "}, {47, "beta          "},
+    {62, "TPSini        "},  {77, "saut_de_ut_e  "},  {92, "g0            "}, {107, "saut_de_ut_p  "},
+    {122, "saut_de_un_p  "}, {137, "saut_de_ut_p1 "}, {152, "saut_de_un_p1 "}};
+constexpr InternalSlot kIQSEXPOCZMSPRINGPInternals3D[] = {
+    {2, "taille_ele    "},   {17, "saut_de_ut    "},  {32, "saut_de_un    "},  {47, "saut_de_us    "},
+    {62, "beta          "},  {77, "TPSini        "},  {92, "saut_de_ut_e  "},  {107, "saut_de_us_e  "},
+    {122, "g0            "}, {137, "saut_de_ut_p  "}, {152, "saut_de_us_p  "}, {167, "saut_de_un_p  "},
+    {182, "saut_de_ut_p1 "}, {197, "saut_de_us_p1 "}, {212, "saut_de_un_p1 "}};
 // 89 EXPO_CZM_SPRING_P
-constexpr std::string_view kEXPOCZMSPRINGPParameters[] = {"dfric", "sfric", "cn   ", "ct   ", "S1   ", "S2   ", "G1   ", "G2   ", "mu_g ", "eta  ", "k1   ", "k2   "};
-constexpr LawField kEXPOCZMSPRINGPReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}, {5, 2, 10}};
-constexpr LawField kEXPOCZMSPRINGPWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}, {5, 2, 10}};
-constexpr InternalSlot kEXPOCZMSPRINGPInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "TPSini        "}, {77, "saut_de_ut_e  "}, {92, "g0            "}, {107, "saut_de_ut_p  "}, {122, "saut_de_un_p  "}, {137, "saut_de_ut_p1 "}, {152, "saut_de_un_p1 "}};
-constexpr InternalSlot kEXPOCZMSPRINGPInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "TPSini        "}, {92, "saut_de_ut_e  "}, {107, "saut_de_us_e  "}, {122, "g0            "}, {137, "saut_de_ut_p  "}, {152, "saut_de_us_p  "}, {167, "saut_de_un_p  "}, {182, "saut_de_ut_p1 "}, {197, "saut_de_us_p1 "}, {212, "saut_de_un_p1 "}};
+constexpr std::string_view kEXPOCZMSPRINGPParameters[] = {"dfric", "sfric", "cn   ", "ct   ",
+                                                          "S1   ", "S2   ", "G1   ", "G2   ",
+                                                          "mu_g ", "eta  ", "k1   ", "k2   "};
+constexpr LawField kEXPOCZMSPRINGPReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4},
+                                             {3, 2, 6}, {4, 2, 8}, {5, 2, 10}};
+constexpr LawField kEXPOCZMSPRINGPWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4},
+                                              {3, 2, 6}, {4, 2, 8}, {5, 2, 10}};
+constexpr InternalSlot kEXPOCZMSPRINGPInternals2D[] = {
+    {2, "taille_ele    "},   {17, "saut_de_ut    "},  {32, "saut_de_un    "}, {47, "beta          "},
+    {62, "TPSini        "},  {77, "saut_de_ut_e  "},  {92, "g0            "}, {107, "saut_de_ut_p  "},
+    {122, "saut_de_un_p  "}, {137, "saut_de_ut_p1 "}, {152, "saut_de_un_p1 "}};
+constexpr InternalSlot kEXPOCZMSPRINGPInternals3D[] = {
+    {2, "taille_ele    "},   {17, "saut_de_ut    "},  {32, "saut_de_un    "},  {47, "saut_de_us    "},
+    {62, "beta          "},  {77, "TPSini        "},  {92, "saut_de_ut_e  "},  {107, "saut_de_us_e  "},
+    {122, "g0            "}, {137, "saut_de_ut_p  "}, {152, "saut_de_us_p  "}, {167, "saut_de_un_p  "},
+    {182, "saut_de_ut_p1 "}, {197, "saut_de_us_p1 "}, {212, "saut_de_un_p1 "}};
 // 90 GTN_CZM
-constexpr std::string_view kGTNCZMParameters[] = {"dyfr ", "stfr ", "cn   ", "ct   ", "f0   ", "fc   ", "k    ", "q1   ", "q2   ", "e    ", "Y    ", "s0   ", "Kh   ", "n    ", "fN   ", "eN   ", "sN   "};
-constexpr LawField kGTNCZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}, {5, 2, 10}, {6, 2, 12}, {7, 2, 14}, {8, 1, 16}};
-constexpr LawField kGTNCZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}, {5, 2, 10}, {6, 2, 12}, {7, 2, 14}, {8, 1, 16}};
+constexpr std::string_view kGTNCZMParameters[] = {"dyfr ", "stfr ", "cn   ", "ct   ", "f0   ", "fc   ",
+                                                  "k    ", "q1   ", "q2   ", "e    ", "Y    ", "s0   ",
+                                                  "Kh   ", "n    ", "fN   ", "eN   ", "sN   "};
+constexpr LawField kGTNCZMReads[] = {{0, 2, 0},  {1, 2, 2},  {2, 2, 4},  {3, 2, 6}, {4, 2, 8},
+                                     {5, 2, 10}, {6, 2, 12}, {7, 2, 14}, {8, 1, 16}};
+constexpr LawField kGTNCZMWrites[] = {{0, 2, 0},  {1, 2, 2},  {2, 2, 4},  {3, 2, 6}, {4, 2, 8},
+                                      {5, 2, 10}, {6, 2, 12}, {7, 2, 14}, {8, 1, 16}};
 // 91 GTN2_CZM
-constexpr std::string_view kGTN2CZMParameters[] = {"dyfr ", "stfr ", "cn   ", "ct   ", "f0   ", "fc   ", "k    ", "q1   ", "q2   ", "e    ", "Y    ", "s0   ", "Kh   ", "n    ", "fN   ", "eN   ", "sN   "};
-constexpr LawField kGTN2CZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}, {5, 2, 10}, {6, 2, 12}, {7, 2, 14}, {8, 1, 16}};
-constexpr LawField kGTN2CZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}, {5, 2, 10}, {6, 2, 12}, {7, 2, 14}, {8, 1, 16}};
+constexpr std::string_view kGTN2CZMParameters[] = {"dyfr ", "stfr ", "cn   ", "ct   ", "f0   ", "fc   ",
+                                                   "k    ", "q1   ", "q2   ", "e    ", "Y    ", "s0   ",
+                                                   "Kh   ", "n    ", "fN   ", "eN   ", "sN   "};
+constexpr LawField kGTN2CZMReads[] = {{0, 2, 0},  {1, 2, 2},  {2, 2, 4},  {3, 2, 6}, {4, 2, 8},
+                                      {5, 2, 10}, {6, 2, 12}, {7, 2, 14}, {8, 1, 16}};
+constexpr LawField kGTN2CZMWrites[] = {{0, 2, 0},  {1, 2, 2},  {2, 2, 4},  {3, 2, 6}, {4, 2, 8},
+                                       {5, 2, 10}, {6, 2, 12}, {7, 2, 14}, {8, 1, 16}};
 // 92 TOSI_CZM
-constexpr std::string_view kTOSICZMParameters[] = {"dyfr ", "stfr ", "cn   ", "ct   ", "f0   ", "fc   ", "n    ", "kcoal", "R    ", "s0   ", "Gc1  ", "Gc2  ", "K    ", "hdef ", "n_mol", "Q    "};
-constexpr LawField kTOSICZMReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}, {5, 2, 10}, {6, 2, 12}, {7, 2, 14}};
-constexpr LawField kTOSICZMWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}, {5, 2, 10}, {6, 2, 12}, {7, 2, 14}};
-constexpr InternalSlot kTOSICZMInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "saut_de_ut_max"}, {77, "saut_de_un_max"}, {92, "coalescence   "}, {107, "tris_coal     "}, {122, "energy1       "}, {137, "energy2       "}, {152, "fc            "}};
-constexpr InternalSlot kTOSICZMInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "saut_de_ut_max"}, {92, "saut_de_un_max"}, {107, "saut_de_us_max"}, {122, "coalescence   "}, {137, "tris_coal     "}, {152, "energy1       "}, {167, "energy2       "}, {182, "fc            "}};
+constexpr std::string_view kTOSICZMParameters[] = {"dyfr ", "stfr ", "cn   ", "ct   ", "f0   ", "fc   ",
+                                                   "n    ", "kcoal", "R    ", "s0   ", "Gc1  ", "Gc2  ",
+                                                   "K    ", "hdef ", "n_mol", "Q    "};
+constexpr LawField kTOSICZMReads[] = {{0, 2, 0}, {1, 2, 2},  {2, 2, 4},  {3, 2, 6},
+                                      {4, 2, 8}, {5, 2, 10}, {6, 2, 12}, {7, 2, 14}};
+constexpr LawField kTOSICZMWrites[] = {{0, 2, 0}, {1, 2, 2},  {2, 2, 4},  {3, 2, 6},
+                                       {4, 2, 8}, {5, 2, 10}, {6, 2, 12}, {7, 2, 14}};
+constexpr InternalSlot kTOSICZMInternals2D[] = {
+    {2, "taille_ele    "},   {17, "saut_de_ut    "},  {32, "saut_de_un    "}, {47, "beta          "},
+    {62, "saut_de_ut_max"},  {77, "saut_de_un_max"},  {92, "coalescence   "}, {107, "tris_coal     "},
+    {122, "energy1       "}, {137, "energy2       "}, {152, "fc            "}};
+constexpr InternalSlot kTOSICZMInternals3D[] = {
+    {2, "taille_ele    "},   {17, "saut_de_ut    "},  {32, "saut_de_un    "},  {47, "saut_de_us    "},
+    {62, "beta          "},  {77, "saut_de_ut_max"},  {92, "saut_de_un_max"},  {107, "saut_de_us_max"},
+    {122, "coalescence   "}, {137, "tris_coal     "}, {152, "energy1       "}, {167, "energy2       "},
+    {182, "fc            "}};
 // 93 TOSI_CZM_INCRE
-constexpr std::string_view kTOSICZMINCREParameters[] = {"dyfr ", "stfr ", "cn   ", "ct   ", "f0   ", "fc   ", "n    ", "kcoal", "R    ", "s0   ", "Gc1  ", "Gc2  ", "K    ", "hdef ", "n_mol", "Q    "};
-constexpr LawField kTOSICZMINCREReads[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}, {5, 2, 10}, {6, 2, 12}, {7, 2, 14}};
-constexpr LawField kTOSICZMINCREWrites[] = {{0, 2, 0}, {1, 2, 2}, {2, 2, 4}, {3, 2, 6}, {4, 2, 8}, {5, 2, 10}, {6, 2, 12}, {7, 2, 14}};
-constexpr InternalSlot kTOSICZMINCREInternals2D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "beta          "}, {62, "saut_de_ut_max"}, {77, "saut_de_un_max"}, {92, "coalescence   "}, {107, "tris_coal     "}, {122, "energy1       "}, {137, "energy2       "}, {152, "fc            "}, {167, "gamma         "}, {182, "Rn_a          "}, {197, "Rt_a          "}};
-constexpr InternalSlot kTOSICZMINCREInternals3D[] = {{2, "taille_ele    "}, {17, "saut_de_ut    "}, {32, "saut_de_un    "}, {47, "saut_de_us    "}, {62, "beta          "}, {77, "saut_de_ut_max"}, {92, "saut_de_un_max"}, {107, "saut_de_us_max"}, {122, "coalescence   "}, {137, "tris_coal     "}, {152, "energy1       "}, {167, "energy2       "}, {182, "fc            "}, {197, "gamma         "}, {212, "Rn_a          "}, {227, "Rt_a          "}, {242, "Rs_a          "}};
+constexpr std::string_view kTOSICZMINCREParameters[] = {"dyfr ", "stfr ", "cn   ", "ct   ", "f0   ", "fc   ",
+                                                        "n    ", "kcoal", "R    ", "s0   ", "Gc1  ", "Gc2  ",
+                                                        "K    ", "hdef ", "n_mol", "Q    "};
+constexpr LawField kTOSICZMINCREReads[] = {{0, 2, 0}, {1, 2, 2},  {2, 2, 4},  {3, 2, 6},
+                                           {4, 2, 8}, {5, 2, 10}, {6, 2, 12}, {7, 2, 14}};
+constexpr LawField kTOSICZMINCREWrites[] = {{0, 2, 0}, {1, 2, 2},  {2, 2, 4},  {3, 2, 6},
+                                            {4, 2, 8}, {5, 2, 10}, {6, 2, 12}, {7, 2, 14}};
+constexpr InternalSlot kTOSICZMINCREInternals2D[] = {
+    {2, "taille_ele    "},   {17, "saut_de_ut    "},  {32, "saut_de_un    "},  {47, "beta          "},
+    {62, "saut_de_ut_max"},  {77, "saut_de_un_max"},  {92, "coalescence   "},  {107, "tris_coal     "},
+    {122, "energy1       "}, {137, "energy2       "}, {152, "fc            "}, {167, "gamma         "},
+    {182, "Rn_a          "}, {197, "Rt_a          "}};
+constexpr InternalSlot kTOSICZMINCREInternals3D[] = {
+    {2, "taille_ele    "},   {17, "saut_de_ut    "},  {32, "saut_de_un    "},  {47, "saut_de_us    "},
+    {62, "beta          "},  {77, "saut_de_ut_max"},  {92, "saut_de_un_max"},  {107, "saut_de_us_max"},
+    {122, "coalescence   "}, {137, "tris_coal     "}, {152, "energy1       "}, {167, "energy2       "},
+    {182, "fc            "}, {197, "gamma         "}, {212, "Rn_a          "}, {227, "Rt_a          "},
+    {242, "Rs_a          "}};
 // 94 ELASTIC_REPELL_CLB_adapt
 constexpr std::string_view kELASTICREPELLCLBAdaptParameters[] = {"F/gap", "sfric"};
 constexpr LawField kELASTICREPELLCLBAdaptReads[] = {{0, 1, 0}, {1, 1, 1}};
@@ -514,100 +748,229 @@ constexpr InternalSlot kELASTICREPELLCLBAdaptInternals2D[] = {{2, "F/gap        
 constexpr InternalSlot kELASTICREPELLCLBAdaptInternals3D[] = {{2, "F/gap         "}};
 
 constexpr LawKind kLawKinds[] = {
-    LawKind{1, "IQS_CLB", kIQSCLBParameters, kIQSCLBReads, kIQSCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{2, "IQS_CLB_nosldt", kIQSCLBNosldtParameters, kIQSCLBNosldtReads, kIQSCLBNosldtWrites, InternalLayout{1, kIQSCLBNosldtInternals2D}, InternalLayout{1, kIQSCLBNosldtInternals3D}, true, ""},
-    LawKind{3, "IQS_CLB_noslds", kIQSCLBNosldsParameters, kIQSCLBNosldsReads, kIQSCLBNosldsWrites, InternalLayout{1, kIQSCLBNosldsInternals2D}, InternalLayout{1, kIQSCLBNosldsInternals3D}, true, ""},
-    LawKind{4, "IQS_CLB_RGR", kIQSCLBRGRParameters, kIQSCLBRGRReads, kIQSCLBRGRWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{5, "IQS_DS_CLB", kIQSDSCLBParameters, kIQSDSCLBReads, kIQSDSCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{6, "IQS_WET_DS_CLB", kIQSWETDSCLBParameters, kIQSWETDSCLBReads, kIQSWETDSCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{7, "postGAP_IQS_MAC_CZM", kPostGAPIQSMACCZMParameters, kPostGAPIQSMACCZMReads, kPostGAPIQSMACCZMWrites, InternalLayout{6, kPostGAPIQSMACCZMInternals2D}, InternalLayout{-1, {}}, true, ""},
-    LawKind{8, "PLASTIC_COUPLED_DOF", kPLASTICCOUPLEDDOFParameters, kPLASTICCOUPLEDDOFReads, kPLASTICCOUPLEDDOFWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{9, "xQS_WET_DS_CLB", kXQSWETDSCLBParameters, kXQSWETDSCLBReads, kXQSWETDSCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{10, "TEX_SOL", kTEXSOLParameters, kTEXSOLReads, kTEXSOLWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{11, "TEX_SOL_UNILAT", kTEXSOLUNILATParameters, kTEXSOLUNILATReads, kTEXSOLUNILATWrites, InternalLayout{1, kTEXSOLUNILATInternals2D}, InternalLayout{1, kTEXSOLUNILATInternals3D}, true, ""},
-    LawKind{12, "GAP_SGR_CLB", kGAPSGRCLBParameters, kGAPSGRCLBReads, kGAPSGRCLBWrites, InternalLayout{1, kGAPSGRCLBInternals2D}, InternalLayout{1, kGAPSGRCLBInternals3D}, true, ""},
-    LawKind{13, "VEL_SGR_CLB", kVELSGRCLBParameters, kVELSGRCLBReads, kVELSGRCLBWrites, InternalLayout{1, kVELSGRCLBInternals2D}, InternalLayout{1, kVELSGRCLBInternals3D}, true, ""},
-    LawKind{14, "GAP_WET_DS_CLB", kGAPWETDSCLBParameters, kGAPWETDSCLBReads, kGAPWETDSCLBWrites, InternalLayout{1, kGAPWETDSCLBInternals2D}, InternalLayout{1, kGAPWETDSCLBInternals3D}, true, ""},
-    LawKind{15, "MSMP_CZM", kMSMPCZMParameters, kMSMPCZMReads, kMSMPCZMWrites, InternalLayout{5, kMSMPCZMInternals2D}, InternalLayout{-1, {}}, true, ""},
-    LawKind{16, "GAP_SGR_DS_CLB", kGAPSGRDSCLBParameters, kGAPSGRDSCLBReads, kGAPSGRDSCLBWrites, InternalLayout{1, kGAPSGRDSCLBInternals2D}, InternalLayout{1, kGAPSGRDSCLBInternals3D}, true, ""},
-    LawKind{17, "VEL_SGR_DS_CLB", kVELSGRDSCLBParameters, kVELSGRDSCLBReads, kVELSGRDSCLBWrites, InternalLayout{1, kVELSGRDSCLBInternals2D}, InternalLayout{1, kVELSGRDSCLBInternals3D}, true, ""},
-    LawKind{18, "RST_CLB", kRSTCLBParameters, kRSTCLBReads, kRSTCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{19, "RST_DS_CLB", kRSTDSCLBParameters, kRSTDSCLBReads, kRSTDSCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{20, "IQS_MOHR_DS_CLB", kIQSMOHRDSCLBParameters, kIQSMOHRDSCLBReads, kIQSMOHRDSCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{21, "MAL_CZM", kMALCZMParameters, kMALCZMReads, kMALCZMWrites, InternalLayout{5, kMALCZMInternals2D}, InternalLayout{6, kMALCZMInternals3D}, true, ""},
-    LawKind{22, "ELASTIC_REPELL_CLB", kELASTICREPELLCLBParameters, kELASTICREPELLCLBReads, kELASTICREPELLCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{23, "CRITICAL_VOIGT_CLB", kCRITICALVOIGTCLBParameters, kCRITICALVOIGTCLBReads, kCRITICALVOIGTCLBWrites, InternalLayout{3, kCRITICALVOIGTCLBInternals2D}, InternalLayout{3, kCRITICALVOIGTCLBInternals3D}, true, ""},
-    LawKind{24, "ELASTIC_REPELL_WET_CLB", kELASTICREPELLWETCLBParameters, kELASTICREPELLWETCLBReads, kELASTICREPELLWETCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{25, "ELASTIC_ROD", kELASTICRODParameters, kELASTICRODReads, kELASTICRODWrites, InternalLayout{1, kELASTICRODInternals2D}, InternalLayout{1, kELASTICRODInternals3D}, true, ""},
-    LawKind{26, "VOIGT_ROD", kVOIGTRODParameters, kVOIGTRODReads, kVOIGTRODWrites, InternalLayout{1, kVOIGTRODInternals2D}, InternalLayout{1, kVOIGTRODInternals3D}, true, ""},
-    LawKind{27, "ELASTIC_WIRE", kELASTICWIREParameters, kELASTICWIREReads, kELASTICWIREWrites, InternalLayout{1, kELASTICWIREInternals2D}, InternalLayout{1, kELASTICWIREInternals3D}, true, ""},
-    LawKind{28, "VOIGT_WIRE", kVOIGTWIREParameters, kVOIGTWIREReads, kVOIGTWIREWrites, InternalLayout{1, kVOIGTWIREInternals2D}, InternalLayout{1, kVOIGTWIREInternals3D}, true, ""},
-    LawKind{29, "MD_JKRs", kMDJKRsParameters, kMDJKRsReads, kMDJKRsWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{30, "ELASTIC_WET_NT", kELASTICWETNTParameters, kELASTICWETNTReads, kELASTICWETNTWrites, InternalLayout{3, kELASTICWETNTInternals2D}, InternalLayout{3, kELASTICWETNTInternals3D}, true, "LMGC90 reads adhen, adhet from the same line and columns as dampn, dampt (no line read in between), so they equal dampn, dampt; its writer prints a third line"},
-    LawKind{31, "COUPLED_DOF", kCOUPLEDDOFParameters, kCOUPLEDDOFReads, kCOUPLEDDOFWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{32, "TANGENTIAL_COUPLED_DOF", kTANGENTIALCOUPLEDDOFParameters, kTANGENTIALCOUPLEDDOFReads, kTANGENTIALCOUPLEDDOFWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{33, "NORMAL_COUPLED_DOF", kNORMALCOUPLEDDOFParameters, kNORMALCOUPLEDDOFReads, kNORMALCOUPLEDDOFWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{34, "PERIO_DOF", kPERIODOFParameters, kPERIODOFReads, kPERIODOFWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, "LMGC90 reads E_XX, E_YY and E_XY from the same field (columns 46-59 of the law line), so the three values are equal; its writer prints them on three lines"},
-    LawKind{35, "GAP_SGR_CLB_WEAR", kGAPSGRCLBWEARParameters, kGAPSGRCLBWEARReads, kGAPSGRCLBWEARWrites, InternalLayout{3, kGAPSGRCLBWEARInternals2D}, InternalLayout{3, kGAPSGRCLBWEARInternals3D}, true, ""},
-    LawKind{36, "IQS_SGR_CLB_WEAR", kIQSSGRCLBWEARParameters, kIQSSGRCLBWEARReads, kIQSSGRCLBWEARWrites, InternalLayout{3, kIQSSGRCLBWEARInternals2D}, InternalLayout{3, kIQSSGRCLBWEARInternals3D}, true, "LMGC90 allocates 3 parameters but reads 4 (Wethk lands out of bounds and is lost; its echo prints an undefined 4th value); lmgc keeps the 4 values"},
-    LawKind{37, "MAC_CZM", kMACCZMParameters, kMACCZMReads, kMACCZMWrites, InternalLayout{5, kMACCZMInternals2D}, InternalLayout{6, kMACCZMInternals3D}, true, ""},
-    LawKind{38, "IQS_MAC_CZM", kIQSMACCZMParameters, kIQSMACCZMReads, kIQSMACCZMWrites, InternalLayout{5, kIQSMACCZMInternals2D}, InternalLayout{6, kIQSMACCZMInternals3D}, true, ""},
-    LawKind{39, "WET_CZM", kWETCZMParameters, kWETCZMReads, kWETCZMWrites, InternalLayout{-1, {}}, InternalLayout{-1, {}}, false, "integer id only: LMGC90's reader rejects the keyword"},
-    LawKind{40, "GAP_MOHR_DS_CLB", kGAPMOHRDSCLBParameters, kGAPMOHRDSCLBReads, kGAPMOHRDSCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{41, "MAC_CZM_nosldt", kMACCZMNosldtParameters, kMACCZMNosldtReads, kMACCZMNosldtWrites, InternalLayout{-1, {}}, InternalLayout{6, kMACCZMNosldtInternals3D}, true, ""},
-    LawKind{42, "MAC_CZM_noslds", kMACCZMNosldsParameters, kMACCZMNosldsReads, kMACCZMNosldsWrites, InternalLayout{-1, {}}, InternalLayout{6, kMACCZMNosldsInternals3D}, true, ""},
-    LawKind{43, "IQS_MAC_CZM_nosldt", kIQSMACCZMNosldtParameters, kIQSMACCZMNosldtReads, kIQSMACCZMNosldtWrites, InternalLayout{-1, {}}, InternalLayout{6, kIQSMACCZMNosldtInternals3D}, true, ""},
-    LawKind{44, "IQS_MAC_CZM_noslds", kIQSMACCZMNosldsParameters, kIQSMACCZMNosldsReads, kIQSMACCZMNosldsWrites, InternalLayout{-1, {}}, InternalLayout{6, kIQSMACCZMNosldsInternals3D}, true, ""},
-    LawKind{45, "ER_MAC_CZM", kERMACCZMParameters, kERMACCZMReads, kERMACCZMWrites, InternalLayout{4, kERMACCZMInternals2D}, InternalLayout{5, kERMACCZMInternals3D}, true, ""},
-    LawKind{46, "IQS_WET_CZM", kIQSWETCZMParameters, kIQSWETCZMReads, kIQSWETCZMWrites, InternalLayout{6, kIQSWETCZMInternals2D}, InternalLayout{6, kIQSWETCZMInternals3D}, true, ""},
-    LawKind{47, "DEM_FIBs", kDEMFIBsParameters, kDEMFIBsReads, kDEMFIBsWrites, InternalLayout{5, kDEMFIBsInternals2D}, InternalLayout{5, kDEMFIBsInternals3D}, true, ""},
-    LawKind{48, "KV_WET", kKVWETParameters, kKVWETReads, kKVWETWrites, InternalLayout{3, kKVWETInternals2D}, InternalLayout{3, kKVWETInternals3D}, true, ""},
-    LawKind{49, "VISCO_ELASTIC_REPELL_WET", kVISCOELASTICREPELLWETParameters, kVISCOELASTICREPELLWETReads, kVISCOELASTICREPELLWETWrites, InternalLayout{6, {}}, InternalLayout{6, {}}, true, ""},
-    LawKind{50, "RIGID_WIRE", kRIGIDWIREParameters, kRIGIDWIREReads, kRIGIDWIREWrites, InternalLayout{1, kRIGIDWIREInternals2D}, InternalLayout{1, kRIGIDWIREInternals3D}, true, ""},
-    LawKind{51, "IQS_BW_CLB", kIQSBWCLBParameters, kIQSBWCLBReads, kIQSBWCLBWrites, InternalLayout{4, kIQSBWCLBInternals2D}, InternalLayout{4, kIQSBWCLBInternals3D}, true, "LMGC90 allocates 6 parameters but reads a 7th (CFreq) and its info table declares 7 (naming the 6th CFreq): add_to_tact_behav_ll stops with \"nb of parameters is wrong\"; lmgc reads and keeps the 7 values"},
-    LawKind{52, "IQS_CAP_MOHR_DS_CLB", kIQSCAPMOHRDSCLBParameters, kIQSCAPMOHRDSCLBReads, kIQSCAPMOHRDSCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{53, "IQS_MAL_CZM", kIQSMALCZMParameters, kIQSMALCZMReads, kIQSMALCZMWrites, InternalLayout{4, kIQSMALCZMInternals2D}, InternalLayout{6, kIQSMALCZMInternals3D}, true, ""},
-    LawKind{54, "GAP_CAP_MOHR_DS_CLB", kGAPCAPMOHRDSCLBParameters, kGAPCAPMOHRDSCLBReads, kGAPCAPMOHRDSCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{55, "BROKEN_DOF", kBROKENDOFParameters, kBROKENDOFReads, kBROKENDOFWrites, InternalLayout{1, kBROKENDOFInternals2D}, InternalLayout{1, kBROKENDOFInternals3D}, true, ""},
-    LawKind{56, "IQS_CLB_g0", kIQSCLBG0Parameters, kIQSCLBG0Reads, kIQSCLBG0Writes, InternalLayout{1, kIQSCLBG0Internals2D}, InternalLayout{1, kIQSCLBG0Internals3D}, true, ""},
-    LawKind{57, "IQS_MAP", kIQSMAPParameters, kIQSMAPReads, kIQSMAPWrites, InternalLayout{1, kIQSMAPInternals2D}, InternalLayout{1, kIQSMAPInternals3D}, true, "LMGC90 reads IQS_MAP but its TACT_BEHAV.OUT writer has no branch for it (stops); lmgc writes it like IQS_CLB"},
-    LawKind{58, "RST_WET_CLB", kRSTWETCLBParameters, kRSTWETCLBReads, kRSTWETCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{59, "LJ_POTENTIAL", kLJPOTENTIALParameters, kLJPOTENTIALReads, kLJPOTENTIALWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, "LMGC90 reads radcd, radan from the same line and columns as noycd, noyan (no line read in between), so they equal noycd, noyan; its writer prints a fourth line"},
-    LawKind{60, "GAP_SGR_CLB_g0", kGAPSGRCLBG0Parameters, kGAPSGRCLBG0Reads, kGAPSGRCLBG0Writes, InternalLayout{2, kGAPSGRCLBG0Internals2D}, InternalLayout{2, kGAPSGRCLBG0Internals3D}, true, ""},
-    LawKind{61, "BRITTLE_ELASTIC_WIRE", kBRITTLEELASTICWIREParameters, kBRITTLEELASTICWIREReads, kBRITTLEELASTICWIREWrites, InternalLayout{1, kBRITTLEELASTICWIREInternals2D}, InternalLayout{1, kBRITTLEELASTICWIREInternals3D}, true, ""},
-    LawKind{62, "ELASTIC_REPELL_CLB_g0", kELASTICREPELLCLBG0Parameters, kELASTICREPELLCLBG0Reads, kELASTICREPELLCLBG0Writes, InternalLayout{1, kELASTICREPELLCLBG0Internals2D}, InternalLayout{1, kELASTICREPELLCLBG0Internals3D}, true, ""},
-    LawKind{63, "MP_CZM", kMPCZMParameters, kMPCZMReads, kMPCZMWrites, InternalLayout{5, kMPCZMInternals2D}, InternalLayout{6, kMPCZMInternals3D}, true, ""},
-    LawKind{64, "MP3_CZM", kMP3CZMParameters, kMP3CZMReads, kMP3CZMWrites, InternalLayout{5, kMP3CZMInternals2D}, InternalLayout{6, kMP3CZMInternals3D}, true, ""},
-    LawKind{65, "MP3_CZM_THER", kMP3CZMTHERParameters, kMP3CZMTHERReads, kMP3CZMTHERWrites, InternalLayout{5, kMP3CZMTHERInternals2D}, InternalLayout{6, kMP3CZMTHERInternals3D}, true, ""},
-    LawKind{66, "TH_CZM", kTHCZMParameters, kTHCZMReads, kTHCZMWrites, InternalLayout{5, kTHCZMInternals2D}, InternalLayout{6, kTHCZMInternals3D}, true, ""},
-    LawKind{67, "IQS_TH_CZM", kIQSTHCZMParameters, kIQSTHCZMReads, kIQSTHCZMWrites, InternalLayout{5, kIQSTHCZMInternals2D}, InternalLayout{6, kIQSTHCZMInternals3D}, true, ""},
-    LawKind{68, "postGAP_IQS_CZM", kPostGAPIQSCZMParameters, kPostGAPIQSCZMReads, kPostGAPIQSCZMWrites, InternalLayout{-1, {}}, InternalLayout{-1, {}}, false, "integer id only (used internally for postGAP_IQS_MAC_CZM): LMGC90's reader rejects the keyword"},
-    LawKind{69, "WET_3C", kWET3CParameters, kWET3CReads, kWET3CWrites, InternalLayout{-1, {}}, InternalLayout{-1, {}}, false, "integer id only: LMGC90's reader rejects the keyword"},
-    LawKind{70, "VISCO_ELASTIC_REPELL_CLB", kVISCOELASTICREPELLCLBParameters, kVISCOELASTICREPELLCLBReads, kVISCOELASTICREPELLCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{71, "ELASTIC_REPELL_MAC_CZM", kELASTICREPELLMACCZMParameters, kELASTICREPELLMACCZMReads, kELASTICREPELLMACCZMWrites, InternalLayout{4, kELASTICREPELLMACCZMInternals2D}, InternalLayout{4, kELASTICREPELLMACCZMInternals3D}, true, ""},
-    LawKind{72, "IQS_PLAS_CLB", kIQSPLASCLBParameters, kIQSPLASCLBReads, kIQSPLASCLBWrites, InternalLayout{3, kIQSPLASCLBInternals2D}, InternalLayout{3, kIQSPLASCLBInternals3D}, true, ""},
-    LawKind{73, "ABP_CZM", kABPCZMParameters, kABPCZMReads, kABPCZMWrites, InternalLayout{5, kABPCZMInternals2D}, InternalLayout{6, kABPCZMInternals3D}, true, ""},
-    LawKind{74, "IQS_ABP_CZM", kIQSABPCZMParameters, kIQSABPCZMReads, kIQSABPCZMWrites, InternalLayout{5, kIQSABPCZMInternals2D}, InternalLayout{6, kIQSABPCZMInternals3D}, true, ""},
-    LawKind{75, "BRITTLE_COATING_CLB", kBRITTLECOATINGCLBParameters, kBRITTLECOATINGCLBReads, kBRITTLECOATINGCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{76, "IQS_STICK", kIQSSTICKParameters, kIQSSTICKReads, kIQSSTICKWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{77, "GAP_SGR_STICK", kGAPSGRSTICKParameters, kGAPSGRSTICKReads, kGAPSGRSTICKWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{78, "GAP_SGR_CLB_nosldt", kGAPSGRCLBNosldtParameters, kGAPSGRCLBNosldtReads, kGAPSGRCLBNosldtWrites, InternalLayout{1, kGAPSGRCLBNosldtInternals2D}, InternalLayout{1, kGAPSGRCLBNosldtInternals3D}, true, ""},
-    LawKind{79, "GAP_SGR_CLB_noslds", kGAPSGRCLBNosldsParameters, kGAPSGRCLBNosldsReads, kGAPSGRCLBNosldsWrites, InternalLayout{1, kGAPSGRCLBNosldsInternals2D}, InternalLayout{1, kGAPSGRCLBNosldsInternals3D}, true, ""},
-    LawKind{80, "preGAP_SGR_CLB", kPreGAPSGRCLBParameters, kPreGAPSGRCLBReads, kPreGAPSGRCLBWrites, InternalLayout{1, kPreGAPSGRCLBInternals2D}, InternalLayout{1, kPreGAPSGRCLBInternals3D}, true, ""},
-    LawKind{81, "NARD_ROD", kNARDRODParameters, kNARDRODReads, kNARDRODWrites, InternalLayout{6, kNARDRODInternals2D}, InternalLayout{6, kNARDRODInternals3D}, true, ""},
-    LawKind{82, "IQS_EXPO_CZM", kIQSEXPOCZMParameters, kIQSEXPOCZMReads, kIQSEXPOCZMWrites, InternalLayout{5, kIQSEXPOCZMInternals2D}, InternalLayout{7, kIQSEXPOCZMInternals3D}, true, ""},
-    LawKind{83, "EXPO_CZM", kEXPOCZMParameters, kEXPOCZMReads, kEXPOCZMWrites, InternalLayout{5, kEXPOCZMInternals2D}, InternalLayout{7, kEXPOCZMInternals3D}, true, ""},
-    LawKind{84, "IQS_EXPO_CZM_SPRING", kIQSEXPOCZMSPRINGParameters, kIQSEXPOCZMSPRINGReads, kIQSEXPOCZMSPRINGWrites, InternalLayout{9, kIQSEXPOCZMSPRINGInternals2D}, InternalLayout{11, kIQSEXPOCZMSPRINGInternals3D}, true, ""},
-    LawKind{85, "EXPO_CZM_SPRING", kEXPOCZMSPRINGParameters, kEXPOCZMSPRINGReads, kEXPOCZMSPRINGWrites, InternalLayout{9, kEXPOCZMSPRINGInternals2D}, InternalLayout{11, kEXPOCZMSPRINGInternals3D}, true, ""},
-    LawKind{86, "IQS_EXPO_CZM_P", kIQSEXPOCZMPParameters, kIQSEXPOCZMPReads, kIQSEXPOCZMPWrites, InternalLayout{9, kIQSEXPOCZMPInternals2D}, InternalLayout{13, kIQSEXPOCZMPInternals3D}, true, ""},
-    LawKind{87, "EXPO_CZM_P", kEXPOCZMPParameters, kEXPOCZMPReads, kEXPOCZMPWrites, InternalLayout{9, kEXPOCZMPInternals2D}, InternalLayout{13, kEXPOCZMPInternals3D}, true, ""},
-    LawKind{88, "IQS_EXPO_CZM_SPRING_P", kIQSEXPOCZMSPRINGPParameters, kIQSEXPOCZMSPRINGPReads, kIQSEXPOCZMSPRINGPWrites, InternalLayout{11, kIQSEXPOCZMSPRINGPInternals2D}, InternalLayout{15, kIQSEXPOCZMSPRINGPInternals3D}, true, ""},
-    LawKind{89, "EXPO_CZM_SPRING_P", kEXPOCZMSPRINGPParameters, kEXPOCZMSPRINGPReads, kEXPOCZMSPRINGPWrites, InternalLayout{11, kEXPOCZMSPRINGPInternals2D}, InternalLayout{15, kEXPOCZMSPRINGPInternals3D}, true, ""},
-    LawKind{90, "GTN_CZM", kGTNCZMParameters, kGTNCZMReads, kGTNCZMWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{91, "GTN2_CZM", kGTN2CZMParameters, kGTN2CZMReads, kGTN2CZMWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
-    LawKind{92, "TOSI_CZM", kTOSICZMParameters, kTOSICZMReads, kTOSICZMWrites, InternalLayout{11, kTOSICZMInternals2D}, InternalLayout{13, kTOSICZMInternals3D}, true, ""},
-    LawKind{93, "TOSI_CZM_INCRE", kTOSICZMINCREParameters, kTOSICZMINCREReads, kTOSICZMINCREWrites, InternalLayout{14, kTOSICZMINCREInternals2D}, InternalLayout{17, kTOSICZMINCREInternals3D}, true, ""},
-    LawKind{94, "ELASTIC_REPELL_CLB_adapt", kELASTICREPELLCLBAdaptParameters, kELASTICREPELLCLBAdaptReads, kELASTICREPELLCLBAdaptWrites, InternalLayout{1, kELASTICREPELLCLBAdaptInternals2D}, InternalLayout{1, kELASTICREPELLCLBAdaptInternals3D}, true, ""},
+    LawKind{1, "IQS_CLB", kIQSCLBParameters, kIQSCLBReads, kIQSCLBWrites, InternalLayout{0, {}},
+            InternalLayout{0, {}}, true, ""},
+    LawKind{2, "IQS_CLB_nosldt", kIQSCLBNosldtParameters, kIQSCLBNosldtReads, kIQSCLBNosldtWrites,
+            InternalLayout{1, kIQSCLBNosldtInternals2D}, InternalLayout{1, kIQSCLBNosldtInternals3D}, true,
+            ""},
+    LawKind{3, "IQS_CLB_noslds", kIQSCLBNosldsParameters, kIQSCLBNosldsReads, kIQSCLBNosldsWrites,
+            InternalLayout{1, kIQSCLBNosldsInternals2D}, InternalLayout{1, kIQSCLBNosldsInternals3D}, true,
+            ""},
+    LawKind{4, "IQS_CLB_RGR", kIQSCLBRGRParameters, kIQSCLBRGRReads, kIQSCLBRGRWrites, InternalLayout{0, {}},
+            InternalLayout{0, {}}, true, ""},
+    LawKind{5, "IQS_DS_CLB", kIQSDSCLBParameters, kIQSDSCLBReads, kIQSDSCLBWrites, InternalLayout{0, {}},
+            InternalLayout{0, {}}, true, ""},
+    LawKind{6, "IQS_WET_DS_CLB", kIQSWETDSCLBParameters, kIQSWETDSCLBReads, kIQSWETDSCLBWrites,
+            InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
+    LawKind{7, "postGAP_IQS_MAC_CZM", kPostGAPIQSMACCZMParameters, kPostGAPIQSMACCZMReads,
+            kPostGAPIQSMACCZMWrites, InternalLayout{6, kPostGAPIQSMACCZMInternals2D}, InternalLayout{-1, {}},
+            true, ""},
+    LawKind{8, "PLASTIC_COUPLED_DOF", kPLASTICCOUPLEDDOFParameters, kPLASTICCOUPLEDDOFReads,
+            kPLASTICCOUPLEDDOFWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
+    LawKind{9, "xQS_WET_DS_CLB", kXQSWETDSCLBParameters, kXQSWETDSCLBReads, kXQSWETDSCLBWrites,
+            InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
+    LawKind{10, "TEX_SOL", kTEXSOLParameters, kTEXSOLReads, kTEXSOLWrites, InternalLayout{0, {}},
+            InternalLayout{0, {}}, true, ""},
+    LawKind{11, "TEX_SOL_UNILAT", kTEXSOLUNILATParameters, kTEXSOLUNILATReads, kTEXSOLUNILATWrites,
+            InternalLayout{1, kTEXSOLUNILATInternals2D}, InternalLayout{1, kTEXSOLUNILATInternals3D}, true,
+            ""},
+    LawKind{12, "GAP_SGR_CLB", kGAPSGRCLBParameters, kGAPSGRCLBReads, kGAPSGRCLBWrites,
+            InternalLayout{1, kGAPSGRCLBInternals2D}, InternalLayout{1, kGAPSGRCLBInternals3D}, true, ""},
+    LawKind{13, "VEL_SGR_CLB", kVELSGRCLBParameters, kVELSGRCLBReads, kVELSGRCLBWrites,
+            InternalLayout{1, kVELSGRCLBInternals2D}, InternalLayout{1, kVELSGRCLBInternals3D}, true, ""},
+    LawKind{14, "GAP_WET_DS_CLB", kGAPWETDSCLBParameters, kGAPWETDSCLBReads, kGAPWETDSCLBWrites,
+            InternalLayout{1, kGAPWETDSCLBInternals2D}, InternalLayout{1, kGAPWETDSCLBInternals3D}, true, ""},
+    LawKind{15, "MSMP_CZM", kMSMPCZMParameters, kMSMPCZMReads, kMSMPCZMWrites,
+            InternalLayout{5, kMSMPCZMInternals2D}, InternalLayout{-1, {}}, true, ""},
+    LawKind{16, "GAP_SGR_DS_CLB", kGAPSGRDSCLBParameters, kGAPSGRDSCLBReads, kGAPSGRDSCLBWrites,
+            InternalLayout{1, kGAPSGRDSCLBInternals2D}, InternalLayout{1, kGAPSGRDSCLBInternals3D}, true, ""},
+    LawKind{17, "VEL_SGR_DS_CLB", kVELSGRDSCLBParameters, kVELSGRDSCLBReads, kVELSGRDSCLBWrites,
+            InternalLayout{1, kVELSGRDSCLBInternals2D}, InternalLayout{1, kVELSGRDSCLBInternals3D}, true, ""},
+    LawKind{18, "RST_CLB", kRSTCLBParameters, kRSTCLBReads, kRSTCLBWrites, InternalLayout{0, {}},
+            InternalLayout{0, {}}, true, ""},
+    LawKind{19, "RST_DS_CLB", kRSTDSCLBParameters, kRSTDSCLBReads, kRSTDSCLBWrites, InternalLayout{0, {}},
+            InternalLayout{0, {}}, true, ""},
+    LawKind{20, "IQS_MOHR_DS_CLB", kIQSMOHRDSCLBParameters, kIQSMOHRDSCLBReads, kIQSMOHRDSCLBWrites,
+            InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
+    LawKind{21, "MAL_CZM", kMALCZMParameters, kMALCZMReads, kMALCZMWrites,
+            InternalLayout{5, kMALCZMInternals2D}, InternalLayout{6, kMALCZMInternals3D}, true, ""},
+    LawKind{22, "ELASTIC_REPELL_CLB", kELASTICREPELLCLBParameters, kELASTICREPELLCLBReads,
+            kELASTICREPELLCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
+    LawKind{23, "CRITICAL_VOIGT_CLB", kCRITICALVOIGTCLBParameters, kCRITICALVOIGTCLBReads,
+            kCRITICALVOIGTCLBWrites, InternalLayout{3, kCRITICALVOIGTCLBInternals2D},
+            InternalLayout{3, kCRITICALVOIGTCLBInternals3D}, true, ""},
+    LawKind{24, "ELASTIC_REPELL_WET_CLB", kELASTICREPELLWETCLBParameters, kELASTICREPELLWETCLBReads,
+            kELASTICREPELLWETCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
+    LawKind{25, "ELASTIC_ROD", kELASTICRODParameters, kELASTICRODReads, kELASTICRODWrites,
+            InternalLayout{1, kELASTICRODInternals2D}, InternalLayout{1, kELASTICRODInternals3D}, true, ""},
+    LawKind{26, "VOIGT_ROD", kVOIGTRODParameters, kVOIGTRODReads, kVOIGTRODWrites,
+            InternalLayout{1, kVOIGTRODInternals2D}, InternalLayout{1, kVOIGTRODInternals3D}, true, ""},
+    LawKind{27, "ELASTIC_WIRE", kELASTICWIREParameters, kELASTICWIREReads, kELASTICWIREWrites,
+            InternalLayout{1, kELASTICWIREInternals2D}, InternalLayout{1, kELASTICWIREInternals3D}, true, ""},
+    LawKind{28, "VOIGT_WIRE", kVOIGTWIREParameters, kVOIGTWIREReads, kVOIGTWIREWrites,
+            InternalLayout{1, kVOIGTWIREInternals2D}, InternalLayout{1, kVOIGTWIREInternals3D}, true, ""},
+    LawKind{29, "MD_JKRs", kMDJKRsParameters, kMDJKRsReads, kMDJKRsWrites, InternalLayout{0, {}},
+            InternalLayout{0, {}}, true, ""},
+    LawKind{30, "ELASTIC_WET_NT", kELASTICWETNTParameters, kELASTICWETNTReads, kELASTICWETNTWrites,
+            InternalLayout{3, kELASTICWETNTInternals2D}, InternalLayout{3, kELASTICWETNTInternals3D}, true,
+            "LMGC90 reads adhen, adhet from the same line and columns as dampn, dampt (no line read in "
+            "between), so they equal dampn, dampt; its writer prints a third line"},
+    LawKind{31, "COUPLED_DOF", kCOUPLEDDOFParameters, kCOUPLEDDOFReads, kCOUPLEDDOFWrites,
+            InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
+    LawKind{32, "TANGENTIAL_COUPLED_DOF", kTANGENTIALCOUPLEDDOFParameters, kTANGENTIALCOUPLEDDOFReads,
+            kTANGENTIALCOUPLEDDOFWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
+    LawKind{33, "NORMAL_COUPLED_DOF", kNORMALCOUPLEDDOFParameters, kNORMALCOUPLEDDOFReads,
+            kNORMALCOUPLEDDOFWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
+    LawKind{34, "PERIO_DOF", kPERIODOFParameters, kPERIODOFReads, kPERIODOFWrites, InternalLayout{0, {}},
+            InternalLayout{0, {}}, true,
+            "LMGC90 reads E_XX, E_YY and E_XY from the same field (columns 46-59 of the law line), so the "
+            "three values are equal; its writer prints them on three lines"},
+    LawKind{35, "GAP_SGR_CLB_WEAR", kGAPSGRCLBWEARParameters, kGAPSGRCLBWEARReads, kGAPSGRCLBWEARWrites,
+            InternalLayout{3, kGAPSGRCLBWEARInternals2D}, InternalLayout{3, kGAPSGRCLBWEARInternals3D}, true,
+            ""},
+    LawKind{36, "IQS_SGR_CLB_WEAR", kIQSSGRCLBWEARParameters, kIQSSGRCLBWEARReads, kIQSSGRCLBWEARWrites,
+            InternalLayout{3, kIQSSGRCLBWEARInternals2D}, InternalLayout{3, kIQSSGRCLBWEARInternals3D}, true,
+            "LMGC90 allocates 3 parameters but reads 4 (Wethk lands out of bounds and is lost; its echo "
+            "prints an undefined 4th value); lmgc keeps the 4 values"},
+    LawKind{37, "MAC_CZM", kMACCZMParameters, kMACCZMReads, kMACCZMWrites,
+            InternalLayout{5, kMACCZMInternals2D}, InternalLayout{6, kMACCZMInternals3D}, true, ""},
+    LawKind{38, "IQS_MAC_CZM", kIQSMACCZMParameters, kIQSMACCZMReads, kIQSMACCZMWrites,
+            InternalLayout{5, kIQSMACCZMInternals2D}, InternalLayout{6, kIQSMACCZMInternals3D}, true, ""},
+    LawKind{39, "WET_CZM", kWETCZMParameters, kWETCZMReads, kWETCZMWrites, InternalLayout{-1, {}},
+            InternalLayout{-1, {}}, false, "integer id only: LMGC90's reader rejects the keyword"},
+    LawKind{40, "GAP_MOHR_DS_CLB", kGAPMOHRDSCLBParameters, kGAPMOHRDSCLBReads, kGAPMOHRDSCLBWrites,
+            InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
+    LawKind{41, "MAC_CZM_nosldt", kMACCZMNosldtParameters, kMACCZMNosldtReads, kMACCZMNosldtWrites,
+            InternalLayout{-1, {}}, InternalLayout{6, kMACCZMNosldtInternals3D}, true, ""},
+    LawKind{42, "MAC_CZM_noslds", kMACCZMNosldsParameters, kMACCZMNosldsReads, kMACCZMNosldsWrites,
+            InternalLayout{-1, {}}, InternalLayout{6, kMACCZMNosldsInternals3D}, true, ""},
+    LawKind{43, "IQS_MAC_CZM_nosldt", kIQSMACCZMNosldtParameters, kIQSMACCZMNosldtReads,
+            kIQSMACCZMNosldtWrites, InternalLayout{-1, {}}, InternalLayout{6, kIQSMACCZMNosldtInternals3D},
+            true, ""},
+    LawKind{44, "IQS_MAC_CZM_noslds", kIQSMACCZMNosldsParameters, kIQSMACCZMNosldsReads,
+            kIQSMACCZMNosldsWrites, InternalLayout{-1, {}}, InternalLayout{6, kIQSMACCZMNosldsInternals3D},
+            true, ""},
+    LawKind{45, "ER_MAC_CZM", kERMACCZMParameters, kERMACCZMReads, kERMACCZMWrites,
+            InternalLayout{4, kERMACCZMInternals2D}, InternalLayout{5, kERMACCZMInternals3D}, true, ""},
+    LawKind{46, "IQS_WET_CZM", kIQSWETCZMParameters, kIQSWETCZMReads, kIQSWETCZMWrites,
+            InternalLayout{6, kIQSWETCZMInternals2D}, InternalLayout{6, kIQSWETCZMInternals3D}, true, ""},
+    LawKind{47, "DEM_FIBs", kDEMFIBsParameters, kDEMFIBsReads, kDEMFIBsWrites,
+            InternalLayout{5, kDEMFIBsInternals2D}, InternalLayout{5, kDEMFIBsInternals3D}, true, ""},
+    LawKind{48, "KV_WET", kKVWETParameters, kKVWETReads, kKVWETWrites, InternalLayout{3, kKVWETInternals2D},
+            InternalLayout{3, kKVWETInternals3D}, true, ""},
+    LawKind{49, "VISCO_ELASTIC_REPELL_WET", kVISCOELASTICREPELLWETParameters, kVISCOELASTICREPELLWETReads,
+            kVISCOELASTICREPELLWETWrites, InternalLayout{6, {}}, InternalLayout{6, {}}, true, ""},
+    LawKind{50, "RIGID_WIRE", kRIGIDWIREParameters, kRIGIDWIREReads, kRIGIDWIREWrites,
+            InternalLayout{1, kRIGIDWIREInternals2D}, InternalLayout{1, kRIGIDWIREInternals3D}, true, ""},
+    LawKind{51, "IQS_BW_CLB", kIQSBWCLBParameters, kIQSBWCLBReads, kIQSBWCLBWrites,
+            InternalLayout{4, kIQSBWCLBInternals2D}, InternalLayout{4, kIQSBWCLBInternals3D}, true,
+            "LMGC90 allocates 6 parameters but reads a 7th (CFreq) and its info table declares 7 (naming the "
+            "6th CFreq): add_to_tact_behav_ll stops with \"nb of parameters is wrong\"; lmgc reads and keeps "
+            "the 7 values"},
+    LawKind{52, "IQS_CAP_MOHR_DS_CLB", kIQSCAPMOHRDSCLBParameters, kIQSCAPMOHRDSCLBReads,
+            kIQSCAPMOHRDSCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
+    LawKind{53, "IQS_MAL_CZM", kIQSMALCZMParameters, kIQSMALCZMReads, kIQSMALCZMWrites,
+            InternalLayout{4, kIQSMALCZMInternals2D}, InternalLayout{6, kIQSMALCZMInternals3D}, true, ""},
+    LawKind{54, "GAP_CAP_MOHR_DS_CLB", kGAPCAPMOHRDSCLBParameters, kGAPCAPMOHRDSCLBReads,
+            kGAPCAPMOHRDSCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
+    LawKind{55, "BROKEN_DOF", kBROKENDOFParameters, kBROKENDOFReads, kBROKENDOFWrites,
+            InternalLayout{1, kBROKENDOFInternals2D}, InternalLayout{1, kBROKENDOFInternals3D}, true, ""},
+    LawKind{56, "IQS_CLB_g0", kIQSCLBG0Parameters, kIQSCLBG0Reads, kIQSCLBG0Writes,
+            InternalLayout{1, kIQSCLBG0Internals2D}, InternalLayout{1, kIQSCLBG0Internals3D}, true, ""},
+    LawKind{57, "IQS_MAP", kIQSMAPParameters, kIQSMAPReads, kIQSMAPWrites,
+            InternalLayout{1, kIQSMAPInternals2D}, InternalLayout{1, kIQSMAPInternals3D}, true,
+            "LMGC90 reads IQS_MAP but its TACT_BEHAV.OUT writer has no branch for it (stops); lmgc writes it "
+            "like IQS_CLB"},
+    LawKind{58, "RST_WET_CLB", kRSTWETCLBParameters, kRSTWETCLBReads, kRSTWETCLBWrites, InternalLayout{0, {}},
+            InternalLayout{0, {}}, true, ""},
+    LawKind{59, "LJ_POTENTIAL", kLJPOTENTIALParameters, kLJPOTENTIALReads, kLJPOTENTIALWrites,
+            InternalLayout{0, {}}, InternalLayout{0, {}}, true,
+            "LMGC90 reads radcd, radan from the same line and columns as noycd, noyan (no line read in "
+            "between), so they equal noycd, noyan; its writer prints a fourth line"},
+    LawKind{60, "GAP_SGR_CLB_g0", kGAPSGRCLBG0Parameters, kGAPSGRCLBG0Reads, kGAPSGRCLBG0Writes,
+            InternalLayout{2, kGAPSGRCLBG0Internals2D}, InternalLayout{2, kGAPSGRCLBG0Internals3D}, true, ""},
+    LawKind{61, "BRITTLE_ELASTIC_WIRE", kBRITTLEELASTICWIREParameters, kBRITTLEELASTICWIREReads,
+            kBRITTLEELASTICWIREWrites, InternalLayout{1, kBRITTLEELASTICWIREInternals2D},
+            InternalLayout{1, kBRITTLEELASTICWIREInternals3D}, true, ""},
+    LawKind{62, "ELASTIC_REPELL_CLB_g0", kELASTICREPELLCLBG0Parameters, kELASTICREPELLCLBG0Reads,
+            kELASTICREPELLCLBG0Writes, InternalLayout{1, kELASTICREPELLCLBG0Internals2D},
+            InternalLayout{1, kELASTICREPELLCLBG0Internals3D}, true, ""},
+    LawKind{63, "MP_CZM", kMPCZMParameters, kMPCZMReads, kMPCZMWrites, InternalLayout{5, kMPCZMInternals2D},
+            InternalLayout{6, kMPCZMInternals3D}, true, ""},
+    LawKind{64, "MP3_CZM", kMP3CZMParameters, kMP3CZMReads, kMP3CZMWrites,
+            InternalLayout{5, kMP3CZMInternals2D}, InternalLayout{6, kMP3CZMInternals3D}, true, ""},
+    LawKind{65, "MP3_CZM_THER", kMP3CZMTHERParameters, kMP3CZMTHERReads, kMP3CZMTHERWrites,
+            InternalLayout{5, kMP3CZMTHERInternals2D}, InternalLayout{6, kMP3CZMTHERInternals3D}, true, ""},
+    LawKind{66, "TH_CZM", kTHCZMParameters, kTHCZMReads, kTHCZMWrites, InternalLayout{5, kTHCZMInternals2D},
+            InternalLayout{6, kTHCZMInternals3D}, true, ""},
+    LawKind{67, "IQS_TH_CZM", kIQSTHCZMParameters, kIQSTHCZMReads, kIQSTHCZMWrites,
+            InternalLayout{5, kIQSTHCZMInternals2D}, InternalLayout{6, kIQSTHCZMInternals3D}, true, ""},
+    LawKind{68, "postGAP_IQS_CZM", kPostGAPIQSCZMParameters, kPostGAPIQSCZMReads, kPostGAPIQSCZMWrites,
+            InternalLayout{-1, {}}, InternalLayout{-1, {}}, false,
+            "integer id only (used internally for postGAP_IQS_MAC_CZM): LMGC90's reader rejects the keyword"},
+    LawKind{69, "WET_3C", kWET3CParameters, kWET3CReads, kWET3CWrites, InternalLayout{-1, {}},
+            InternalLayout{-1, {}}, false, "integer id only: LMGC90's reader rejects the keyword"},
+    LawKind{70, "VISCO_ELASTIC_REPELL_CLB", kVISCOELASTICREPELLCLBParameters, kVISCOELASTICREPELLCLBReads,
+            kVISCOELASTICREPELLCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
+    LawKind{71, "ELASTIC_REPELL_MAC_CZM", kELASTICREPELLMACCZMParameters, kELASTICREPELLMACCZMReads,
+            kELASTICREPELLMACCZMWrites, InternalLayout{4, kELASTICREPELLMACCZMInternals2D},
+            InternalLayout{4, kELASTICREPELLMACCZMInternals3D}, true, ""},
+    LawKind{72, "IQS_PLAS_CLB", kIQSPLASCLBParameters, kIQSPLASCLBReads, kIQSPLASCLBWrites,
+            InternalLayout{3, kIQSPLASCLBInternals2D}, InternalLayout{3, kIQSPLASCLBInternals3D}, true, ""},
+    LawKind{73, "ABP_CZM", kABPCZMParameters, kABPCZMReads, kABPCZMWrites,
+            InternalLayout{5, kABPCZMInternals2D}, InternalLayout{6, kABPCZMInternals3D}, true, ""},
+    LawKind{74, "IQS_ABP_CZM", kIQSABPCZMParameters, kIQSABPCZMReads, kIQSABPCZMWrites,
+            InternalLayout{5, kIQSABPCZMInternals2D}, InternalLayout{6, kIQSABPCZMInternals3D}, true, ""},
+    LawKind{75, "BRITTLE_COATING_CLB", kBRITTLECOATINGCLBParameters, kBRITTLECOATINGCLBReads,
+            kBRITTLECOATINGCLBWrites, InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
+    LawKind{76, "IQS_STICK", kIQSSTICKParameters, kIQSSTICKReads, kIQSSTICKWrites, InternalLayout{0, {}},
+            InternalLayout{0, {}}, true, ""},
+    LawKind{77, "GAP_SGR_STICK", kGAPSGRSTICKParameters, kGAPSGRSTICKReads, kGAPSGRSTICKWrites,
+            InternalLayout{0, {}}, InternalLayout{0, {}}, true, ""},
+    LawKind{78, "GAP_SGR_CLB_nosldt", kGAPSGRCLBNosldtParameters, kGAPSGRCLBNosldtReads,
+            kGAPSGRCLBNosldtWrites, InternalLayout{1, kGAPSGRCLBNosldtInternals2D},
+            InternalLayout{1, kGAPSGRCLBNosldtInternals3D}, true, ""},
+    LawKind{79, "GAP_SGR_CLB_noslds", kGAPSGRCLBNosldsParameters, kGAPSGRCLBNosldsReads,
+            kGAPSGRCLBNosldsWrites, InternalLayout{1, kGAPSGRCLBNosldsInternals2D},
+            InternalLayout{1, kGAPSGRCLBNosldsInternals3D}, true, ""},
+    LawKind{80, "preGAP_SGR_CLB", kPreGAPSGRCLBParameters, kPreGAPSGRCLBReads, kPreGAPSGRCLBWrites,
+            InternalLayout{1, kPreGAPSGRCLBInternals2D}, InternalLayout{1, kPreGAPSGRCLBInternals3D}, true,
+            ""},
+    LawKind{81, "NARD_ROD", kNARDRODParameters, kNARDRODReads, kNARDRODWrites,
+            InternalLayout{6, kNARDRODInternals2D}, InternalLayout{6, kNARDRODInternals3D}, true, ""},
+    LawKind{82, "IQS_EXPO_CZM", kIQSEXPOCZMParameters, kIQSEXPOCZMReads, kIQSEXPOCZMWrites,
+            InternalLayout{5, kIQSEXPOCZMInternals2D}, InternalLayout{7, kIQSEXPOCZMInternals3D}, true, ""},
+    LawKind{83, "EXPO_CZM", kEXPOCZMParameters, kEXPOCZMReads, kEXPOCZMWrites,
+            InternalLayout{5, kEXPOCZMInternals2D}, InternalLayout{7, kEXPOCZMInternals3D}, true, ""},
+    LawKind{84, "IQS_EXPO_CZM_SPRING", kIQSEXPOCZMSPRINGParameters, kIQSEXPOCZMSPRINGReads,
+            kIQSEXPOCZMSPRINGWrites, InternalLayout{9, kIQSEXPOCZMSPRINGInternals2D},
+            InternalLayout{11, kIQSEXPOCZMSPRINGInternals3D}, true, ""},
+    LawKind{85, "EXPO_CZM_SPRING", kEXPOCZMSPRINGParameters, kEXPOCZMSPRINGReads, kEXPOCZMSPRINGWrites,
+            InternalLayout{9, kEXPOCZMSPRINGInternals2D}, InternalLayout{11, kEXPOCZMSPRINGInternals3D}, true,
+            ""},
+    LawKind{86, "IQS_EXPO_CZM_P", kIQSEXPOCZMPParameters, kIQSEXPOCZMPReads, kIQSEXPOCZMPWrites,
+            InternalLayout{9, kIQSEXPOCZMPInternals2D}, InternalLayout{13, kIQSEXPOCZMPInternals3D}, true,
+            ""},
+    LawKind{87, "EXPO_CZM_P", kEXPOCZMPParameters, kEXPOCZMPReads, kEXPOCZMPWrites,
+            InternalLayout{9, kEXPOCZMPInternals2D}, InternalLayout{13, kEXPOCZMPInternals3D}, true, ""},
+    LawKind{88, "IQS_EXPO_CZM_SPRING_P", kIQSEXPOCZMSPRINGPParameters, kIQSEXPOCZMSPRINGPReads,
+            kIQSEXPOCZMSPRINGPWrites, InternalLayout{11, kIQSEXPOCZMSPRINGPInternals2D},
+            InternalLayout{15, kIQSEXPOCZMSPRINGPInternals3D}, true, ""},
+    LawKind{89, "EXPO_CZM_SPRING_P", kEXPOCZMSPRINGPParameters, kEXPOCZMSPRINGPReads, kEXPOCZMSPRINGPWrites,
+            InternalLayout{11, kEXPOCZMSPRINGPInternals2D}, InternalLayout{15, kEXPOCZMSPRINGPInternals3D},
+            true, ""},
+    LawKind{90, "GTN_CZM", kGTNCZMParameters, kGTNCZMReads, kGTNCZMWrites, InternalLayout{0, {}},
+            InternalLayout{0, {}}, true, ""},
+    LawKind{91, "GTN2_CZM", kGTN2CZMParameters, kGTN2CZMReads, kGTN2CZMWrites, InternalLayout{0, {}},
+            InternalLayout{0, {}}, true, ""},
+    LawKind{92, "TOSI_CZM", kTOSICZMParameters, kTOSICZMReads, kTOSICZMWrites,
+            InternalLayout{11, kTOSICZMInternals2D}, InternalLayout{13, kTOSICZMInternals3D}, true, ""},
+    LawKind{93, "TOSI_CZM_INCRE", kTOSICZMINCREParameters, kTOSICZMINCREReads, kTOSICZMINCREWrites,
+            InternalLayout{14, kTOSICZMINCREInternals2D}, InternalLayout{17, kTOSICZMINCREInternals3D}, true,
+            ""},
+    LawKind{94, "ELASTIC_REPELL_CLB_adapt", kELASTICREPELLCLBAdaptParameters, kELASTICREPELLCLBAdaptReads,
+            kELASTICREPELLCLBAdaptWrites, InternalLayout{1, kELASTICREPELLCLBAdaptInternals2D},
+            InternalLayout{1, kELASTICREPELLCLBAdaptInternals3D}, true, ""},
 };
 
 static_assert(std::size(kLawKinds) == 94, "LMGC90 has 94 law ids");
@@ -676,7 +1039,9 @@ std::vector<double> values_read_back_from_echo(const LawKind& kind, std::span<co
   return result;
 }
 
-std::span<const LawKind> law_catalogue() { return kLawKinds; }
+std::span<const LawKind> law_catalogue() {
+  return kLawKinds;
+}
 
 const LawKind* find_law_kind(std::string_view keyword) {
   for (const LawKind& kind : kLawKinds)
@@ -684,13 +1049,16 @@ const LawKind* find_law_kind(std::string_view keyword) {
   return nullptr;
 }
 
-std::span<const GuideOnlyLawName> guide_only_law_names() { return kGuideOnly; }
+std::span<const GuideOnlyLawName> guide_only_law_names() {
+  return kGuideOnly;
+}
 
 std::string law_keyword_hint(std::string_view keyword) {
   for (const GuideOnlyLawName& old : kGuideOnly) {
     if (old.guide_name != keyword) continue;
     if (old.current_keyword.empty())
-      return "'" + std::string(keyword) + "' is a law of LMGC90's 2012 user's guide that the current LMGC90 no longer has";
+      return "'" + std::string(keyword) +
+             "' is a law of LMGC90's 2012 user's guide that the current LMGC90 no longer has";
     return "'" + std::string(keyword) + "' is the user's guide name; the current keyword is '" +
            std::string(old.current_keyword) + "' (the dimension comes from the run, not the name)";
   }

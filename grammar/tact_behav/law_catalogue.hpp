@@ -36,15 +36,15 @@ struct InternalLayout {
 };
 
 struct LawKind {
-  int id = 0;                                   // LMGC90's integer law id (mod_parameters order, 1..94)
-  std::string_view keyword;                     // as read from columns 9-38, case-sensitive
+  int id = 0;                                    // LMGC90's integer law id (mod_parameters order, 1..94)
+  std::string_view keyword;                      // as read from columns 9-38, case-sensitive
   std::span<const std::string_view> parameters;  // 5-character names LMGC90 prints, in storage order
-  std::span<const LawField> reads;              // how the reader takes the values (quirks included)
-  std::span<const LawField> writes;             // how the TACT_BEHAV.OUT writer prints them
+  std::span<const LawField> reads;               // how the reader takes the values (quirks included)
+  std::span<const LawField> writes;              // how the TACT_BEHAV.OUT writer prints them
   InternalLayout internals_2d;
   InternalLayout internals_3d;
-  bool readable = true;     // false: an integer id whose keyword the reader rejects
-  std::string_view quirk;   // non-empty where LMGC90's reader/writer does something surprising
+  bool readable = true;    // false: an integer id whose keyword the reader rejects
+  std::string_view quirk;  // non-empty where LMGC90's reader/writer does something surprising
 
   // Number of physical lines the reader consumes for this law (law line included).
   int read_line_count() const;

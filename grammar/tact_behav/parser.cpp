@@ -18,7 +18,9 @@ namespace {
 // (7X,D14.7) from columns 39-59, read_double 2(7X,D14.7) from 39-80.
 constexpr int kValueColumns[2][2] = {{46, 59}, {67, 80}};
 
-bool is_card_keyword(std::string_view keyword) { return keyword == "behav" || keyword == "seety"; }
+bool is_card_keyword(std::string_view keyword) {
+  return keyword == "behav" || keyword == "seety";
+}
 
 int line_end_column(const Line& line) {
   const auto size = static_cast<int>(std::min<std::size_t>(line.text.size(), kRecordLength));
@@ -65,7 +67,8 @@ class TactBehavParser {
       }
       take();
       if (reader_.at_end()) {
-        reader_.report_at_end("L1006", "file ends after '$behav' where the law line (nickname, law keyword) is expected");
+        reader_.report_at_end(
+            "L1006", "file ends after '$behav' where the law line (nickname, law keyword) is expected");
         return;
       }
       read_law(file, take());
@@ -78,9 +81,10 @@ class TactBehavParser {
     law.keyword = reader_.word(law_line, 9, 38);
     const LawKind* kind = find_law_kind(law.keyword.value);
     if (kind == nullptr || !kind->readable) {
-      const std::string message = law.keyword.value.empty()
-                                      ? std::string("law keyword is missing in columns 9-38 of law '") + law.nickname.value + "'"
-                                      : "unknown contact law '" + law.keyword.value + "' (law '" + law.nickname.value + "')";
+      const std::string message =
+          law.keyword.value.empty()
+              ? std::string("law keyword is missing in columns 9-38 of law '") + law.nickname.value + "'"
+              : "unknown contact law '" + law.keyword.value + "' (law '" + law.nickname.value + "')";
       reader_.report("L1001", law_line, 9, 38, message, law_keyword_hint(law.keyword.value));
       // LMGC90 stops here; skip the card's value lines without reporting them again.
       while (!reader_.at_end() && !is_card_keyword(keyword_of(reader_.peek().text))) take();
@@ -92,9 +96,10 @@ class TactBehavParser {
     for (const LawField& field : kind->reads) {
       while (current_line < field.line) {
         if (reader_.at_end()) {
-          reader_.report_at_end("L1006", "file ends inside law '" + law.nickname.value + "' (" + law.keyword.value + "): " +
-                                             std::to_string(kind->read_line_count() - current_line - 1) +
-                                             " more line(s) of values expected");
+          reader_.report_at_end("L1006",
+                                "file ends inside law '" + law.nickname.value + "' (" + law.keyword.value +
+                                    "): " + std::to_string(kind->read_line_count() - current_line - 1) +
+                                    " more line(s) of values expected");
           file.laws.push_back(std::move(law));
           return;
         }
@@ -102,8 +107,9 @@ class TactBehavParser {
         const std::string_view keyword = keyword_of(next.text);
         if (is_card_keyword(keyword))
           reader_.report("L1019", next, 2, 6,
-                         "'$" + std::string(keyword) + "' line is read as a value line of law '" + law.nickname.value +
-                             "' (" + law.keyword.value + "), which needs " + std::to_string(kind->read_line_count()) +
+                         "'$" + std::string(keyword) + "' line is read as a value line of law '" +
+                             law.nickname.value + "' (" + law.keyword.value + "), which needs " +
+                             std::to_string(kind->read_line_count()) +
                              " lines; LMGC90 reads its columns 46-59/67-80 as values" +
                              (keyword == "behav" ? std::string(" and loses this card")
                                                  : std::string(" (its see pass still reads the block)")),
@@ -135,12 +141,14 @@ class TactBehavParser {
       const Line& title = reader_.peek();
       if (columns(title.text, 2, 6) != "cdbdy" && looks_like_see_data(title)) {
         // LMGC90 skips the title line whatever it holds: here it would swallow this data line.
-        reader_.report("L1012", title, 2, 6, "title line of '$seety' is missing: LMGC90 skips this data line as the title",
+        reader_.report("L1012", title, 2, 6,
+                       "title line of '$seety' is missing: LMGC90 skips this data line as the title",
                        "put ' cdbdy  cdtac  cdcol  behav  anbdy  antac  ancol       alert' after '$seety'");
       } else {
         take();
         if (reader_.at_end()) {
-          reader_.report_at_end("L1006", "file ends after the '$seety' title line where the data line is expected");
+          reader_.report_at_end("L1006",
+                                "file ends after the '$seety' title line where the data line is expected");
           return;
         }
       }
@@ -164,7 +172,8 @@ class TactBehavParser {
     see.antagonist_contactor = reader_.word(line, 37, 41);
     see.antagonist_colour = reader_.word(line, 44, 48);
     see.alert = reader_.real(line, 55, 68);
-    if (!reader_.at_end() && columns(reader_.peek().text, 1, 1) == "+") see.global_alert = reader_.real(take(), 55, 68);
+    if (!reader_.at_end() && columns(reader_.peek().text, 1, 1) == "+")
+      see.global_alert = reader_.real(take(), 55, 68);
     return see;
   }
 
@@ -180,7 +189,8 @@ class TactBehavParser {
       if (padded5(kept.law_nickname.value) != padded5(dropped.law_nickname.value))
         reader_.sink().report("L2015", where,
                               "see entry names the same pair as " + earlier + " with another law ('" +
-                                  dropped.law_nickname.value + "' vs '" + kept.law_nickname.value + "'); LMGC90 stops",
+                                  dropped.law_nickname.value + "' vs '" + kept.law_nickname.value +
+                                  "'); LMGC90 stops",
                               "keep one entry per pair (candidate and antagonist may be swapped)");
       else
         reader_.sink().report("L1019", where, "see entry repeats " + earlier + "; LMGC90 drops it");
@@ -197,12 +207,15 @@ class TactBehavParser {
       std::string message = "line is outside every '$behav' card and '$seety' block; LMGC90 skips it";
       std::string hint;
       if (text.starts_with("$behav") || text.starts_with("$seety")) {
-        message = "'" + std::string(text.substr(0, 6)) + "' is not in columns 1-6; LMGC90 does not see the card";
+        message =
+            "'" + std::string(text.substr(0, 6)) + "' is not in columns 1-6; LMGC90 does not see the card";
         hint = "LMGC90 tests columns 2-6 for the keyword";
       } else if (const LawKind* kind = find_law_kind(std::string(trim_right(columns(line.text, 9, 38))));
                  kind != nullptr && kind->readable) {
-        message = "law line of '" + std::string(trim_right(columns(line.text, 2, 6))) + "' (" + std::string(kind->keyword) +
-                  ") has no '$behav' line before it (or that line was read as a value line); LMGC90 skips the law";
+        message =
+            "law line of '" + std::string(trim_right(columns(line.text, 2, 6))) + "' (" +
+            std::string(kind->keyword) +
+            ") has no '$behav' line before it (or that line was read as a value line); LMGC90 skips the law";
       }
       reader_.report("L1019", line, 1, line_end_column(line), message, hint);
     }

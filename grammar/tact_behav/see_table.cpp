@@ -29,14 +29,18 @@ int see_contactor_id(std::string_view name) {
 }
 
 bool same_see_pair(const SeeEntry& a, const SeeEntry& b) {
-  const int a_cd = see_contactor_id(a.candidate_contactor.value), a_an = see_contactor_id(a.antagonist_contactor.value);
-  const int b_cd = see_contactor_id(b.candidate_contactor.value), b_an = see_contactor_id(b.antagonist_contactor.value);
+  const int a_cd = see_contactor_id(a.candidate_contactor.value),
+            a_an = see_contactor_id(a.antagonist_contactor.value);
+  const int b_cd = see_contactor_id(b.candidate_contactor.value),
+            b_an = see_contactor_id(b.antagonist_contactor.value);
   // spec: contact-laws.md §1.2 (remove_bad_see_links): same pair, or the same pair swapped.
-  const bool same = a_an == b_an && a_cd == b_cd && padded(a.antagonist_colour) == padded(b.antagonist_colour) &&
+  const bool same = a_an == b_an && a_cd == b_cd &&
+                    padded(a.antagonist_colour) == padded(b.antagonist_colour) &&
                     padded(a.candidate_colour) == padded(b.candidate_colour) &&
                     padded(a.antagonist_body) == padded(b.antagonist_body) &&
                     padded(a.candidate_body) == padded(b.candidate_body);
-  const bool swapped = a_an == b_cd && a_cd == b_an && padded(a.antagonist_colour) == padded(b.candidate_colour) &&
+  const bool swapped = a_an == b_cd && a_cd == b_an &&
+                       padded(a.antagonist_colour) == padded(b.candidate_colour) &&
                        padded(a.candidate_colour) == padded(b.antagonist_colour) &&
                        padded(a.antagonist_body) == padded(b.candidate_body) &&
                        padded(a.candidate_body) == padded(b.antagonist_body);

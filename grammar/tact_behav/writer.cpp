@@ -153,8 +153,9 @@ void append_see(std::string& out, const SeeEntry& see) {
   out += kSeeTitle;
   out += '\n';
   // FORMAT(1X,A5,2X,A5,2X,A5,2X,A5,2X,A5,2X,A5,2X,A5,6X,D14.7)
-  const Word* words[] = {&see.candidate_body, &see.candidate_contactor, &see.candidate_colour, &see.law_nickname,
-                         &see.antagonist_body, &see.antagonist_contactor, &see.antagonist_colour};
+  const Word* words[] = {&see.candidate_body,   &see.candidate_contactor, &see.candidate_colour,
+                         &see.law_nickname,     &see.antagonist_body,     &see.antagonist_contactor,
+                         &see.antagonist_colour};
   for (std::size_t i = 0; i < 7; ++i) {
     append_blanks(out, i == 0 ? 1 : 2);
     append_fortran_a(out, words[i]->value, 5);

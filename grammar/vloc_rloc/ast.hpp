@@ -27,12 +27,12 @@ struct VlocRlocInteraction {
   // contactor numbers, vertex/segment, iadj), each in order of appearance.
   std::vector<Word> words;
   std::vector<Integer> integers;
-  std::vector<VlocRlocVector> vectors;          // rl, vl, gap, n/t/s, coo lines, as written
+  std::vector<VlocRlocVector> vectors;  // rl, vl, gap, n/t/s, coo lines, as written
   // Internal variables of the law (state-and-outputs.md §1.4.4): their count depends on the law.
   // The '#' line naming them is kept verbatim (padded with blanks to 285 columns by LMGC90), the
   // values line by line as written ((1X,D14.7) each: 6 or 5 per line for DKDKx/DKJCx, all on one
   // line otherwise, interaction_catalogue.hpp); vloc_rloc_internal_values() gives them as one vector.
-  std::string internal_comment;                 // '#' line naming the internal variables, or empty
+  std::string internal_comment;                   // '#' line naming the internal variables, or empty
   std::vector<std::vector<Real>> internal_lines;  // internal variable values, line by line
   friend bool operator==(const VlocRlocInteraction&, const VlocRlocInteraction&) = default;
 };

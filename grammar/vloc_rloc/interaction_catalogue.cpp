@@ -31,7 +31,8 @@ constexpr L kSPSP[] = {kRlStn, kVlStn, kGtt, kS, kT, kN, kCoo};
 constexpr L kSPCD[] = {kRlStn, kVlStn, kGtt, kT, kN, kS, kCoo};
 constexpr L kPTPT3[] = {kRlTns, kVlTns, kGapTT, kN, kCoo};
 
-constexpr std::string_view kTitle2D = " cdbdy  numbr  cdtac  numbr  behav  anbdy  numbr  antac  numbr  sttus   iadj";
+constexpr std::string_view kTitle2D =
+    " cdbdy  numbr  cdtac  numbr  behav  anbdy  numbr  antac  numbr  sttus   iadj";
 constexpr std::string_view kTitleSegment =
     " cdbdy  numbr  cdtac  numbr  behav  anbdy  numbr  antac  numbr  segmt  sttus   iadj";
 constexpr std::string_view kTitleDKALp =
@@ -42,15 +43,22 @@ constexpr std::string_view kTitleVertex =
     " cdbdy  numbr  cdtac  numbr  vertx  numbr  behav  anbdy  numbr  antac  numbr                sttus iadj ";
 constexpr std::string_view kTitlePLPLx =
     " cdbdy  numbr  cdtac  numbr  vertx  numbr  behav  anbdy  numbr  antac  numbr  segmt  numbr";
-constexpr std::string_view kTitle3D = " cdbdy  numbr  cdtac  numbr  CDVER  behav  anbdy  numbr  antac  numbr  sttus";
-constexpr std::string_view kTitle3DShort = " cdbdy  numbr  cdtac  numbr  behav  anbdy  numbr  antac  numbr  sttus";
+constexpr std::string_view kTitle3D =
+    " cdbdy  numbr  cdtac  numbr  CDVER  behav  anbdy  numbr  antac  numbr  sttus";
+constexpr std::string_view kTitle3DShort =
+    " cdbdy  numbr  cdtac  numbr  behav  anbdy  numbr  antac  numbr  sttus";
 
 constexpr std::string_view kData2D = "1X A5 2X I5 2X A5 2X I5 2X A5 2X A5 2X I5 2X A5 2X I5 2X A5 2X I5";
-constexpr std::string_view kDataCLALp = "1X A5 2X I5 2X A5 2X I5 2X A5 2X A5 2X I5 2X A5 2X I5 2X I5 2X A5 2X I5";
-constexpr std::string_view kDataDKALp = "1X A5 2X I5 2X A5 2X I5 2X A5 2X A5 2X I5 2X A5 2X I5 2X I5 9X A5 1X I5";
-constexpr std::string_view kDataDKPLx = "1X A5 2X I5 2X A5 2X I5 2X A5 2X A5 2X I5 2X A5 2X I5 2X A5 2X I5 16X A5 1X I5";
-constexpr std::string_view kDataPLJCx = "1X A5 2X I5 2X A5 2X I5 2X A5 2X I5 2X A5 2X A5 2X I5 2X A5 2X I5 16X A5 1X I5";
-constexpr std::string_view kDataPLALp = "1X A5 2X I5 2X A5 2X I5 2X A5 2X I5 2X A5 2X A5 2X I5 2X A5 2X I5 2X I5 9X A5 1X I5";
+constexpr std::string_view kDataCLALp =
+    "1X A5 2X I5 2X A5 2X I5 2X A5 2X A5 2X I5 2X A5 2X I5 2X I5 2X A5 2X I5";
+constexpr std::string_view kDataDKALp =
+    "1X A5 2X I5 2X A5 2X I5 2X A5 2X A5 2X I5 2X A5 2X I5 2X I5 9X A5 1X I5";
+constexpr std::string_view kDataDKPLx =
+    "1X A5 2X I5 2X A5 2X I5 2X A5 2X A5 2X I5 2X A5 2X I5 2X A5 2X I5 16X A5 1X I5";
+constexpr std::string_view kDataPLJCx =
+    "1X A5 2X I5 2X A5 2X I5 2X A5 2X I5 2X A5 2X A5 2X I5 2X A5 2X I5 16X A5 1X I5";
+constexpr std::string_view kDataPLALp =
+    "1X A5 2X I5 2X A5 2X I5 2X A5 2X I5 2X A5 2X A5 2X I5 2X A5 2X I5 2X I5 9X A5 1X I5";
 constexpr std::string_view kDataPLPLx =
     "1X A5 2X I5 2X A5 2X I5 2X A5 2X I5 2X A5 2X A5 2X I5 2X A5 2X I5 2X A5 2X I5 2X A5 1X I5";
 constexpr std::string_view kDataPRPRx = "1X A5 2X I5 2X A5 2X I5 2X I5 2X A5 2X A5 2X I5 2X A5 2X I5 2X A5";
@@ -67,7 +75,8 @@ constexpr std::string_view kTitleSPSPxXxl =
 constexpr std::string_view kTitleCSPRx =
     "        cdbdy  numbr  cdtac  numbr  behav  anbdy  numbr  antac  numbr  sttus";
 constexpr std::string_view kData2DXxl = "1X A5 2X I10 2X A5 2X I5 2X A5 2X A5 2X I10 2X A5 2X I5 2X A5 2X I5";
-constexpr std::string_view kDataSPSPxXxl = "1X A5 2X I7 2X A5 2X I7 9X A5 2X A5 2X I7 2X A5 2X I7 2X A5 2X I7";
+constexpr std::string_view kDataSPSPxXxl =
+    "1X A5 2X I7 2X A5 2X I7 9X A5 2X A5 2X I7 2X A5 2X I7 2X A5 2X I7";
 
 constexpr InteractionKind kKinds[] = {
     // 2D (src/Core/contact_2D/mod_*.f90, write_out_Vloc_Rloc). The normal layout of a module comes
@@ -108,10 +117,13 @@ constexpr InteractionKind kKinds[] = {
 
 }  // namespace
 
-std::span<const InteractionKind> interaction_catalogue() { return kKinds; }
+std::span<const InteractionKind> interaction_catalogue() {
+  return kKinds;
+}
 
 const InteractionKind* find_interaction_kind(std::string_view type) {
-  auto it = std::find_if(std::begin(kKinds), std::end(kKinds), [&](const InteractionKind& k) { return k.type == type; });
+  auto it = std::find_if(std::begin(kKinds), std::end(kKinds),
+                         [&](const InteractionKind& k) { return k.type == type; });
   return it == std::end(kKinds) ? nullptr : &*it;
 }
 

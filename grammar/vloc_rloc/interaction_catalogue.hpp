@@ -21,9 +21,9 @@ struct VectorLineKind {
 };
 
 struct InteractionKind {
-  std::string_view type;    // '$icdan' module name (columns 9-13)
-  int dimension;            // 2 or 3
-  std::string_view title;   // title line exactly as LMGC90 writes it (A-format width applied)
+  std::string_view type;   // '$icdan' module name (columns 9-13)
+  int dimension;           // 2 or 3
+  std::string_view title;  // title line exactly as LMGC90 writes it (A-format width applied)
   // Fortran format of the data line, as items separated by blanks: "1X", "A5", "I5", "I10", "9X".
   std::string_view data_format;
   std::span<const VectorLineKind> vectors;  // in writing order

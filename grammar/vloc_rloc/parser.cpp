@@ -11,9 +11,13 @@
 namespace lmgc::grammar {
 namespace {
 
-bool blank(std::string_view s) { return s.find_first_not_of(" \t") == std::string_view::npos; }
+bool blank(std::string_view s) {
+  return s.find_first_not_of(" \t") == std::string_view::npos;
+}
 
-bool is_icdan(const Line& line) { return keyword_of(line.text) == "icdan"; }
+bool is_icdan(const Line& line) {
+  return keyword_of(line.text) == "icdan";
+}
 
 // A labelled vector line: columns 1-29 blank, a label in columns 30-34 (FORMAT 103/104).
 bool is_vector_line(const Line& line) {
@@ -22,7 +26,8 @@ bool is_vector_line(const Line& line) {
 
 // An internal-variables line: (1X,D14.7) fields, so a blank in column 1 and values after it.
 bool is_internal_line(const Line& line) {
-  return !line.text.empty() && line.text[0] == ' ' && !blank(line.text) && !is_icdan(line) && !is_vector_line(line);
+  return !line.text.empty() && line.text[0] == ' ' && !blank(line.text) && !is_icdan(line) &&
+         !is_vector_line(line);
 }
 
 // One (1X,D14.7) value of an internal-variables line. LMGC90 writes them all on one line, which can
@@ -35,14 +40,15 @@ Real internal_value(CardReader& reader, const Line& line, int first, int last) {
   const SourceSpan span = reader.span(line, first, last);
   if (r.error == NumberError::malformed) {
     reader.report("L1002", line, first, last,
-                  "internal variable '" + std::string(trim(field)) + "' in columns " + std::to_string(first) + "-" +
-                      std::to_string(last) + " is not a real number",
+                  "internal variable '" + std::string(trim(field)) + "' in columns " + std::to_string(first) +
+                      "-" + std::to_string(last) + " is not a real number",
                   "internal variables are written (1X,D14.7): 15 columns each");
     return Real{0.0, span};
   }
   if (r.error == NumberError::out_of_range) {
     reader.report("L1003", line, first, last,
-                  "internal variable '" + std::string(trim(field)) + "' is out of the range of a double precision real");
+                  "internal variable '" + std::string(trim(field)) +
+                      "' is out of the range of a double precision real");
     return Real{0.0, span};
   }
   return Real{r.value, span};
@@ -84,12 +90,14 @@ class VlocRlocParser {
         return true;
       }
       if (is_icdan(line)) {
-        reader_.report("L1012", line, 2, 6,
-                       "no '$steps' header before the first '$icdan' block: LMGC90 needs the step number and time");
+        reader_.report(
+            "L1012", line, 2, 6,
+            "no '$steps' header before the first '$icdan' block: LMGC90 needs the step number and time");
         return false;
       }
       if (!is_skipped_line(line.text))
-        reader_.report("L1019", line, 1, static_cast<int>(line.text.size()), "line before the '$steps' header; LMGC90 skips it");
+        reader_.report("L1019", line, 1, static_cast<int>(line.text.size()),
+                       "line before the '$steps' header; LMGC90 skips it");
     }
     reader_.report_at_end("L1012", "no '$steps' header: LMGC90 needs the step number and time of the file");
     return false;
@@ -100,7 +108,8 @@ class VlocRlocParser {
   const Line* block_line(const char* what, const std::string& type) {
     while (i_ < lines_.size() && is_skipped_line(lines_[i_].text)) ++i_;
     if (i_ >= lines_.size()) {
-      reader_.report_at_end("L1006", "file ends before the " + std::string(what) + " of a '" + type + "' block");
+      reader_.report_at_end("L1006",
+                            "file ends before the " + std::string(what) + " of a '" + type + "' block");
       return nullptr;
     }
     const Line& line = lines_[i_];
@@ -174,7 +183,8 @@ class VlocRlocParser {
       }
       c.vectors.push_back(std::move(vec));
     }
-    static constexpr const char* kMandatory[] = {"reaction (rl) line", "relative velocity (vl) line", "gap line"};
+    static constexpr const char* kMandatory[] = {"reaction (rl) line", "relative velocity (vl) line",
+                                                 "gap line"};
     if (c.vectors.size() >= 3) return;
     const std::string what = kMandatory[c.vectors.size()];
     if (i_ < lines_.size())

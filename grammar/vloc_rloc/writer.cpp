@@ -36,9 +36,12 @@ std::string write_vloc_rloc(const VlocRlocFile& file) {
     // The data line along the module's format; missing values are written blank / 0.
     std::size_t w = 0, n = 0;
     for (const DataItem& item : data_items(kind ? kind->data_format : std::string_view())) {
-      if (item.kind == 'X') append_blanks(out, item.width);
-      else if (item.kind == 'A') append_fortran_a(out, w < c.words.size() ? std::string_view(c.words[w++].value) : "", item.width);
-      else append_fortran_i(out, n < c.integers.size() ? c.integers[n++].value : 0, item.width);
+      if (item.kind == 'X')
+        append_blanks(out, item.width);
+      else if (item.kind == 'A')
+        append_fortran_a(out, w < c.words.size() ? std::string_view(c.words[w++].value) : "", item.width);
+      else
+        append_fortran_i(out, n < c.integers.size() ? c.integers[n++].value : 0, item.width);
     }
     out += '\n';
     for (const VlocRlocVector& v : c.vectors) {

@@ -8,7 +8,9 @@ namespace {
 using Eigen::Vector2d;
 using grammar::Real;
 
-double value_at(const std::vector<Real>& values, std::size_t i) { return i < values.size() ? values[i].value : 0.0; }
+double value_at(const std::vector<Real>& values, std::size_t i) {
+  return i < values.size() ? values[i].value : 0.0;
+}
 
 }  // namespace
 
@@ -29,7 +31,8 @@ ContactorInertia2D contactor_inertia_2d(const grammar::Contactor& c) {
     const double a1 = value_at(c.values, 0), a2 = value_at(c.values, 1);
     k.area = 4.0 * a1 * a2 + M_PI * a2 * a2;
     k.radius = std::sqrt(k.area / M_PI);
-    const double g2 = (M_PI * a2 * a2 * (a1 * a1 + 0.5 * a2 * a2) + 2.0 * a1 * a2 * (a1 * a1 + a2 * a2)) / k.area;
+    const double g2 =
+        (M_PI * a2 * a2 * (a1 * a1 + 0.5 * a2 * a2) + 2.0 * a1 * a2 * (a1 * a1 + a2 * a2)) / k.area;
     k.gyration_radius = std::sqrt(g2);
   } else if (type == "POLYG") {
     const std::size_t n = c.vertices.size();
@@ -48,7 +51,8 @@ ContactorInertia2D contactor_inertia_2d(const grammar::Contactor& c) {
       double second = 0.0;
       for (std::size_t i = 0; i < n; ++i) {
         const Vector2d a = Vector2d(c.vertices[i][0].value, c.vertices[i][1].value) - centroid;
-        const Vector2d b = Vector2d(c.vertices[(i + 1) % n][0].value, c.vertices[(i + 1) % n][1].value) - centroid;
+        const Vector2d b =
+            Vector2d(c.vertices[(i + 1) % n][0].value, c.vertices[(i + 1) % n][1].value) - centroid;
         const double cross = a.x() * b.y() - b.x() * a.y();
         second += (a.squaredNorm() + a.dot(b) + b.squaredNorm()) * cross;
       }

@@ -18,19 +18,29 @@ Eigen::Matrix2d rotation(double angle) {
   return R;
 }
 
-bool is_disk(const std::string& t) { return t == "DISKx" || t == "DISKb"; }
+bool is_disk(const std::string& t) {
+  return t == "DISKx" || t == "DISKb";
+}
 
 }  // namespace
 
 bool pair_family_of(const std::string& cd, const std::string& an, PairFamily2D& family) {
-  if (is_disk(cd) && is_disk(an)) family = PairFamily2D::DKDKx;
-  else if (is_disk(cd) && an == "xKSID") family = PairFamily2D::DKKDx;
-  else if (is_disk(cd) && an == "JONCx") family = PairFamily2D::DKJCx;
-  else if (is_disk(cd) && an == "POLYG") family = PairFamily2D::DKPLx;
-  else if (cd == "PT2Dx" && an == "PT2Dx") family = PairFamily2D::PTPT2;
-  else if (cd == "POLYG" && an == "POLYG") family = PairFamily2D::PLPLx;
-  else if (cd == "POLYG" && an == "JONCx") family = PairFamily2D::PLJCx;
-  else return false;
+  if (is_disk(cd) && is_disk(an))
+    family = PairFamily2D::DKDKx;
+  else if (is_disk(cd) && an == "xKSID")
+    family = PairFamily2D::DKKDx;
+  else if (is_disk(cd) && an == "JONCx")
+    family = PairFamily2D::DKJCx;
+  else if (is_disk(cd) && an == "POLYG")
+    family = PairFamily2D::DKPLx;
+  else if (cd == "PT2Dx" && an == "PT2Dx")
+    family = PairFamily2D::PTPT2;
+  else if (cd == "POLYG" && an == "POLYG")
+    family = PairFamily2D::PLPLx;
+  else if (cd == "POLYG" && an == "JONCx")
+    family = PairFamily2D::PLJCx;
+  else
+    return false;
   return true;
 }
 
@@ -73,8 +83,8 @@ VisibilityIndex2D build_visibility_index(const Scene2D& scene) {
   return index;
 }
 
-void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, std::span<const Vector3d> coordinates,
-                        std::vector<Interaction2D>& out) {
+void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
+                        std::span<const Vector3d> coordinates, std::vector<Interaction2D>& out) {
   out.clear();
   const std::size_t n = scene.contactors.size();
   if (n == 0) return;
@@ -98,7 +108,8 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
     const Vector2d q = body_position(i);
     vertices.resize(static_cast<std::size_t>(c.vertex_count));
     for (std::int32_t k = 0; k < c.vertex_count; ++k)
-      vertices[static_cast<std::size_t>(k)] = q + orientation[i] * scene.vertices[static_cast<std::size_t>(c.first_vertex + k)];
+      vertices[static_cast<std::size_t>(k)] =
+          q + orientation[i] * scene.vertices[static_cast<std::size_t>(c.first_vertex + k)];
   };
 
   // Rough detection: grid of cells of size 2·R_typical + alert; contactors larger than a cell are
@@ -125,7 +136,9 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
     const Contactor2D& a = scene.contactors[i];
     const Contactor2D& b = scene.contactors[j];
     if (a.body == b.body) return;
-    if (!scene.bodies.visible[static_cast<std::size_t>(a.body)] || !scene.bodies.visible[static_cast<std::size_t>(b.body)]) return;
+    if (!scene.bodies.visible[static_cast<std::size_t>(a.body)] ||
+        !scene.bodies.visible[static_cast<std::size_t>(b.body)])
+      return;
     const std::int32_t ci = index.contactor_class[i], cj = index.contactor_class[j];
     const bool ij = index.row[static_cast<std::size_t>(ci * index.class_count + cj)] >= 0;
     const bool ji = index.row[static_cast<std::size_t>(cj * index.class_count + ci)] >= 0;
@@ -193,8 +206,10 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
         const double reach = radii[a] + radii[b] + index.max_alert;
         if ((centre[b] + Vector2d(scene.x_period, 0.0) - centre[a]).squaredNorm() > reach * reach) continue;
         // The lower index keeps its place; the other one is the image.
-        if (a < b) rough.push_back({a, b, +1});
-        else rough.push_back({b, a, -1});
+        if (a < b)
+          rough.push_back({a, b, +1});
+        else
+          rough.push_back({b, a, -1});
       }
   }
   if (!big.empty() || scene.x_period > 0.0) {
@@ -252,27 +267,37 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
     std::array<PairContact2D, 2> found;
     int count = 0;
     auto joncx_of = [&](std::size_t k) {
-      return Joncx{centre[k], orientation[k].col(0), scene.contactors[k].half_length, scene.contactors[k].half_width};
+      return Joncx{centre[k], orientation[k].col(0), scene.contactors[k].half_length,
+                   scene.contactors[k].half_width};
     };
     switch (family) {
-      case PairFamily2D::DKDKx: count = disk_disk(centre[cd], C.radius, centre[an], A.radius, found[0]); break;
-      case PairFamily2D::DKKDx: count = disk_in_hollow_disk(centre[cd], C.radius, centre[an], A.radius, found[0]); break;
-      case PairFamily2D::DKJCx: count = disk_joncx(centre[cd], C.radius, joncx_of(an), found[0]); break;
-      case PairFamily2D::DKPLx:
-        count = disk_polygon(centre[cd], C.radius, polygon_view(an, vertices_an, normals_an), see.alert, found[0]);
+      case PairFamily2D::DKDKx:
+        count = disk_disk(centre[cd], C.radius, centre[an], A.radius, found[0]);
         break;
-      case PairFamily2D::PTPT2: count = point_point(centre[cd], centre[an], found[0]); break;
+      case PairFamily2D::DKKDx:
+        count = disk_in_hollow_disk(centre[cd], C.radius, centre[an], A.radius, found[0]);
+        break;
+      case PairFamily2D::DKJCx:
+        count = disk_joncx(centre[cd], C.radius, joncx_of(an), found[0]);
+        break;
+      case PairFamily2D::DKPLx:
+        count = disk_polygon(centre[cd], C.radius, polygon_view(an, vertices_an, normals_an), see.alert,
+                             found[0]);
+        break;
+      case PairFamily2D::PTPT2:
+        count = point_point(centre[cd], centre[an], found[0]);
+        break;
       case PairFamily2D::PLPLx:
-        count = polygon_polygon(polygon_view(cd, vertices_cd, normals_cd), polygon_view(an, vertices_an, normals_an),
-                                see.alert, found);
+        count = polygon_polygon(polygon_view(cd, vertices_cd, normals_cd),
+                                polygon_view(an, vertices_an, normals_an), see.alert, found);
         break;
       case PairFamily2D::PLJCx:
         count = polygon_joncx(polygon_view(cd, vertices_cd, normals_cd), joncx_of(an), see.alert, found);
         break;
     }
     // Fine tests that keep a contact (docs/lmgc90-facts/rigid-2d.md §3.3).
-    const bool keep_at_alert = family == PairFamily2D::DKDKx || family == PairFamily2D::DKKDx ||
-                               family == PairFamily2D::DKJCx;
+    const bool keep_at_alert =
+        family == PairFamily2D::DKDKx || family == PairFamily2D::DKKDx || family == PairFamily2D::DKJCx;
     for (int k = 0; k < count; ++k) {
       const PairContact2D& f = found[static_cast<std::size_t>(k)];
       if (keep_at_alert && f.gap > see.alert) continue;
@@ -299,11 +324,10 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index, st
       // Levers from the body centres: add the contactor's offset on its body, except for JONCx and
       // xKSID antagonists, measured from the contactor itself in LMGC90.
       const Vector2d offset_cd = centre[ccd] - body_position(ccd);
-      const bool antagonist_from_contactor = Can.shape == ContactorShape2D::joncx ||
-                                             Can.shape == ContactorShape2D::hollow_disk;
+      const bool antagonist_from_contactor =
+          Can.shape == ContactorShape2D::joncx || Can.shape == ContactorShape2D::hollow_disk;
       const Vector2d offset_an =
-          antagonist_from_contactor ? Vector2d::Zero()
-                                    : Vector2d(centre[can] - body_position(can));
+          antagonist_from_contactor ? Vector2d::Zero() : Vector2d(centre[can] - body_position(can));
       const Vector2d lever_cd = f.candidate_lever + offset_cd;
       const Vector2d lever_an = f.antagonist_lever + offset_an;
       c.lever_candidate = Vector2d(cross_2d(lever_cd, c.tangent), cross_2d(lever_cd, c.normal));

@@ -25,7 +25,8 @@ struct VisibilityIndex2D {
 VisibilityIndex2D build_visibility_index(const Scene2D& scene);
 
 // The family of a (candidate type, antagonist type) pair, or false when LMGC90 has none.
-bool pair_family_of(const std::string& candidate_type, const std::string& antagonist_type, PairFamily2D& family);
+bool pair_family_of(const std::string& candidate_type, const std::string& antagonist_type,
+                    PairFamily2D& family);
 
 // Detects the interactions at `coordinates` (per body: x, y, θ in the world frame). The result
 // is sorted by (family, candidate, antagonist, candidate vertex): the order of the NLGS sweep and

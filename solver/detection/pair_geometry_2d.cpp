@@ -9,11 +9,17 @@ namespace lmgc::solver {
 
 using Eigen::Vector2d;
 
-double cross_2d(const Vector2d& a, const Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+double cross_2d(const Vector2d& a, const Vector2d& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
 
 namespace {
-std::size_t previous(std::size_t i, std::size_t n) { return i == 0 ? n - 1 : i - 1; }
-std::size_t following(std::size_t i, std::size_t n) { return i + 1 == n ? 0 : i + 1; }
+std::size_t previous(std::size_t i, std::size_t n) {
+  return i == 0 ? n - 1 : i - 1;
+}
+std::size_t following(std::size_t i, std::size_t n) {
+  return i + 1 == n ? 0 : i + 1;
+}
 }  // namespace
 
 bool disk_disk(const Vector2d& c, double rc, const Vector2d& a, double ra, PairContact2D& out) {
@@ -28,7 +34,8 @@ bool disk_disk(const Vector2d& c, double rc, const Vector2d& a, double ra, PairC
   return true;
 }
 
-bool disk_in_hollow_disk(const Vector2d& disk, double radius, const Vector2d& hollow, double outer, PairContact2D& out) {
+bool disk_in_hollow_disk(const Vector2d& disk, double radius, const Vector2d& hollow, double outer,
+                         PairContact2D& out) {
   const Vector2d d = disk - hollow;
   const double distance = d.norm();
   if (distance < 1e-18) return false;
@@ -162,7 +169,8 @@ int polygon_joncx(const PolygonView& p, const Joncx& wall, double alert, std::ar
   return count;
 }
 
-int polygon_polygon(const PolygonView& A, const PolygonView& B, double alert, std::array<PairContact2D, 2>& out) {
+int polygon_polygon(const PolygonView& A, const PolygonView& B, double alert,
+                    std::array<PairContact2D, 2>& out) {
   const std::size_t na = A.vertices.size(), nb = B.vertices.size();
   if (na < 3 || nb < 3) return 0;
   const Vector2d line = B.centre - A.centre;
@@ -239,8 +247,10 @@ int polygon_polygon(const PolygonView& A, const PolygonView& B, double alert, st
       Vector2d x2 = A.vertices[k] - d1 * s;
       const double ovlap2 = (A.vertices[k] - B.vertices[b]).dot(s);
       double alpha = (x2 - centre).dot(tau);
-      const double beta1 = sens > 0 ? (B.vertices[following(b, nb)] - centre).dot(tau) : (B.vertices[b] - centre).dot(tau);
-      const double beta2 = sens > 0 ? (B.vertices[b] - centre).dot(tau) : (B.vertices[previous(b, nb)] - centre).dot(tau);
+      const double beta1 =
+          sens > 0 ? (B.vertices[following(b, nb)] - centre).dot(tau) : (B.vertices[b] - centre).dot(tau);
+      const double beta2 =
+          sens > 0 ? (B.vertices[b] - centre).dot(tau) : (B.vertices[previous(b, nb)] - centre).dot(tau);
       if (alpha > beta2) alpha = beta2;
       if (alpha < beta1) alpha = beta1;
       x2 = centre + alpha * tau;
@@ -276,8 +286,10 @@ int polygon_polygon(const PolygonView& A, const PolygonView& B, double alert, st
       Vector2d x2 = B.vertices[k] - d1 * s;
       const double ovlap2 = -(B.vertices[k] - A.vertices[a]).dot(s);
       double alpha = (x2 - centre).dot(tau);
-      const double beta1 = sens > 0 ? (A.vertices[a] - centre).dot(tau) : (A.vertices[previous(a, na)] - centre).dot(tau);
-      const double beta2 = sens > 0 ? (A.vertices[following(a, na)] - centre).dot(tau) : (A.vertices[a] - centre).dot(tau);
+      const double beta1 =
+          sens > 0 ? (A.vertices[a] - centre).dot(tau) : (A.vertices[previous(a, na)] - centre).dot(tau);
+      const double beta2 =
+          sens > 0 ? (A.vertices[following(a, na)] - centre).dot(tau) : (A.vertices[a] - centre).dot(tau);
       if (alpha > beta2) alpha = beta2;
       if (alpha < beta1) alpha = beta1;
       x2 = centre + alpha * tau;

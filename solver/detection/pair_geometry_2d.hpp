@@ -41,15 +41,16 @@ struct PolygonView {
 bool disk_disk(const Eigen::Vector2d& candidate, double candidate_radius, const Eigen::Vector2d& antagonist,
                double antagonist_radius, PairContact2D& out);
 // DKKDx: a disk inside a hollow disk (xKSID) of radius `outer`.
-bool disk_in_hollow_disk(const Eigen::Vector2d& disk, double radius, const Eigen::Vector2d& hollow, double outer,
-                         PairContact2D& out);
+bool disk_in_hollow_disk(const Eigen::Vector2d& disk, double radius, const Eigen::Vector2d& hollow,
+                         double outer, PairContact2D& out);
 // DKJCx: a disk against a JONCx.
 bool disk_joncx(const Eigen::Vector2d& disk, double radius, const Joncx& wall, PairContact2D& out);
 // DKPLx: a disk against a polygon; false when farther than `alert`.
 bool disk_polygon(const Eigen::Vector2d& disk, double radius, const PolygonView& polygon, double alert,
                   PairContact2D& out);
 // PLJCx: the vertices of a polygon against a JONCx; up to two contacts closer than `alert`.
-int polygon_joncx(const PolygonView& polygon, const Joncx& wall, double alert, std::array<PairContact2D, 2>& out);
+int polygon_joncx(const PolygonView& polygon, const Joncx& wall, double alert,
+                  std::array<PairContact2D, 2>& out);
 // PLPLx: J.J. Moreau's shadow-overlap detection between two convex polygons; up to two contacts.
 int polygon_polygon(const PolygonView& candidate, const PolygonView& antagonist, double alert,
                     std::array<PairContact2D, 2>& out);

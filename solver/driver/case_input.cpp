@@ -16,21 +16,24 @@ std::string datbox_path(const validate::CaseFiles& files, const char* name) {
 }
 
 // The POSTPRO.DAT commands the 2D post-processor provides; the others are noted and skipped.
-std::vector<PostproCommand2D> postpro_commands_2d(const validate::CaseFiles& files, grammar::DiagnosticSink& sink) {
+std::vector<PostproCommand2D> postpro_commands_2d(const validate::CaseFiles& files,
+                                                  grammar::DiagnosticSink& sink) {
   std::vector<PostproCommand2D> commands;
   if (!files.postpro) return commands;
   for (const grammar::PostproCommand& card : files.postpro->commands) {
     PostproCommand2D command;
     if (!postpro_kind_of(card.name.value, command.kind)) {
-      sink.report("L4004", grammar::Location{datbox_path(files, "POSTPRO.DAT"), card.name.span},
-                  "POSTPRO command '" + card.name.value + "' is not computed by lmgc-solve yet; it is skipped");
+      sink.report(
+          "L4004", grammar::Location{datbox_path(files, "POSTPRO.DAT"), card.name.span},
+          "POSTPRO command '" + card.name.value + "' is not computed by lmgc-solve yet; it is skipped");
       continue;
     }
     command.period = card.period.value > 0 ? static_cast<int>(card.period.value) : 1;
     // BODY TRACKING / TORQUE EVOLUTION: a count line, then one body rank per line.
     if (command.kind == PostproKind2D::body_tracking || command.kind == PostproKind2D::torque_evolution) {
       for (std::size_t k = 1; k < card.arguments.size(); ++k)
-        if (!card.arguments[k].integers.empty()) command.bodies.push_back(card.arguments[k].integers.front().value);
+        if (!card.arguments[k].integers.empty())
+          command.bodies.push_back(card.arguments[k].integers.front().value);
     }
     if (command.kind == PostproKind2D::average_velocity_evolution && !card.arguments.empty())
       command.color = card.arguments.front().word.value;
@@ -78,7 +81,8 @@ bool prepare_run_2d(const validate::CaseFiles& files, Scene2D& scene, RunOutputs
   return true;
 }
 
-void apply_command_parameters(const validate::CaseFiles& files, RunOptions& options, grammar::DiagnosticSink& sink) {
+void apply_command_parameters(const validate::CaseFiles& files, RunOptions& options,
+                              grammar::DiagnosticSink& sink) {
   if (!files.command) return;
   const grammar::CommandRunParameters p = grammar::command_run_parameters(*files.command, sink);
   if (p.dt > 0.0) options.dt = p.dt;

@@ -19,7 +19,8 @@ bool prepare_run_2d(const validate::CaseFiles& files, Scene2D& scene, RunOutputs
 
 // The run parameters COMMAND.DAT sets, laid over `options` (flags given on the command line are
 // applied afterwards by the caller, so they win).
-void apply_command_parameters(const validate::CaseFiles& files, RunOptions& options, grammar::DiagnosticSink& sink);
+void apply_command_parameters(const validate::CaseFiles& files, RunOptions& options,
+                              grammar::DiagnosticSink& sink);
 
 // The echo files of a rigid 2D run: as validate::echo_files, with BODIES.OUT after LMGC90's
 // RBDY2 pre-computations (avrd, gyrd, centre of inertia), as LMGC90 writes it.

@@ -18,10 +18,14 @@ namespace lmgc::solver {
 std::atomic<bool> g_stop_requested{false};
 
 namespace {
-extern "C" void on_interrupt(int) { g_stop_requested.store(true); }
+extern "C" void on_interrupt(int) {
+  g_stop_requested.store(true);
+}
 }  // namespace
 
-void install_interrupt_handler() { std::signal(SIGINT, on_interrupt); }
+void install_interrupt_handler() {
+  std::signal(SIGINT, on_interrupt);
+}
 
 RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D& outputs) {
   RunSummary summary;
@@ -56,10 +60,12 @@ RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D&
   const auto start = std::chrono::steady_clock::now();
   long written = 0;
   auto write_state = [&](const std::string& suffix) {
-    if (!grammar::write_file_whole(outbox / ("DOF." + suffix), grammar::write_dof(dof_file_2d(scene, state)), summary.error))
+    if (!grammar::write_file_whole(outbox / ("DOF." + suffix), grammar::write_dof(dof_file_2d(scene, state)),
+                                   summary.error))
       return false;
     if (outputs.vloc_rloc_text &&
-        !grammar::write_file_whole(outbox / ("Vloc_Rloc." + suffix), outputs.vloc_rloc_text(scene, state), summary.error))
+        !grammar::write_file_whole(outbox / ("Vloc_Rloc." + suffix), outputs.vloc_rloc_text(scene, state),
+                                   summary.error))
       return false;
     return true;
   };
@@ -67,12 +73,13 @@ RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D&
   for (long k = 0; k < options.steps; ++k) {
     const auto step_start = std::chrono::steady_clock::now();
     const NlgsResult result = step_2d(scene, state, options.nlgs);
-    const double step_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
+    const double step_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
     ++summary.steps_done;
     if (!result.converged) ++summary.steps_not_converged;
     summary.worst_residual = std::max(summary.worst_residual, result.residual_relative);
-    report << fmt::format("{},{:.10g},{},{},{},{},{:.6e},{:.6e},{:.6e},{:.6e},{:.10e},{:.6e},{:.6e}\n", state.step,
-                          state.time, state.contacts.size(), result.active, result.iterations,
+    report << fmt::format("{},{:.10g},{},{},{},{},{:.6e},{:.6e},{:.6e},{:.6e},{:.10e},{:.6e},{:.6e}\n",
+                          state.step, state.time, state.contacts.size(), result.active, result.iterations,
                           result.converged ? 1 : 0, result.norms.mean_dvor, result.norms.quad_dv,
                           result.norms.quad_dvr, result.residual_relative, kinetic_energy(scene.bodies),
                           step_seconds, result.seconds);

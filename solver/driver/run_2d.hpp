@@ -17,15 +17,15 @@ namespace lmgc::solver {
 struct RunSummary {
   long steps_done = 0;
   long steps_not_converged = 0;
-  double worst_residual = 0.0;   // largest natural-map residual ÷ ‖q‖ of the run
+  double worst_residual = 0.0;  // largest natural-map residual ÷ ‖q‖ of the run
   double final_time = 0.0;
   bool interrupted = false;
-  std::string error;             // an output could not be written
+  std::string error;  // an output could not be written
 };
 
 struct RunOutputs2D {
-  std::filesystem::path case_dir;                 // OUTBOX/, DISPLAY/, POSTPRO/ are created here
-  std::vector<PostproCommand2D> postpro;          // from POSTPRO.DAT
+  std::filesystem::path case_dir;         // OUTBOX/, DISPLAY/, POSTPRO/ are created here
+  std::vector<PostproCommand2D> postpro;  // from POSTPRO.DAT
   // Extra state writer (Vloc_Rloc.OUT.n / .LAST) when the grammar provides it: (path, content).
   std::function<std::string(const Scene2D&, const RunState2D&)> vloc_rloc_text;
   // Vloc_Rloc.INI: the interactions of the step before the first one (warm start), if any.

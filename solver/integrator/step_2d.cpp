@@ -34,7 +34,8 @@ void increment_step(Scene2D& scene, RunState2D& state) {
 
 void compute_external_forces(Scene2D& scene, const RunState2D& state) {
   RigidBodies2D& b = scene.bodies;
-  for (std::size_t i = 0; i < b.size(); ++i) b.external_force[i] = Vector3d(b.mass[i] * scene.gravity.x(), b.mass[i] * scene.gravity.y(), 0.0);
+  for (std::size_t i = 0; i < b.size(); ++i)
+    b.external_force[i] = Vector3d(b.mass[i] * scene.gravity.x(), b.mass[i] * scene.gravity.y(), 0.0);
   // Imposed forces, θ-averaged over the step (numerics.md §1.1).
   for (const DrivenDof2D& d : scene.driven)
     if (d.is_force)
@@ -45,8 +46,10 @@ void compute_external_forces(Scene2D& scene, const RunState2D& state) {
 void compute_free_velocity(Scene2D& scene, const RunState2D& state) {
   RigidBodies2D& b = scene.bodies;
   for (std::size_t i = 0; i < b.size(); ++i)
-    b.velocity_free[i] = b.visible[i] ? Vector3d(b.velocity_begin[i] + state.h * b.inverse_mass[i].cwiseProduct(b.external_force[i]))
-                                      : Vector3d::Zero();
+    b.velocity_free[i] =
+        b.visible[i]
+            ? Vector3d(b.velocity_begin[i] + state.h * b.inverse_mass[i].cwiseProduct(b.external_force[i]))
+            : Vector3d::Zero();
   for (const DrivenDof2D& d : scene.driven)
     if (!d.is_force && b.visible[static_cast<std::size_t>(d.body)])
       b.velocity_free[static_cast<std::size_t>(d.body)](d.dof) = d.value(state.time);
@@ -56,7 +59,8 @@ void select_prox_tactors(Scene2D& scene, RunState2D& state) {
   RigidBodies2D& b = scene.bodies;
   std::vector<Vector3d> coordinates(b.size());
   for (std::size_t i = 0; i < b.size(); ++i)
-    coordinates[i] = b.reference[i] + b.displacement_begin[i] + (1.0 - state.theta) * state.h * b.velocity_begin[i];
+    coordinates[i] =
+        b.reference[i] + b.displacement_begin[i] + (1.0 - state.theta) * state.h * b.velocity_begin[i];
   if (scene.x_period > 0.0)
     for (auto& c : coordinates) c.x() -= scene.x_period * std::floor(c.x() / scene.x_period);
   detect_contacts_2d(scene, state.visibility, coordinates, state.contacts);
@@ -64,8 +68,10 @@ void select_prox_tactors(Scene2D& scene, RunState2D& state) {
   for (Interaction2D& c : state.contacts) {
     const Vector3d& vc = b.velocity_begin[static_cast<std::size_t>(c.candidate_body)];
     const Vector3d& va = b.velocity_begin[static_cast<std::size_t>(c.antagonist_body)];
-    const Vector3d tc(c.tangent.x(), c.tangent.y(), c.lever_candidate(0)), nc(c.normal.x(), c.normal.y(), c.lever_candidate(1));
-    const Vector3d ta(c.tangent.x(), c.tangent.y(), c.lever_antagonist(0)), na(c.normal.x(), c.normal.y(), c.lever_antagonist(1));
+    const Vector3d tc(c.tangent.x(), c.tangent.y(), c.lever_candidate(0)),
+        nc(c.normal.x(), c.normal.y(), c.lever_candidate(1));
+    const Vector3d ta(c.tangent.x(), c.tangent.y(), c.lever_antagonist(0)),
+        na(c.normal.x(), c.normal.y(), c.lever_antagonist(1));
     c.velocity_begin = Vector2d(tc.dot(vc) - ta.dot(va), nc.dot(vc) - na.dot(va));
   }
 }
@@ -98,14 +104,16 @@ NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& 
   return result;
 }
 
-void stock_rloc(RunState2D& state) { state.previous = state.contacts; }
+void stock_rloc(RunState2D& state) {
+  state.previous = state.contacts;
+}
 
 void compute_dof(Scene2D& scene, const RunState2D& state) {
   RigidBodies2D& b = scene.bodies;
   for (std::size_t i = 0; i < b.size(); ++i)
     if (b.visible[i])
-      b.displacement[i] =
-          b.displacement_begin[i] + state.h * ((1.0 - state.theta) * b.velocity_begin[i] + state.theta * b.velocity[i]);
+      b.displacement[i] = b.displacement_begin[i] +
+                          state.h * ((1.0 - state.theta) * b.velocity_begin[i] + state.theta * b.velocity[i]);
   apply_bounds(scene);
 }
 
@@ -116,18 +124,24 @@ void apply_bounds(Scene2D& scene) {
     // Periodic in x: a body leaving [0, period] comes back one period away (check_periodic).
     if (scene.x_period > 0.0) {
       const double x = b.reference[i].x() + b.displacement[i].x();
-      if (x > scene.x_period) b.displacement[i].x() -= scene.x_period;
-      else if (x < 0.0) b.displacement[i].x() += scene.x_period;
+      if (x > scene.x_period)
+        b.displacement[i].x() -= scene.x_period;
+      else if (x < 0.0)
+        b.displacement[i].x() += scene.x_period;
     }
     const double x = b.reference[i].x() + b.displacement[i].x();
     const double y = b.reference[i].y() + b.displacement[i].y();
     // First bound crossed wins, in LMGC90's order: below, above, left, right.
     int axis = -1;
     double limit = 0.0;
-    if (y < scene.y_min) axis = 1, limit = scene.y_min;
-    else if (y > scene.y_max) axis = 1, limit = scene.y_max;
-    else if (x < scene.x_min) axis = 0, limit = scene.x_min;
-    else if (x > scene.x_max) axis = 0, limit = scene.x_max;
+    if (y < scene.y_min)
+      axis = 1, limit = scene.y_min;
+    else if (y > scene.y_max)
+      axis = 1, limit = scene.y_max;
+    else if (x < scene.x_min)
+      axis = 0, limit = scene.x_min;
+    else if (x > scene.x_max)
+      axis = 0, limit = scene.x_max;
     if (axis < 0) continue;
     b.visible[i] = 0;
     b.velocity_begin[i].setZero();

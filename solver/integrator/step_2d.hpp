@@ -11,9 +11,9 @@
 namespace lmgc::solver {
 
 struct RunState2D {
-  double time = 0.0;         // TPS at the end of the current step
-  long step = 0;             // Nstep
-  double h = 1e-3;           // time step
+  double time = 0.0;  // TPS at the end of the current step
+  long step = 0;      // Nstep
+  double h = 1e-3;    // time step
   double theta = 0.5;
   std::vector<Interaction2D> contacts;  // this step's interactions
   std::vector<Interaction2D> previous;  // last step's (the "verlet" list used for warm start)

@@ -57,9 +57,11 @@ std::vector<Vector2d> outline(const Scene2D& scene, const Contactor2D& c) {
 }
 
 template <class F>
-void data_array(std::string& out, const char* type, const char* name, int components, std::size_t n, F value) {
-  out += fmt::format("        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"ascii\">\n", type,
-                     name, components);
+void data_array(std::string& out, const char* type, const char* name, int components, std::size_t n,
+                F value) {
+  out +=
+      fmt::format("        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"ascii\">\n",
+                  type, name, components);
   for (std::size_t i = 0; i < n; ++i) {
     out += "         ";
     for (int c = 0; c < components; ++c) out += fmt::format(" {}", value(i, c));
@@ -76,28 +78,39 @@ std::string bodies_vtu_2d(const Scene2D& scene) {
   std::size_t points = 0;
   for (const auto& cell : cells) points += cell.size();
   std::string out;
-  out += "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n";
-  out += fmt::format("  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", points, cells.size());
+  out +=
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
+      "byte_order=\"LittleEndian\">\n";
+  out += fmt::format("  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", points,
+                     cells.size());
   out += "      <Points>\n";
   std::vector<Vector2d> all;
   all.reserve(points);
   for (const auto& cell : cells) all.insert(all.end(), cell.begin(), cell.end());
-  data_array(out, "Float64", "Points", 3, all.size(), [&](std::size_t i, int c) { return c < 2 ? all[i](c) : 0.0; });
+  data_array(out, "Float64", "Points", 3, all.size(),
+             [&](std::size_t i, int c) { return c < 2 ? all[i](c) : 0.0; });
   out += "      </Points>\n      <Cells>\n";
   std::size_t offset = 0;
   std::vector<std::size_t> offsets;
   for (const auto& cell : cells) offsets.push_back(offset += cell.size());
-  data_array(out, "Int64", "connectivity", 1, points, [](std::size_t i, int) { return static_cast<long long>(i); });
-  data_array(out, "Int64", "offsets", 1, cells.size(), [&](std::size_t i, int) { return static_cast<long long>(offsets[i]); });
+  data_array(out, "Int64", "connectivity", 1, points,
+             [](std::size_t i, int) { return static_cast<long long>(i); });
+  data_array(out, "Int64", "offsets", 1, cells.size(),
+             [&](std::size_t i, int) { return static_cast<long long>(offsets[i]); });
   // VTK_POLYGON = 7, VTK_VERTEX = 1.
-  data_array(out, "UInt8", "types", 1, cells.size(), [&](std::size_t i, int) { return cells[i].size() > 1 ? 7 : 1; });
+  data_array(out, "UInt8", "types", 1, cells.size(),
+             [&](std::size_t i, int) { return cells[i].size() > 1 ? 7 : 1; });
   out += "      </Cells>\n      <CellData>\n";
   const RigidBodies2D& b = scene.bodies;
   auto body = [&](std::size_t cell) { return static_cast<std::size_t>(scene.contactors[cell].body); };
-  data_array(out, "Int32", "Ids", 1, cells.size(), [&](std::size_t i, int) { return static_cast<int>(body(i)) + 1; });
-  data_array(out, "Float64", "Disp", 3, cells.size(), [&](std::size_t i, int c) { return b.displacement[body(i)](c); });
-  data_array(out, "Float64", "Velocy", 3, cells.size(), [&](std::size_t i, int c) { return b.velocity[body(i)](c); });
-  data_array(out, "Int32", "Visible", 1, cells.size(), [&](std::size_t i, int) { return static_cast<int>(b.visible[body(i)]); });
+  data_array(out, "Int32", "Ids", 1, cells.size(),
+             [&](std::size_t i, int) { return static_cast<int>(body(i)) + 1; });
+  data_array(out, "Float64", "Disp", 3, cells.size(),
+             [&](std::size_t i, int c) { return b.displacement[body(i)](c); });
+  data_array(out, "Float64", "Velocy", 3, cells.size(),
+             [&](std::size_t i, int c) { return b.velocity[body(i)](c); });
+  data_array(out, "Int32", "Visible", 1, cells.size(),
+             [&](std::size_t i, int) { return static_cast<int>(b.visible[body(i)]); });
   out += "      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
   return out;
 }
@@ -107,17 +120,23 @@ std::string contacts_vtu_2d(const Scene2D& scene, const RunState2D& state) {
   const std::size_t n = contacts.size();
   const double h = state.h;
   std::string out;
-  out += "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n";
+  out +=
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
+      "byte_order=\"LittleEndian\">\n";
   out += fmt::format("  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", n, n);
   out += "      <Points>\n";
-  data_array(out, "Float64", "Points", 3, n, [&](std::size_t i, int c) { return c < 2 ? contacts[i].point(c) : 0.0; });
+  data_array(out, "Float64", "Points", 3, n,
+             [&](std::size_t i, int c) { return c < 2 ? contacts[i].point(c) : 0.0; });
   out += "      </Points>\n      <Cells>\n";
-  data_array(out, "Int64", "connectivity", 1, n, [](std::size_t i, int) { return static_cast<long long>(i); });
+  data_array(out, "Int64", "connectivity", 1, n,
+             [](std::size_t i, int) { return static_cast<long long>(i); });
   data_array(out, "Int64", "offsets", 1, n, [](std::size_t i, int) { return static_cast<long long>(i + 1); });
   data_array(out, "UInt8", "types", 1, n, [](std::size_t, int) { return 1; });
   out += "      </Cells>\n      <PointData>\n";
-  data_array(out, "Float64", "N", 3, n, [&](std::size_t i, int c) { return c < 2 ? contacts[i].normal(c) : 0.0; });
-  data_array(out, "Float64", "T", 3, n, [&](std::size_t i, int c) { return c < 2 ? contacts[i].tangent(c) : 0.0; });
+  data_array(out, "Float64", "N", 3, n,
+             [&](std::size_t i, int c) { return c < 2 ? contacts[i].normal(c) : 0.0; });
+  data_array(out, "Float64", "T", 3, n,
+             [&](std::size_t i, int c) { return c < 2 ? contacts[i].tangent(c) : 0.0; });
   // Global reaction force r_t t + r_n n divided by h.
   data_array(out, "Float64", "R", 3, n, [&](std::size_t i, int c) {
     const Interaction2D& k = contacts[i];
@@ -125,10 +144,13 @@ std::string contacts_vtu_2d(const Scene2D& scene, const RunState2D& state) {
   });
   data_array(out, "Float64", "rln", 1, n, [&](std::size_t i, int) { return contacts[i].r(1) / h; });
   data_array(out, "Float64", "rlt", 1, n, [&](std::size_t i, int) { return contacts[i].r(0) / h; });
-  data_array(out, "Float64", "gap", 1, n, [&](std::size_t i, int) { return contacts[i].gap_begin + h * contacts[i].u(1); });
-  data_array(out, "Int32", "status", 1, n, [&](std::size_t i, int) { return static_cast<int>(contacts[i].status); });
+  data_array(out, "Float64", "gap", 1, n,
+             [&](std::size_t i, int) { return contacts[i].gap_begin + h * contacts[i].u(1); });
+  data_array(out, "Int32", "status", 1, n,
+             [&](std::size_t i, int) { return static_cast<int>(contacts[i].status); });
   data_array(out, "Int32", "cdbdy", 1, n, [&](std::size_t i, int) { return contacts[i].candidate_body + 1; });
-  data_array(out, "Int32", "anbdy", 1, n, [&](std::size_t i, int) { return contacts[i].antagonist_body + 1; });
+  data_array(out, "Int32", "anbdy", 1, n,
+             [&](std::size_t i, int) { return contacts[i].antagonist_body + 1; });
   out += "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
   (void)scene;
   return out;
@@ -136,13 +158,19 @@ std::string contacts_vtu_2d(const Scene2D& scene, const RunState2D& state) {
 
 bool DisplayWriter2D::write(const Scene2D& scene, const RunState2D& state, std::string& error) {
   const std::size_t k = times_.size() + 1;
-  if (!grammar::write_file_whole(dir_ / fmt::format("bodies_{}.vtu", k), bodies_vtu_2d(scene), error)) return false;
-  if (!grammar::write_file_whole(dir_ / fmt::format("contacts_{}.vtu", k), contacts_vtu_2d(scene, state), error)) return false;
+  if (!grammar::write_file_whole(dir_ / fmt::format("bodies_{}.vtu", k), bodies_vtu_2d(scene), error))
+    return false;
+  if (!grammar::write_file_whole(dir_ / fmt::format("contacts_{}.vtu", k), contacts_vtu_2d(scene, state),
+                                 error))
+    return false;
   times_.push_back(state.time);
-  std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+  std::string pvd =
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
   for (std::size_t i = 0; i < times_.size(); ++i) {
-    pvd += fmt::format("    <DataSet timestep=\"{:.10g}\" group=\"\" part=\"0\" file=\"bodies_{}.vtu\"/>\n", times_[i], i + 1);
-    pvd += fmt::format("    <DataSet timestep=\"{:.10g}\" group=\"\" part=\"1\" file=\"contacts_{}.vtu\"/>\n", times_[i], i + 1);
+    pvd += fmt::format("    <DataSet timestep=\"{:.10g}\" group=\"\" part=\"0\" file=\"bodies_{}.vtu\"/>\n",
+                       times_[i], i + 1);
+    pvd += fmt::format("    <DataSet timestep=\"{:.10g}\" group=\"\" part=\"1\" file=\"contacts_{}.vtu\"/>\n",
+                       times_[i], i + 1);
   }
   pvd += "  </Collection>\n</VTKFile>\n";
   return grammar::write_file_whole(dir_ / "lmgc90.pvd", pvd, error);

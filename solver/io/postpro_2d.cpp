@@ -49,7 +49,8 @@ bool postpro_kind_of(std::string_view name, PostproKind2D& kind) {
   return false;
 }
 
-bool Postpro2D::open(const std::filesystem::path& dir, std::vector<PostproCommand2D> commands, std::string& error) {
+bool Postpro2D::open(const std::filesystem::path& dir, std::vector<PostproCommand2D> commands,
+                     std::string& error) {
   commands_ = std::move(commands);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
@@ -68,12 +69,24 @@ bool Postpro2D::open(const std::filesystem::path& dir, std::vector<PostproComman
     const PostproCommand2D& c = commands_[i];
     bool ok = true;
     switch (c.kind) {
-      case PostproKind2D::solver_informations: ok = create("SOLVER_INFORMATIONS.DAT", i, 0); break;
-      case PostproKind2D::violation_evolution: ok = create("VIOLATION_EVOLUTION.DAT", i, 0); break;
-      case PostproKind2D::kinetic_energy: ok = create("KINETIC_ENERGY.DAT", i, 0); break;
-      case PostproKind2D::dissipated_energy: ok = create("DISSIPATED_ENERGY.DAT", i, 0); break;
-      case PostproKind2D::coordination_number: ok = create("COORDINATION_NUMBER.DAT", i, 0); break;
-      case PostproKind2D::average_velocity_evolution: ok = create("AVERAGE_VELOCITY_EVOLUTION.DAT", i, 0); break;
+      case PostproKind2D::solver_informations:
+        ok = create("SOLVER_INFORMATIONS.DAT", i, 0);
+        break;
+      case PostproKind2D::violation_evolution:
+        ok = create("VIOLATION_EVOLUTION.DAT", i, 0);
+        break;
+      case PostproKind2D::kinetic_energy:
+        ok = create("KINETIC_ENERGY.DAT", i, 0);
+        break;
+      case PostproKind2D::dissipated_energy:
+        ok = create("DISSIPATED_ENERGY.DAT", i, 0);
+        break;
+      case PostproKind2D::coordination_number:
+        ok = create("COORDINATION_NUMBER.DAT", i, 0);
+        break;
+      case PostproKind2D::average_velocity_evolution:
+        ok = create("AVERAGE_VELOCITY_EVOLUTION.DAT", i, 0);
+        break;
       case PostproKind2D::body_tracking:
         for (std::int64_t b : c.bodies) ok = ok && create(fmt::format("BODY_{:07d}.DAT", b), i, b);
         break;
@@ -95,7 +108,8 @@ void Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsR
   double dissipated_step = 0.0;
   for (const Interaction2D& c : state.contacts) {
     if (c.status == ContactStatus::noctc || c.status == ContactStatus::vnish) continue;
-    dissipated_step -= 0.5 * (c.velocity_begin(1) + c.u(1)) * c.r(1) + 0.5 * (c.velocity_begin(0) + c.u(0)) * c.r(0);
+    dissipated_step -=
+        0.5 * (c.velocity_begin(1) + c.u(1)) * c.r(1) + 0.5 * (c.velocity_begin(0) + c.u(0)) * c.r(0);
   }
   bool dissipation_counted = false;
 
@@ -149,12 +163,15 @@ void Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsR
         double kinetic = 0, potential = 0, power = 0;
         for (std::size_t i = 0; i < b.size(); ++i) {
           const Vector3d& v = b.velocity[i];
-          kinetic += 0.5 * b.mass[i] * (v.x() * v.x() + v.y() * v.y() + v.z() * v.z() * b.gyrd[i] * b.gyrd[i]);
-          potential += b.mass[i] * (b.displacement[i].x() * scene.gravity.x() + b.displacement[i].y() * scene.gravity.y());
+          kinetic +=
+              0.5 * b.mass[i] * (v.x() * v.x() + v.y() * v.y() + v.z() * v.z() * b.gyrd[i] * b.gyrd[i]);
+          potential += b.mass[i] * (b.displacement[i].x() * scene.gravity.x() +
+                                    b.displacement[i].y() * scene.gravity.y());
           power += (b.impulse[i] / h + b.external_force[i]).dot(v);
         }
         external_work_ += h * power;
-        line(out, t, {kinetic, kinetic, -external_work_, -potential, 0.0, kinetic + external_work_ + potential});
+        line(out, t,
+             {kinetic, kinetic, -external_work_, -potential, 0.0, kinetic + external_work_ + potential});
         break;
       }
       case PostproKind2D::body_tracking: {
@@ -184,8 +201,10 @@ void Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsR
           const bool both = k.family == PairFamily2D::DKDKx || k.family == PairFamily2D::DKPLx ||
                             k.family == PairFamily2D::PLPLx;
           auto count = [&](std::int32_t body) {
-            if (rn > kTolerance) ++plus[static_cast<std::size_t>(body)];
-            else if (rn < -kTolerance) ++minus[static_cast<std::size_t>(body)];
+            if (rn > kTolerance)
+              ++plus[static_cast<std::size_t>(body)];
+            else if (rn < -kTolerance)
+              ++minus[static_cast<std::size_t>(body)];
           };
           count(k.candidate_body);
           if (both) count(k.antagonist_body);
@@ -198,7 +217,8 @@ void Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsR
         }
         std::string text;
         grammar::append_fortran_es(text, t, 15, 8);
-        for (std::int64_t v : {static_cast<std::int64_t>(b.size()), nbp0, c0t, c0p, c0m, nbp1, c1t, c1p, c1m}) {
+        for (std::int64_t v :
+             {static_cast<std::int64_t>(b.size()), nbp0, c0t, c0p, c0m, nbp1, c1t, c1p, c1m}) {
           text += ' ';
           grammar::append_fortran_i(text, v, 7);
         }
@@ -226,6 +246,8 @@ void Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsR
   }
 }
 
-void Postpro2D::close() { streams_.clear(); }
+void Postpro2D::close() {
+  streams_.clear();
+}
 
 }  // namespace lmgc::solver

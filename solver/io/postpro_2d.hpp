@@ -24,9 +24,9 @@ enum class PostproKind2D {
 
 struct PostproCommand2D {
   PostproKind2D kind;
-  int period = 1;                 // the command runs when Nstep mod period == 0
+  int period = 1;                    // the command runs when Nstep mod period == 0
   std::vector<std::int64_t> bodies;  // BODY TRACKING, TORQUE EVOLUTION: body ranks (1-based)
-  std::string color;              // AVERAGE VELOCITY EVOLUTION
+  std::string color;                 // AVERAGE VELOCITY EVOLUTION
 };
 
 // The command of a POSTPRO.DAT name, or false when the 2D post-processor does not provide it.
@@ -35,7 +35,8 @@ bool postpro_kind_of(std::string_view name, PostproKind2D& kind);
 class Postpro2D {
  public:
   // Creates POSTPRO/ and truncates every file the commands write (and POSTPRO.OUT).
-  bool open(const std::filesystem::path& postpro_dir, std::vector<PostproCommand2D> commands, std::string& error);
+  bool open(const std::filesystem::path& postpro_dir, std::vector<PostproCommand2D> commands,
+            std::string& error);
   // One line per active command, after the step (end-of-step state and the step's solver result).
   void write(const Scene2D& scene, const RunState2D& state, const NlgsResult& solver);
   void close();
@@ -48,9 +49,9 @@ class Postpro2D {
   };
   std::vector<PostproCommand2D> commands_;
   std::vector<Stream> streams_;
-  double dissipated_ = 0.0;        // cumulated dissipated energy
-  double external_work_ = 0.0;     // cumulated work of reactions and external forces
-  NlgsNorms last_norms_;           // kept when a step has no contact (as LMGC90 does)
+  double dissipated_ = 0.0;     // cumulated dissipated energy
+  double external_work_ = 0.0;  // cumulated work of reactions and external forces
+  NlgsNorms last_norms_;        // kept when a step has no contact (as LMGC90 does)
 };
 
 }  // namespace lmgc::solver

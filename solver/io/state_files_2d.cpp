@@ -40,13 +40,20 @@ namespace {
 
 std::string_view family_name(PairFamily2D f) {
   switch (f) {
-    case PairFamily2D::DKDKx: return "DKDKx";
-    case PairFamily2D::DKKDx: return "DKKDx";
-    case PairFamily2D::DKJCx: return "DKJCx";
-    case PairFamily2D::DKPLx: return "DKPLx";
-    case PairFamily2D::PTPT2: return "PTPT2";
-    case PairFamily2D::PLPLx: return "PLPLx";
-    case PairFamily2D::PLJCx: return "PLJCx";
+    case PairFamily2D::DKDKx:
+      return "DKDKx";
+    case PairFamily2D::DKKDx:
+      return "DKKDx";
+    case PairFamily2D::DKJCx:
+      return "DKJCx";
+    case PairFamily2D::DKPLx:
+      return "DKPLx";
+    case PairFamily2D::PTPT2:
+      return "PTPT2";
+    case PairFamily2D::PLPLx:
+      return "PLPLx";
+    case PairFamily2D::PLJCx:
+      return "PLJCx";
   }
   return "DKDKx";
 }
@@ -79,8 +86,9 @@ grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& 
   for (std::size_t k = 0; k < scene.contactors.size(); ++k) serial[k] = ++per_type[scene.contactors[k].type];
   // Modules in the alphabetical order of LMGC90's writer; inside one, by candidate contactor
   // (PLPLx: in detection order).
-  constexpr PairFamily2D kWriteOrder[] = {PairFamily2D::DKDKx, PairFamily2D::DKJCx, PairFamily2D::DKKDx, PairFamily2D::DKPLx,
-                                          PairFamily2D::PLJCx, PairFamily2D::PLPLx, PairFamily2D::PTPT2};
+  constexpr PairFamily2D kWriteOrder[] = {PairFamily2D::DKDKx, PairFamily2D::DKJCx, PairFamily2D::DKKDx,
+                                          PairFamily2D::DKPLx, PairFamily2D::PLJCx, PairFamily2D::PLPLx,
+                                          PairFamily2D::PTPT2};
   for (PairFamily2D family : kWriteOrder) {
     std::vector<std::size_t> members;
     for (std::size_t k = 0; k < state.contacts.size(); ++k)
@@ -89,7 +97,8 @@ grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& 
     const grammar::InteractionKind* kind = grammar::find_interaction_kind(family_name(family));
     std::map<std::int32_t, std::int64_t> adjacency;  // running count per candidate contactor
     std::vector<std::int64_t> iadj(members.size());
-    for (std::size_t m = 0; m < members.size(); ++m) iadj[m] = ++adjacency[state.contacts[members[m]].candidate];
+    for (std::size_t m = 0; m < members.size(); ++m)
+      iadj[m] = ++adjacency[state.contacts[members[m]].candidate];
     std::vector<std::size_t> order(members.size());
     for (std::size_t m = 0; m < members.size(); ++m) order[m] = m;
     if (family != PairFamily2D::PLPLx)
@@ -109,49 +118,67 @@ grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& 
       const Integer cd_body{cd.body + 1}, cd_rank{cd.rank}, an_body{an.body + 1}, an_rank{an.rank};
       switch (family) {
         case PairFamily2D::PLJCx:
-          out.words = {Word{"RBDY2"}, Word{cd.type}, Word{"CDVER"}, Word{law}, Word{"RBDY2"}, Word{an.type}, Word{status}};
+          out.words = {Word{"RBDY2"}, Word{cd.type}, Word{"CDVER"}, Word{law},
+                       Word{"RBDY2"}, Word{an.type}, Word{status}};
           out.integers = {cd_body, cd_rank, Integer{c.candidate_vertex}, an_body, an_rank, Integer{iadj[m]}};
           break;
         case PairFamily2D::PLPLx:
-          out.words = {Word{"RBDY2"}, Word{cd.type}, Word{"CDVER"}, Word{law}, Word{"RBDY2"}, Word{an.type}, Word{"ANSEG"}, Word{status}};
-          out.integers = {cd_body, cd_rank, Integer{c.candidate_vertex}, an_body, an_rank, Integer{c.antagonist_segment},
+          out.words = {Word{"RBDY2"}, Word{cd.type}, Word{"CDVER"}, Word{law},
+                       Word{"RBDY2"}, Word{an.type}, Word{"ANSEG"}, Word{status}};
+          out.integers = {cd_body,
+                          cd_rank,
+                          Integer{c.candidate_vertex},
+                          an_body,
+                          an_rank,
+                          Integer{c.antagonist_segment},
                           Integer{serial[static_cast<std::size_t>(c.antagonist)]}};
           break;
         case PairFamily2D::DKPLx:
-          out.words = {Word{"RBDY2"}, Word{"DISKx"}, Word{law}, Word{"RBDY2"}, Word{an.type}, Word{"CDVER"}, Word{status}};
+          out.words = {Word{"RBDY2"}, Word{"DISKx"}, Word{law},   Word{"RBDY2"},
+                       Word{an.type}, Word{"CDVER"}, Word{status}};
           out.integers = {cd_body, cd_rank, an_body, an_rank, Integer{0}, Integer{iadj[m]}};
           break;
         default:
           out.words = {Word{"RBDY2"}, Word{cd.type}, Word{law}, Word{"RBDY2"}, Word{an.type}, Word{status}};
-          out.integers = {cd_body, cd_rank, an_body, an_rank, Integer{serial[static_cast<std::size_t>(c.antagonist)]}};
+          out.integers = {cd_body, cd_rank, an_body, an_rank,
+                          Integer{serial[static_cast<std::size_t>(c.antagonist)]}};
       }
       const double gap_end = c.gap_begin + h * c.u(1);
       // The written point of disk modules is the candidate's surface point (rigid-2d.md §3.4).
-      const bool disk = family == PairFamily2D::DKDKx || family == PairFamily2D::DKJCx || family == PairFamily2D::DKKDx;
+      const bool disk =
+          family == PairFamily2D::DKDKx || family == PairFamily2D::DKJCx || family == PairFamily2D::DKKDx;
       const Eigen::Vector2d point = disk ? Eigen::Vector2d(c.point + 0.5 * c.gap_begin * c.normal) : c.point;
       for (const grammar::VectorLineKind& line : kind->vectors) {
         grammar::VlocRlocVector v;
         for (int k = 0; k < line.count; ++k) v.labels.emplace_back(line.labels[k]);
         const std::string first(line.labels[0]);
-        if (first.rfind("rl", 0) == 0) v.values = {Real{c.r(0) / h}, Real{c.r(1) / h}, Real{0.0}};
-        else if (first.rfind("vl", 0) == 0) v.values = {Real{c.u(0)}, Real{c.u(1)}, Real{0.0}};
-        else if (first == "gapTT" || first == "gap =") v.values = {Real{gap_end}};
-        else if (first == "n(1)=") v.values = {Real{c.normal.x()}, Real{c.normal.y()}, Real{0.0}};
-        else v.values = {Real{point.x()}, Real{point.y()}, Real{0.0}};
+        if (first.rfind("rl", 0) == 0)
+          v.values = {Real{c.r(0) / h}, Real{c.r(1) / h}, Real{0.0}};
+        else if (first.rfind("vl", 0) == 0)
+          v.values = {Real{c.u(0)}, Real{c.u(1)}, Real{0.0}};
+        else if (first == "gapTT" || first == "gap =")
+          v.values = {Real{gap_end}};
+        else if (first == "n(1)=")
+          v.values = {Real{c.normal.x()}, Real{c.normal.y()}, Real{0.0}};
+        else
+          v.values = {Real{point.x()}, Real{point.y()}, Real{0.0}};
         out.vectors.push_back(std::move(v));
       }
       const int internals = law_internal_count(scene.laws[static_cast<std::size_t>(c.law)].law);
       if (internals > 0) {
         std::vector<Real> values;
         for (int k = 0; k < internals; ++k) values.push_back(Real{c.internal[static_cast<std::size_t>(k)]});
-        const std::size_t per_line = kind->internals == grammar::InternalLayout2D::per_line_6   ? 6
-                                     : kind->internals == grammar::InternalLayout2D::per_line_5 ? 5
-                                                                                                  : values.size();
+        const std::size_t per_line = kind->internals == grammar::InternalLayout2D::per_line_6 ? 6
+                                     : kind->internals == grammar::InternalLayout2D::per_line_5
+                                         ? 5
+                                         : values.size();
         if (kind->internals == grammar::InternalLayout2D::one_line_with_comment)
-          out.internal_comment = internal_comment(law_keyword(scene.laws[static_cast<std::size_t>(c.law)].law));
+          out.internal_comment =
+              internal_comment(law_keyword(scene.laws[static_cast<std::size_t>(c.law)].law));
         for (std::size_t k = 0; k < values.size(); k += per_line)
-          out.internal_lines.emplace_back(values.begin() + static_cast<std::ptrdiff_t>(k),
-                                          values.begin() + static_cast<std::ptrdiff_t>(std::min(values.size(), k + per_line)));
+          out.internal_lines.emplace_back(
+              values.begin() + static_cast<std::ptrdiff_t>(k),
+              values.begin() + static_cast<std::ptrdiff_t>(std::min(values.size(), k + per_line)));
       }
       file.interactions.push_back(std::move(out));
     }
@@ -168,14 +195,22 @@ std::vector<Interaction2D> warm_start_2d(const grammar::VlocRlocFile& file, cons
   for (const auto& b : file.interactions) {
     PairFamily2D family;
     const std::string& t = b.type.value;
-    if (t == "DKDKx") family = PairFamily2D::DKDKx;
-    else if (t == "DKJCx") family = PairFamily2D::DKJCx;
-    else if (t == "DKKDx") family = PairFamily2D::DKKDx;
-    else if (t == "DKPLx") family = PairFamily2D::DKPLx;
-    else if (t == "PLJCx") family = PairFamily2D::PLJCx;
-    else if (t == "PLPLx") family = PairFamily2D::PLPLx;
-    else if (t == "PTPT2") family = PairFamily2D::PTPT2;
-    else continue;
+    if (t == "DKDKx")
+      family = PairFamily2D::DKDKx;
+    else if (t == "DKJCx")
+      family = PairFamily2D::DKJCx;
+    else if (t == "DKKDx")
+      family = PairFamily2D::DKKDx;
+    else if (t == "DKPLx")
+      family = PairFamily2D::DKPLx;
+    else if (t == "PLJCx")
+      family = PairFamily2D::PLJCx;
+    else if (t == "PLPLx")
+      family = PairFamily2D::PLPLx;
+    else if (t == "PTPT2")
+      family = PairFamily2D::PTPT2;
+    else
+      continue;
     const bool vertex = family == PairFamily2D::PLJCx || family == PairFamily2D::PLPLx;
     const auto& n = b.integers;
     if (n.size() < 5 || b.vectors.empty() || b.vectors[0].values.size() < 2) continue;

@@ -8,30 +8,56 @@
 namespace lmgc::solver {
 
 // contact-laws.md §3.1: inelastic quasi-shock Signorini + Coulomb.
-struct IqsClb { double sfric; };
+struct IqsClb {
+  double sfric;
+};
 // IQS with static/dynamic friction (§1.3): dfric when sliding at the beginning of the step.
-struct IqsDsClb { double dfric, sfric; };
+struct IqsDsClb {
+  double dfric, sfric;
+};
 // IQS relative to the gap at the first call (internal g_ref).
-struct IqsClbG0 { double sfric; };
+struct IqsClbG0 {
+  double sfric;
+};
 // Newton restitution (normal restn, tangential restt) + Coulomb.
-struct RstClb { double restn, restt, sfric; };
-struct RstDsClb { double restn, restt, dfric, sfric; };
+struct RstClb {
+  double restn, restt, sfric;
+};
+struct RstDsClb {
+  double restn, restt, dfric, sfric;
+};
 // Gap-Signorini: end-of-step gap >= 0 (penetration corrected in one step).
-struct GapSgrClb { double sfric; };
-struct GapSgrDsClb { double dfric, sfric; };
+struct GapSgrClb {
+  double sfric;
+};
+struct GapSgrDsClb {
+  double dfric, sfric;
+};
 // Velocity-Signorini (Moreau): active only when the gap is closed.
-struct VelSgrClb { double sfric; };
-struct VelSgrDsClb { double dfric, sfric; };
+struct VelSgrClb {
+  double sfric;
+};
+struct VelSgrDsClb {
+  double dfric, sfric;
+};
 // Linear spring in compression (stiffness F/gap, force per length) + Coulomb.
-struct ElasticRepellClb { double stiffness, sfric; };
+struct ElasticRepellClb {
+  double stiffness, sfric;
+};
 // Mohr–Coulomb cohesion until the first break (cohen, cohet: normal/tangential cohesion).
-struct IqsMohrDsClb { double cohen, cohet, dfric, sfric; };
+struct IqsMohrDsClb {
+  double cohen, cohet, dfric, sfric;
+};
 // Reversible cohesion inside a wet halo of thickness Wethk.
-struct IqsWetDsClb { double cohen, cohet, wethk, dfric, sfric; };
+struct IqsWetDsClb {
+  double cohen, cohet, wethk, dfric, sfric;
+};
 // Monerie–Acary–Cangémi cohesive zone with an IQS normal part (contact-laws.md §3.5):
 // friction dfric/sfric, normal and tangential stiffnesses cn, ct, viscosity visco and fracture
 // energy dupre of the damage law.
-struct IqsMacCzm { double dfric, sfric, cn, ct, visco, dupre; };
+struct IqsMacCzm {
+  double dfric, sfric, cn, ct, visco, dupre;
+};
 // Bilateral glue on both components.
 struct CoupledDof {};
 // A law LMGC90's 2D NLGS has no branch for (MD_JKRs, a smooth law): LMGC90 then solves the
@@ -41,8 +67,9 @@ struct NoNlgsBranch {
   double sfric;
 };
 
-using ContactLaw = std::variant<IqsClb, IqsDsClb, IqsClbG0, RstClb, RstDsClb, GapSgrClb, GapSgrDsClb, VelSgrClb,
-                                VelSgrDsClb, ElasticRepellClb, IqsMohrDsClb, IqsWetDsClb, IqsMacCzm, CoupledDof, NoNlgsBranch>;
+using ContactLaw =
+    std::variant<IqsClb, IqsDsClb, IqsClbG0, RstClb, RstDsClb, GapSgrClb, GapSgrDsClb, VelSgrClb, VelSgrDsClb,
+                 ElasticRepellClb, IqsMohrDsClb, IqsWetDsClb, IqsMacCzm, CoupledDof, NoNlgsBranch>;
 
 // Keyword of a law as TACT_BEHAV.DAT spells it.
 std::string_view law_keyword(const ContactLaw& law);

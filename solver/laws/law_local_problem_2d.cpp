@@ -17,34 +17,54 @@ Overloaded(Ts...) -> Overloaded<Ts...>;
 
 using Eigen::Vector2d;
 
-double positive(double x) { return x > 0.0 ? x : 0.0; }
+double positive(double x) {
+  return x > 0.0 ? x : 0.0;
+}
 
 // §1.3: dynamic friction when the contact was sliding at the beginning of the step.
-double static_dynamic(double dfric, double sfric, ContactStatus begin) { return is_sliding(begin) ? dfric : sfric; }
+double static_dynamic(double dfric, double sfric, ContactStatus begin) {
+  return is_sliding(begin) ? dfric : sfric;
+}
 
 // "IQS form": the bodies may close an open gap within the step, no push-out when penetrated.
-void iqs_form(Interaction2D& c, double h) { c.covfree(1) = positive(c.gap_begin) / h; }
+void iqs_form(Interaction2D& c, double h) {
+  c.covfree(1) = positive(c.gap_begin) / h;
+}
 // "GAP form": the end-of-step gap must be >= 0 (penetrations corrected in one step).
-void gap_form(Interaction2D& c, double h) { c.covfree(1) = c.gap_begin / h; }
+void gap_form(Interaction2D& c, double h) {
+  c.covfree(1) = c.gap_begin / h;
+}
 
 ContactStatus wet(ContactStatus s) {
   switch (s) {
-    case ContactStatus::nknow: return ContactStatus::Wnnow;
-    case ContactStatus::noctc: return ContactStatus::Wnctc;
-    case ContactStatus::stick: return ContactStatus::Wstck;
-    case ContactStatus::slibw: return ContactStatus::Wslbw;
-    case ContactStatus::slifw: return ContactStatus::Wslfw;
-    default: return s;
+    case ContactStatus::nknow:
+      return ContactStatus::Wnnow;
+    case ContactStatus::noctc:
+      return ContactStatus::Wnctc;
+    case ContactStatus::stick:
+      return ContactStatus::Wstck;
+    case ContactStatus::slibw:
+      return ContactStatus::Wslbw;
+    case ContactStatus::slifw:
+      return ContactStatus::Wslfw;
+    default:
+      return s;
   }
 }
 ContactStatus dry(ContactStatus s) {
   switch (s) {
-    case ContactStatus::Wnnow: return ContactStatus::nknow;
-    case ContactStatus::Wnctc: return ContactStatus::noctc;
-    case ContactStatus::Wstck: return ContactStatus::stick;
-    case ContactStatus::Wslbw: return ContactStatus::slibw;
-    case ContactStatus::Wslfw: return ContactStatus::slifw;
-    default: return s;
+    case ContactStatus::Wnnow:
+      return ContactStatus::nknow;
+    case ContactStatus::Wnctc:
+      return ContactStatus::noctc;
+    case ContactStatus::Wstck:
+      return ContactStatus::stick;
+    case ContactStatus::Wslbw:
+      return ContactStatus::slibw;
+    case ContactStatus::Wslfw:
+      return ContactStatus::slifw;
+    default:
+      return s;
   }
 }
 
@@ -55,7 +75,9 @@ void add_cohesion(Interaction2D& c, double cohesion, double h) {
   c.correction(1) = -cohesion * h;
 }
 
-bool is_wet_law(const ContactLaw& law) { return std::holds_alternative<IqsWetDsClb>(law); }
+bool is_wet_law(const ContactLaw& law) {
+  return std::holds_alternative<IqsWetDsClb>(law);
+}
 
 }  // namespace
 
@@ -173,7 +195,8 @@ void prepare_local_problem_2d(const ContactLaw& law, Interaction2D& c, double h)
   if (c.WW(0, 0) <= 1e-6 * c.WW(1, 1)) c.WW(0, 0) = 1e-6 * c.WW(1, 1);
 }
 
-LocalSolution2D solve_local_problem_2d(const ContactLaw& law, const Interaction2D& c, const Vector2d& ufree_loc) {
+LocalSolution2D solve_local_problem_2d(const ContactLaw& law, const Interaction2D& c,
+                                       const Vector2d& ufree_loc) {
   const Vector2d vv = ufree_loc + c.covfree;
   LocalSolution2D s;
   if (c.inactive) return s;

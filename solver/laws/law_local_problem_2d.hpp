@@ -16,7 +16,8 @@ namespace lmgc::solver {
 void prepare_local_problem_2d(const ContactLaw& law, Interaction2D& c, double h);
 
 // The law's reaction for the current local free velocity (u = ufree_loc + W r), correction included.
-LocalSolution2D solve_local_problem_2d(const ContactLaw& law, const Interaction2D& c, const Eigen::Vector2d& ufree_loc);
+LocalSolution2D solve_local_problem_2d(const ContactLaw& law, const Interaction2D& c,
+                                       const Eigen::Vector2d& ufree_loc);
 
 // Squared residual of the law at (r, ufree_loc): the natural map of the Signorini–Coulomb problem
 // in auxiliary variables for Coulomb laws, |uu| for glued dofs, |r| for inactive contacts.

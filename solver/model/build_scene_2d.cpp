@@ -30,23 +30,38 @@ bool contact_law_of(const grammar::TactLaw& card, ContactLaw& law) {
   if (!kind) return false;
   auto p = [&](std::string_view name) { return parameter(card, *kind, name); };
   const std::string& k = card.keyword.value;
-  if (k == "IQS_CLB") law = IqsClb{p("sfric")};
-  else if (k == "IQS_DS_CLB") law = IqsDsClb{p("dfric"), p("sfric")};
-  else if (k == "IQS_CLB_g0") law = IqsClbG0{p("sfric")};
-  else if (k == "RST_CLB") law = RstClb{p("restn"), p("restt"), p("sfric")};
-  else if (k == "RST_DS_CLB") law = RstDsClb{p("restn"), p("restt"), p("dfric"), p("sfric")};
-  else if (k == "GAP_SGR_CLB") law = GapSgrClb{p("sfric")};
-  else if (k == "GAP_SGR_DS_CLB") law = GapSgrDsClb{p("dfric"), p("sfric")};
-  else if (k == "VEL_SGR_CLB") law = VelSgrClb{p("sfric")};
-  else if (k == "VEL_SGR_DS_CLB") law = VelSgrDsClb{p("dfric"), p("sfric")};
-  else if (k == "ELASTIC_REPELL_CLB") law = ElasticRepellClb{p("F/gap"), p("sfric")};
-  else if (k == "IQS_MOHR_DS_CLB") law = IqsMohrDsClb{p("cohen"), p("cohet"), p("dfric"), p("sfric")};
-  else if (k == "IQS_WET_DS_CLB") law = IqsWetDsClb{p("cohen"), p("cohet"), p("Wethk"), p("dfric"), p("sfric")};
+  if (k == "IQS_CLB")
+    law = IqsClb{p("sfric")};
+  else if (k == "IQS_DS_CLB")
+    law = IqsDsClb{p("dfric"), p("sfric")};
+  else if (k == "IQS_CLB_g0")
+    law = IqsClbG0{p("sfric")};
+  else if (k == "RST_CLB")
+    law = RstClb{p("restn"), p("restt"), p("sfric")};
+  else if (k == "RST_DS_CLB")
+    law = RstDsClb{p("restn"), p("restt"), p("dfric"), p("sfric")};
+  else if (k == "GAP_SGR_CLB")
+    law = GapSgrClb{p("sfric")};
+  else if (k == "GAP_SGR_DS_CLB")
+    law = GapSgrDsClb{p("dfric"), p("sfric")};
+  else if (k == "VEL_SGR_CLB")
+    law = VelSgrClb{p("sfric")};
+  else if (k == "VEL_SGR_DS_CLB")
+    law = VelSgrDsClb{p("dfric"), p("sfric")};
+  else if (k == "ELASTIC_REPELL_CLB")
+    law = ElasticRepellClb{p("F/gap"), p("sfric")};
+  else if (k == "IQS_MOHR_DS_CLB")
+    law = IqsMohrDsClb{p("cohen"), p("cohet"), p("dfric"), p("sfric")};
+  else if (k == "IQS_WET_DS_CLB")
+    law = IqsWetDsClb{p("cohen"), p("cohet"), p("Wethk"), p("dfric"), p("sfric")};
   else if (k == "IQS_MAC_CZM")
     law = IqsMacCzm{p("dfric"), p("sfric"), p("cn"), p("ct"), p("visco"), p("dupre")};
-  else if (k == "COUPLED_DOF") law = CoupledDof{};
-  else if (k == "MD_JKRs") law = NoNlgsBranch{p("sfric")};
-  else return false;
+  else if (k == "COUPLED_DOF")
+    law = CoupledDof{};
+  else if (k == "MD_JKRs")
+    law = NoNlgsBranch{p("sfric")};
+  else
+    return false;
   return true;
 }
 
@@ -130,13 +145,22 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
       }
       // Bounding radius around the contactor centre.
       switch (c.shape) {
-        case ContactorShape2D::disk: c.bounding_radius = c.radius; break;
-        case ContactorShape2D::hollow_disk: c.bounding_radius = c.radius; break;
-        case ContactorShape2D::joncx: c.bounding_radius = c.half_length + c.half_width; break;
-        case ContactorShape2D::point: c.bounding_radius = 0.0; break;
+        case ContactorShape2D::disk:
+          c.bounding_radius = c.radius;
+          break;
+        case ContactorShape2D::hollow_disk:
+          c.bounding_radius = c.radius;
+          break;
+        case ContactorShape2D::joncx:
+          c.bounding_radius = c.half_length + c.half_width;
+          break;
+        case ContactorShape2D::point:
+          c.bounding_radius = 0.0;
+          break;
         case ContactorShape2D::polygon:
           for (std::int32_t k = 0; k < c.vertex_count; ++k)
-            c.bounding_radius = std::max(c.bounding_radius, scene.vertices[static_cast<std::size_t>(c.first_vertex + k)].norm());
+            c.bounding_radius = std::max(c.bounding_radius,
+                                         scene.vertices[static_cast<std::size_t>(c.first_vertex + k)].norm());
           break;
       }
       scene.contactors.push_back(c);
@@ -204,7 +228,8 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
             if (in.evolutions) {
               auto it = in.evolutions->find(dof.evolution_file.value);
               if (it != in.evolutions->end())
-                for (const auto& point : it->second.points) d.evolution.push_back({point.time.value, point.value.value});
+                for (const auto& point : it->second.points)
+                  d.evolution.push_back({point.time.value, point.value.value});
             }
           } else {
             for (std::size_t k = 0; k < 6; ++k) d.coefficients[k] = dof.parameters[k].value;
@@ -224,8 +249,10 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
         const auto i = static_cast<std::size_t>(body_of_rank[static_cast<std::size_t>(rank - 1)]);
         const grammar::DofNode& node = body.nodes.front();
         for (std::size_t d = 0; d < 3; ++d) {
-          if (d < node.x.size()) scene.bodies.displacement_begin[i](static_cast<Eigen::Index>(d)) = node.x[d].value;
-          if (d < node.v.size()) scene.bodies.velocity_begin[i](static_cast<Eigen::Index>(d)) = node.v[d].value;
+          if (d < node.x.size())
+            scene.bodies.displacement_begin[i](static_cast<Eigen::Index>(d)) = node.x[d].value;
+          if (d < node.v.size())
+            scene.bodies.velocity_begin[i](static_cast<Eigen::Index>(d)) = node.v[d].value;
         }
         scene.bodies.displacement[i] = scene.bodies.displacement_begin[i];
         scene.bodies.velocity[i] = scene.bodies.velocity_begin[i];

@@ -17,8 +17,8 @@ namespace lmgc::solver {
 struct SceneInput2D {
   const grammar::BodiesFile* bodies = nullptr;
   const grammar::TactBehavFile* tact_behav = nullptr;
-  const grammar::DrvDofFile* drv_dof = nullptr;          // may be null
-  const grammar::DofFile* dof_ini = nullptr;             // may be null
+  const grammar::DrvDofFile* drv_dof = nullptr;  // may be null
+  const grammar::DofFile* dof_ini = nullptr;     // may be null
   const std::map<std::string, grammar::EvolutionFile>* evolutions = nullptr;
   std::map<std::string, double> densities;  // bulk behaviour nickname -> Umas [kg/m²]
   Eigen::Vector2d gravity = Eigen::Vector2d(0.0, -9.81);

@@ -6,11 +6,32 @@
 namespace lmgc::solver {
 
 enum class ContactStatus : std::uint8_t {
-  vnish, nknow, noctc, stick, slide, slibw, slifw,  // plain
-  Cnnow, Cnctc, Cstck, Cslid, Cslbw, Cslfw,          // cohesive
-  Wnnow, Wnctc, Wstck, Wslid, Wslbw, Wslfw,          // wet
-  Mnnow, Mnctc, Mstck, Mslid, Mslbw, Mslfw,          // Mohr–Coulomb
-  RGR,                                               // '_RGR_' gap rescue
+  vnish,
+  nknow,
+  noctc,
+  stick,
+  slide,
+  slibw,
+  slifw,  // plain
+  Cnnow,
+  Cnctc,
+  Cstck,
+  Cslid,
+  Cslbw,
+  Cslfw,  // cohesive
+  Wnnow,
+  Wnctc,
+  Wstck,
+  Wslid,
+  Wslbw,
+  Wslfw,  // wet
+  Mnnow,
+  Mnctc,
+  Mstck,
+  Mslid,
+  Mslbw,
+  Mslfw,  // Mohr–Coulomb
+  RGR,    // '_RGR_' gap rescue
 };
 
 std::string_view status_name(ContactStatus status);

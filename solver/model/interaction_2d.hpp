@@ -15,15 +15,15 @@ enum class PairFamily2D : std::uint8_t { DKDKx, DKKDx, DKJCx, DKPLx, PTPT2, PLPL
 
 struct Interaction2D {
   PairFamily2D family = PairFamily2D::DKDKx;
-  std::int32_t candidate = 0;   // contactor ids (Scene2D::contactors)
+  std::int32_t candidate = 0;  // contactor ids (Scene2D::contactors)
   std::int32_t antagonist = 0;
   std::int32_t candidate_body = 0;
   std::int32_t antagonist_body = 0;
-  std::int32_t candidate_vertex = 0;   // PLPLx/PLJCx: vertex of the candidate polygon (1-based, 0 none)
-  std::int32_t antagonist_segment = 0; // PLPLx: segment of the antagonist polygon
-  std::int32_t law = 0;                // index into Scene2D::laws
-  std::int32_t visibility = 0;         // index into Scene2D::visibility
-  std::int32_t periodic_shift = 0;     // antagonist shifted by this many periods in x
+  std::int32_t candidate_vertex = 0;    // PLPLx/PLJCx: vertex of the candidate polygon (1-based, 0 none)
+  std::int32_t antagonist_segment = 0;  // PLPLx: segment of the antagonist polygon
+  std::int32_t law = 0;                 // index into Scene2D::laws
+  std::int32_t visibility = 0;          // index into Scene2D::visibility
+  std::int32_t periodic_shift = 0;      // antagonist shifted by this many periods in x
 
   // Geometry at the detection configuration (θ-scheme "TT" configuration).
   Eigen::Vector2d normal = Eigen::Vector2d::Zero();   // from antagonist to candidate
@@ -53,7 +53,7 @@ struct Interaction2D {
   bool cohesive = false;
   Eigen::Vector2d cohesive_slope = Eigen::Vector2d::Zero();
   double cohesive_shift_t = 0.0;
-  bool inactive = false;  // forecast inactive ("noact"): r = 0, skipped by the sweeps
+  bool inactive = false;        // forecast inactive ("noact"): r = 0, skipped by the sweeps
   std::int32_t skip_count = 0;  // vanishing-contact skip heuristic (numerics.md §4)
   std::int32_t skip_threshold = 1;
 };

@@ -22,9 +22,9 @@ struct Contactor2D {
   std::string type;       // LMGC90 keyword: "DISKx", "DISKb", "JONCx", "POLYG", "xKSID", "PT2Dx"
   std::string color;
   Eigen::Vector2d shift = Eigen::Vector2d::Zero();  // offset from the centre of inertia, body frame
-  double radius = 0.0;      // DISKx, DISKb, xKSID
-  double half_length = 0.0; // JONCx ax1
-  double half_width = 0.0;  // JONCx ax2
+  double radius = 0.0;                              // DISKx, DISKb, xKSID
+  double half_length = 0.0;                         // JONCx ax1
+  double half_width = 0.0;                          // JONCx ax2
   std::int32_t first_vertex = 0;  // POLYG: vertices[first_vertex, first_vertex + vertex_count)
   std::int32_t vertex_count = 0;
   double bounding_radius = 0.0;  // radius of the circle centred at the shift containing the shape
@@ -48,8 +48,8 @@ struct NamedLaw {
 // (linear interpolation and extrapolation). spec: datbox-inputs.md §5.
 struct DrivenDof2D {
   std::int32_t body = 0;
-  std::int32_t dof = 0;         // 0, 1, 2
-  bool is_force = false;        // 'force' instead of 'vlocy'
+  std::int32_t dof = 0;   // 0, 1, 2
+  bool is_force = false;  // 'force' instead of 'vlocy'
   std::array<double, 6> coefficients{};
   std::vector<std::array<double, 2>> evolution;  // (t, v) pairs when given by a file
   double value(double t) const;
@@ -70,7 +70,7 @@ struct Scene2D {
   std::vector<Visibility2D> visibility;
   std::vector<DrivenDof2D> driven;
   Eigen::Vector2d gravity = Eigen::Vector2d(0.0, -9.81);
-  std::vector<double> density;            // per bulk behaviour [kg/m²]
+  std::vector<double> density;  // per bulk behaviour [kg/m²]
   std::vector<std::string> behaviour_names;
   // Periodic in x with this period, when > 0 (numerics.md §5.2).
   double x_period = 0.0;

@@ -42,7 +42,8 @@ int SceneBuilder2D::add_disk(double x, double y, double radius, double density, 
   return body;
 }
 
-int SceneBuilder2D::add_fixed_joncx(double x, double y, double angle, double ax1, double ax2, const std::string& color) {
+int SceneBuilder2D::add_fixed_joncx(double x, double y, double angle, double ax1, double ax2,
+                                    const std::string& color) {
   const int body = add_body(x, y, angle, 1.0, 1.0);
   Contactor2D c;
   c.shape = ContactorShape2D::joncx;
@@ -57,7 +58,8 @@ int SceneBuilder2D::add_fixed_joncx(double x, double y, double angle, double ax1
   return body;
 }
 
-void polygon_mass_properties(const std::vector<Vector2d>& v, double& area, Vector2d& centroid, double& polar) {
+void polygon_mass_properties(const std::vector<Vector2d>& v, double& area, Vector2d& centroid,
+                             double& polar) {
   area = 0.0;
   centroid.setZero();
   double second = 0.0;  // ∫ |x|² about the origin
@@ -162,7 +164,8 @@ void finalise_scene(Scene2D& scene) {
       scene.plan.families[static_cast<std::size_t>(family)] = true;
     }
   }
-  for (const Contactor2D& c : scene.contactors) scene.plan.any_polygon |= c.shape == ContactorShape2D::polygon;
+  for (const Contactor2D& c : scene.contactors)
+    scene.plan.any_polygon |= c.shape == ContactorShape2D::polygon;
 }
 
 }  // namespace lmgc::solver

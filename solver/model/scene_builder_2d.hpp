@@ -12,7 +12,8 @@ class SceneBuilder2D {
   // A disk of radius r and areal density ρ at (x, y): m = ρ π r², I = m r²/2.
   int add_disk(double x, double y, double radius, double density, const std::string& color = "BLEUx");
   // A JONCx wall centred at (x, y), axis at `angle`, half-length ax1, half-thickness ax2; fixed.
-  int add_fixed_joncx(double x, double y, double angle, double ax1, double ax2, const std::string& color = "WALLx");
+  int add_fixed_joncx(double x, double y, double angle, double ax1, double ax2,
+                      const std::string& color = "WALLx");
   // A convex polygon (vertices counter-clockwise, relative to (x, y)) re-centred on its centroid.
   int add_polygon(double x, double y, const std::vector<Eigen::Vector2d>& vertices, double density,
                   const std::string& color = "BLEUx");
@@ -34,8 +35,8 @@ class SceneBuilder2D {
 
 // Mass properties of a convex polygon of unit density: area, centroid, polar moment about the
 // centroid (per unit density).
-void polygon_mass_properties(const std::vector<Eigen::Vector2d>& vertices, double& area, Eigen::Vector2d& centroid,
-                             double& polar_moment);
+void polygon_mass_properties(const std::vector<Eigen::Vector2d>& vertices, double& area,
+                             Eigen::Vector2d& centroid, double& polar_moment);
 
 // Inverse masses, visibility families and the plan, from the rest of the scene.
 void finalise_scene(Scene2D& scene);

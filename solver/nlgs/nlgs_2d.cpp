@@ -20,19 +20,19 @@ using Eigen::Vector2d;
 using Eigen::Vector3d;
 
 struct HotContact2D {
-  std::int32_t cd = 0, an = 0;           // body indices
+  std::int32_t cd = 0, an = 0;  // body indices
   std::int32_t skip_count = 0, skip_threshold = 1;
   std::uint8_t inactive = 0, glued = 0, wet = 0, cohesive = 0;
   ContactStatus status = ContactStatus::noctc;
-  double nx = 0, ny = 0;                 // normal; t = (ny, -nx)
+  double nx = 0, ny = 0;                              // normal; t = (ny, -nx)
   double gcd_t = 0, gcd_n = 0, gan_t = 0, gan_n = 0;  // ℓ×t, ℓ×n of each body
-  double wtt = 0, wtn = 0, wnn = 0;      // Delassus block W
-  double wwtt = 0, wwnn = 0;             // modified diagonal of the law (WW off-diagonal = W's)
-  double cov_t = 0, cov_n = 0;           // law shift of the free velocity
-  double cor_t = 0, cor_n = 0;           // law correction added to the reaction
+  double wtt = 0, wtn = 0, wnn = 0;                   // Delassus block W
+  double wwtt = 0, wwnn = 0;                          // modified diagonal of the law (WW off-diagonal = W's)
+  double cov_t = 0, cov_n = 0;                        // law shift of the free velocity
+  double cor_t = 0, cor_n = 0;                        // law correction added to the reaction
   double mu = 0;
-  double rt = 0, rn = 0;                 // impulse
-  double kt = 0, kn = 0, radh_t = 0;     // cohesive zone: r_coh = (radh_t, 0) + diag(kt, kn) uu
+  double rt = 0, rn = 0;              // impulse
+  double kt = 0, kn = 0, radh_t = 0;  // cohesive zone: r_coh = (radh_t, 0) + diag(kt, kn) uu
 };
 
 inline Vector2d relative_velocity(const HotContact2D& c, const std::vector<Vector3d>& v) {
@@ -44,8 +44,9 @@ inline Vector2d relative_velocity(const HotContact2D& c, const std::vector<Vecto
   return Vector2d(ut, un);
 }
 
-[[gnu::always_inline]] inline void inject(const HotContact2D& c, double dt_, double dn, const std::vector<Vector3d>& inverse_mass,
-                   std::vector<Vector3d>& v) {
+[[gnu::always_inline]] inline void inject(const HotContact2D& c, double dt_, double dn,
+                                          const std::vector<Vector3d>& inverse_mass,
+                                          std::vector<Vector3d>& v) {
   const double tx = c.ny, ty = -c.nx;
   const double fx = dt_ * tx + dn * c.nx, fy = dt_ * ty + dn * c.ny;
   const auto i = static_cast<std::size_t>(c.cd), j = static_cast<std::size_t>(c.an);
@@ -60,7 +61,8 @@ Matrix2d delassus_block(const Interaction2D& c, const std::vector<Vector3d>& inv
   for (int side = 0; side < 2; ++side) {
     const Vector2d& lever = side == 0 ? c.lever_candidate : c.lever_antagonist;
     const Vector3d t(c.tangent.x(), c.tangent.y(), lever(0)), n(c.normal.x(), c.normal.y(), lever(1));
-    const Vector3d& m = inverse_mass[static_cast<std::size_t>(side == 0 ? c.candidate_body : c.antagonist_body)];
+    const Vector3d& m =
+        inverse_mass[static_cast<std::size_t>(side == 0 ? c.candidate_body : c.antagonist_body)];
     W(0, 0) += t.cwiseProduct(m).dot(t);
     W(0, 1) += t.cwiseProduct(m).dot(n);
     W(1, 1) += n.cwiseProduct(m).dot(n);
@@ -71,21 +73,31 @@ Matrix2d delassus_block(const Interaction2D& c, const std::vector<Vector3d>& inv
 
 ContactStatus cohesive_status(ContactStatus s) {
   switch (s) {
-    case ContactStatus::noctc: return ContactStatus::Cnctc;
-    case ContactStatus::stick: return ContactStatus::Cstck;
-    case ContactStatus::slibw: return ContactStatus::Cslbw;
-    case ContactStatus::slifw: return ContactStatus::Cslfw;
-    default: return s;
+    case ContactStatus::noctc:
+      return ContactStatus::Cnctc;
+    case ContactStatus::stick:
+      return ContactStatus::Cstck;
+    case ContactStatus::slibw:
+      return ContactStatus::Cslbw;
+    case ContactStatus::slifw:
+      return ContactStatus::Cslfw;
+    default:
+      return s;
   }
 }
 
 ContactStatus wet_status(ContactStatus s) {
   switch (s) {
-    case ContactStatus::noctc: return ContactStatus::Wnctc;
-    case ContactStatus::stick: return ContactStatus::Wstck;
-    case ContactStatus::slibw: return ContactStatus::Wslbw;
-    case ContactStatus::slifw: return ContactStatus::Wslfw;
-    default: return s;
+    case ContactStatus::noctc:
+      return ContactStatus::Wnctc;
+    case ContactStatus::stick:
+      return ContactStatus::Wstck;
+    case ContactStatus::slibw:
+      return ContactStatus::Wslbw;
+    case ContactStatus::slifw:
+      return ContactStatus::Wslfw;
+    default:
+      return s;
   }
 }
 
@@ -124,7 +136,8 @@ ContactStatus wet_status(ContactStatus s) {
 
 // The law's reaction (correction included) for the local free velocity ufree_loc. The plain
 // Signorini–Coulomb path, taken by almost every contact, is inlined in the sweep.
-[[gnu::always_inline]] inline void local_solve(const HotContact2D& c, double uft, double ufn, double& rt, double& rn, ContactStatus& status) {
+[[gnu::always_inline]] inline void local_solve(const HotContact2D& c, double uft, double ufn, double& rt,
+                                               double& rn, ContactStatus& status) {
   const double vt = uft + c.cov_t, vn = ufn + c.cov_n;
   if (c.glued) [[unlikely]] {
     glued_solve(c, vt, vn, rt, rn, status);
@@ -146,17 +159,20 @@ bool check_passes(NlgsNorm norm, const NlgsNorms& q) {
   const bool maxm = std::fabs(q.mean_dvor) < 1.0 && std::fabs(q.maxm_dv) < 1.0 && std::fabs(q.maxm_dvr) < 1.0;
   switch (norm) {
     case NlgsNorm::quad:
-    case NlgsNorm::quad_normal: return quad;
-    case NlgsNorm::maxm: return maxm;
-    case NlgsNorm::qm16: return quad && std::fabs(q.maxm_dv) < 16.666 && std::fabs(q.maxm_dvr) < 16.666;
+    case NlgsNorm::quad_normal:
+      return quad;
+    case NlgsNorm::maxm:
+      return maxm;
+    case NlgsNorm::qm16:
+      return quad && std::fabs(q.maxm_dv) < 16.666 && std::fabs(q.maxm_dvr) < 16.666;
   }
   return quad;
 }
 
 }  // namespace
 
-NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vector<Interaction2D>& contacts, double h,
-                         double time, const NlgsOptions& options) {
+NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vector<Interaction2D>& contacts,
+                         double h, double time, const NlgsOptions& options) {
   NlgsResult result;
   const std::size_t count = contacts.size();
   std::vector<Vector3d>& v = bodies.velocity;
@@ -272,7 +288,8 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
 
   // One check pass (numerics.md §4.1): the local solve applied to the current state, no update.
   auto check = [&]() {
-    double sum_dvdv = 0, max_dvdv = 0, sum_dvdvrr = 0, max_dvdvrr = 0, sum_dvor = 0, sum_wrr = 0, sum_wrwr = 0;
+    double sum_dvdv = 0, max_dvdv = 0, sum_dvdvrr = 0, max_dvdvrr = 0, sum_dvor = 0, sum_wrr = 0,
+           sum_wrwr = 0;
     double residual2 = 0;
     std::size_t vanishing = 0;
     result.active = 0;
@@ -320,8 +337,9 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       sum_wrwr += 0.5 * (w1t * w1t + w1n * w1n + w2t * w2t + w2n * w2n);
     }
     result.residual_absolute = std::sqrt(residual2);
-    result.residual_relative =
-        result.free_velocity_norm > 0.0 ? result.residual_absolute / result.free_velocity_norm : result.residual_absolute;
+    result.residual_relative = result.free_velocity_norm > 0.0
+                                   ? result.residual_absolute / result.free_velocity_norm
+                                   : result.residual_absolute;
     const double active = static_cast<double>(count - vanishing);
     NlgsNorms& q = result.norms;
     const double tol = options.tolerance;
@@ -336,7 +354,8 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     } else {
       q = NlgsNorms{0.111e-11, 0.111e-11, 0.111e-11, 0.111e-11, 0.111e-11, 0.0};
     }
-    if (!std::isfinite(q.mean_dvor) || !std::isfinite(q.quad_dv) || !std::isfinite(residual2)) result.diverged = true;
+    if (!std::isfinite(q.mean_dvor) || !std::isfinite(q.quad_dv) || !std::isfinite(residual2))
+      result.diverged = true;
     bool passed = check_passes(options.norm, q);
     if (options.residual_target > 0.0) passed = passed || result.residual_relative <= options.residual_target;
     return passed;
@@ -380,8 +399,9 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     finish_step_2d(scene.laws[static_cast<std::size_t>(c.law)].law, c, h, time);
   }
   result.residual_absolute = std::sqrt(residual2);
-  result.residual_relative =
-      result.free_velocity_norm > 0.0 ? result.residual_absolute / result.free_velocity_norm : result.residual_absolute;
+  result.residual_relative = result.free_velocity_norm > 0.0
+                                 ? result.residual_absolute / result.free_velocity_norm
+                                 : result.residual_absolute;
   return result;
 }
 

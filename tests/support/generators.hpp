@@ -13,16 +13,16 @@ namespace lmgc::test {
 
 // A real with 7 significant digits and a decimal exponent in [-30, 30], or zero.
 inline rc::Gen<double> gen_d14_real() {
-  return rc::gen::oneOf(
-      rc::gen::just(0.0),
-      rc::gen::map(rc::gen::tuple(rc::gen::inRange(1000000, 10000000), rc::gen::inRange(-30, 31),
-                                  rc::gen::arbitrary<bool>()),
-                   [](const std::tuple<int, int, bool>& t) {
-                     char buffer[64];
-                     std::snprintf(buffer, sizeof buffer, "%s0.%dE%d", std::get<2>(t) ? "-" : "",
-                                   std::get<0>(t), std::get<1>(t));
-                     return std::strtod(buffer, nullptr);
-                   }));
+  return rc::gen::oneOf(rc::gen::just(0.0),
+                        rc::gen::map(rc::gen::tuple(rc::gen::inRange(1000000, 10000000),
+                                                    rc::gen::inRange(-30, 31), rc::gen::arbitrary<bool>()),
+                                     [](const std::tuple<int, int, bool>& t) {
+                                       char buffer[64];
+                                       std::snprintf(buffer, sizeof buffer, "%s0.%dE%d",
+                                                     std::get<2>(t) ? "-" : "", std::get<0>(t),
+                                                     std::get<1>(t));
+                                       return std::strtod(buffer, nullptr);
+                                     }));
 }
 
 // A word of exactly `length` characters from [A-Za-z0-9_], no blanks (colours, nicknames).

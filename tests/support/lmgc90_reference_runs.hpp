@@ -20,7 +20,8 @@ inline std::map<std::string, std::string> script_parameters(const std::filesyste
   if (line_start == std::string::npos) return parameters;
   const std::string line = run_md.substr(line_start, run_md.find('\n', line_start) - line_start);
   const std::regex assignment("`(\\w+) = ([^`]+)`");
-  for (auto it = std::sregex_iterator(line.begin(), line.end(), assignment); it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(line.begin(), line.end(), assignment); it != std::sregex_iterator();
+       ++it) {
     std::string value = (*it)[2];
     value.erase(std::remove(value.begin(), value.end(), '\''), value.end());
     while (!value.empty() && value.back() == ' ') value.pop_back();
@@ -54,10 +55,14 @@ inline ExampleRun run_example(const std::filesystem::path& example, long steps) 
   fs::remove(result.case_dir / "DATBOX" / "COMMAND.DAT");
   result.steps = p.count("nb_steps") ? std::min(steps, std::stol(p.at("nb_steps"))) : steps;
   std::string args = "'" + result.case_dir.string() + "' --quiet --steps " + std::to_string(result.steps);
-  const std::pair<const char*, const char*> flags[] = {
-      {"dt", "--dt"},         {"theta", "--theta"},   {"tol", "--tol"},
-      {"relax", "--relax"},   {"gs_it1", "--gs-it1"}, {"gs_it2", "--gs-it2"},
-      {"freq_write", "--write-every"}, {"lx", "--xperiod"}};
+  const std::pair<const char*, const char*> flags[] = {{"dt", "--dt"},
+                                                       {"theta", "--theta"},
+                                                       {"tol", "--tol"},
+                                                       {"relax", "--relax"},
+                                                       {"gs_it1", "--gs-it1"},
+                                                       {"gs_it2", "--gs-it2"},
+                                                       {"freq_write", "--write-every"},
+                                                       {"lx", "--xperiod"}};
   for (const auto& [name, flag] : flags)
     if (p.count(name)) args += std::string(" ") + flag + " " + p.at(name);
   if (p.count("norm")) args += " --norm '" + p.at("norm") + "'";
@@ -72,7 +77,8 @@ inline ExampleRun run_example(const std::filesystem::path& example, long steps) 
 inline std::vector<std::filesystem::path> rigid_2d_examples() {
   std::vector<std::filesystem::path> cases;
   for (const auto& c : example_cases())
-    if (c.parent_path().filename() == "RIGID_2D" && std::filesystem::exists(c / "reference_lmgc90" / "RUN.md"))
+    if (c.parent_path().filename() == "RIGID_2D" &&
+        std::filesystem::exists(c / "reference_lmgc90" / "RUN.md"))
       cases.push_back(c);
   return cases;
 }

@@ -16,15 +16,19 @@ inline std::filesystem::path shared_dir() {
   return std::filesystem::path(LMGC_SOURCE_DIR).parent_path() / "shared";
 }
 
-inline std::filesystem::path examples_dir() { return shared_dir() / "lmgc90-examples"; }
+inline std::filesystem::path examples_dir() {
+  return shared_dir() / "lmgc90-examples";
+}
 
-inline bool shared_available() { return std::filesystem::is_directory(examples_dir()); }
+inline bool shared_available() {
+  return std::filesystem::is_directory(examples_dir());
+}
 
-#define LMGC_REQUIRE_SHARED()                                                                       \
-  do {                                                                                              \
-    if (!::lmgc::test::shared_available())                                                          \
-      GTEST_SKIP() << "LMGC90 example set not found at " << ::lmgc::test::examples_dir()            \
-                   << " (set LMGC_SHARED_DIR or place shared/ beside the project)";                 \
+#define LMGC_REQUIRE_SHARED()                                                            \
+  do {                                                                                   \
+    if (!::lmgc::test::shared_available())                                               \
+      GTEST_SKIP() << "LMGC90 example set not found at " << ::lmgc::test::examples_dir() \
+                   << " (set LMGC_SHARED_DIR or place shared/ beside the project)";      \
   } while (0)
 
 // Every example case folder (the parent of a DATBOX/), sorted.
@@ -32,7 +36,8 @@ inline std::vector<std::filesystem::path> example_cases() {
   std::vector<std::filesystem::path> cases;
   if (!shared_available()) return cases;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(examples_dir()))
-    if (entry.is_directory() && entry.path().filename() == "DATBOX") cases.push_back(entry.path().parent_path());
+    if (entry.is_directory() && entry.path().filename() == "DATBOX")
+      cases.push_back(entry.path().parent_path());
   std::sort(cases.begin(), cases.end());
   return cases;
 }

@@ -42,7 +42,8 @@ TEST(Rigid2DEcho, BodiesOutEqualsLmgc90ForEvery2DExample) {
     if (!std::filesystem::exists(reference)) continue;
     grammar::DiagnosticSink sink;
     const auto input = dir / "DATBOX" / "BODIES.DAT";
-    grammar::BodiesFile file = grammar::parse_bodies(grammar::SourceText(input.string(), test::read_file(input)), sink);
+    grammar::BodiesFile file =
+        grammar::parse_bodies(grammar::SourceText(input.string(), test::read_file(input)), sink);
     if (grammar::bodies_dimension(file) != 2) continue;
     SCOPED_TRACE(test::case_name(dir));
     for (auto& body : file.bodies) normalise_rigid_body_2d(body);

@@ -45,7 +45,8 @@ LastStepStatistics statistics(const fs::path& outbox, const solver::Scene2D& sce
   // LMGC90's large reference files are stored gzip-compressed.
   const fs::path vloc_path =
       fs::exists(outbox / "Vloc_Rloc.LAST") ? outbox / "Vloc_Rloc.LAST" : outbox / "Vloc_Rloc.LAST.gz";
-  const auto vloc = grammar::parse_vloc_rloc(grammar::SourceText("Vloc_Rloc.LAST", read_maybe_gzip(vloc_path)), sink);
+  const auto vloc =
+      grammar::parse_vloc_rloc(grammar::SourceText("Vloc_Rloc.LAST", read_maybe_gzip(vloc_path)), sink);
   for (const auto& interaction : vloc.interactions) {
     ++s.interactions;
     if (!interaction.vectors.empty() && interaction.vectors[0].values.size() >= 2 &&
@@ -58,7 +59,8 @@ LastStepStatistics statistics(const fs::path& outbox, const solver::Scene2D& sce
 
 TEST(Rigid2DStatistics, GranularExamplesAgreeWithLmgc90Within5PercentAtTheirLastStep) {
   LMGC_REQUIRE_SHARED();
-  for (const char* name : {"1024DK_BoxJC", "200DK_BoxJC_MD", "500PL_PerioBoxJC", "siloDK_hoperJC", "BridgePL_GroundJC"}) {
+  for (const char* name :
+       {"1024DK_BoxJC", "200DK_BoxJC_MD", "500PL_PerioBoxJC", "siloDK_hoperJC", "BridgePL_GroundJC"}) {
     SCOPED_TRACE(name);
     const fs::path example = examples_dir() / "RIGID_2D" / name;
     const ExampleRun r = run_example(example, reference_steps_run(example));
@@ -72,9 +74,9 @@ TEST(Rigid2DStatistics, GranularExamplesAgreeWithLmgc90Within5PercentAtTheirLast
     const LastStepStatistics ours = statistics(r.case_dir / "OUTBOX", scene);
     const LastStepStatistics lmgc = statistics(example / "reference_lmgc90" / "OUTBOX", scene);
     const double bodies = static_cast<double>(scene.bodies.size());
-    std::printf("%-20s interactions %6.0f / %6.0f   coordination %.3f / %.3f   kinetic energy %.4e / %.4e\n", name,
-                ours.interactions, lmgc.interactions, 2 * ours.active / bodies, 2 * lmgc.active / bodies,
-                ours.kinetic_energy, lmgc.kinetic_energy);
+    std::printf("%-20s interactions %6.0f / %6.0f   coordination %.3f / %.3f   kinetic energy %.4e / %.4e\n",
+                name, ours.interactions, lmgc.interactions, 2 * ours.active / bodies,
+                2 * lmgc.active / bodies, ours.kinetic_energy, lmgc.kinetic_energy);
     EXPECT_NEAR(ours.interactions, lmgc.interactions, 0.05 * lmgc.interactions);
     EXPECT_NEAR(ours.active, lmgc.active, 0.05 * lmgc.active);
     double ours_mean = ours.kinetic_energy, lmgc_mean = lmgc.kinetic_energy;
@@ -90,7 +92,8 @@ TEST(Rigid2DStatistics, GranularExamplesAgreeWithLmgc90Within5PercentAtTheirLast
     }
     ours_mean /= snapshots;
     lmgc_mean /= snapshots;
-    std::printf("%-20s mean kinetic energy over %d snapshots %.4e / %.4e\n", name, snapshots, ours_mean, lmgc_mean);
+    std::printf("%-20s mean kinetic energy over %d snapshots %.4e / %.4e\n", name, snapshots, ours_mean,
+                lmgc_mean);
     EXPECT_NEAR(ours_mean, lmgc_mean, std::max(0.05 * lmgc_mean, 1e-9));
   }
 }

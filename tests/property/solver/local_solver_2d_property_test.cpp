@@ -95,8 +95,7 @@ RC_GTEST_PROP(Restitution2D, BinaryImpactNeverCreatesEnergy, ()) {
 RC_GTEST_PROP(Nlgs2D, ConvergedStepSatisfiesEveryContactLaw, ()) {
   SceneBuilder2D b;
   const int n = *rc::gen::inRange(2, 12);
-  for (int i = 0; i < n; ++i)
-    b.add_disk(in_range(-0.3, 0.3), 0.1 + 0.19 * i, in_range(0.06, 0.1), 1000.0);
+  for (int i = 0; i < n; ++i) b.add_disk(in_range(-0.3, 0.3), 0.1 + 0.19 * i, in_range(0.06, 0.1), 1000.0);
   b.add_fixed_joncx(0.0, -0.05, 0.0, 1.0, 0.05);
   b.add_law("iqsc0", IqsClb{in_range(0.0, 1.0)});
   b.see("DISKx", "BLEUx", "iqsc0", "DISKx", "BLEUx", 0.05);

@@ -48,12 +48,14 @@ TEST(Rigid2DAnalytic, BounceHeightsFollowRestitutionSquared) {
   for (int i = 0; i < 60000 && apexes.size() < 3; ++i) {
     step_2d(scene, state, converged_options());
     const double vy = scene.bodies.velocity[0].y();
-    if (previous_vy > 0.0 && vy <= 0.0) apexes.push_back(scene.bodies.reference[0].y() + scene.bodies.displacement[0].y() - r);
+    if (previous_vy > 0.0 && vy <= 0.0)
+      apexes.push_back(scene.bodies.reference[0].y() + scene.bodies.displacement[0].y() - r);
     previous_vy = vy;
   }
   ASSERT_EQ(apexes.size(), 3u);
   for (std::size_t n = 0; n < apexes.size(); ++n)
-    EXPECT_NEAR(apexes[n], std::pow(e, 2.0 * static_cast<double>(n + 1)) * h0, 0.01 * h0) << "bounce " << n + 1;
+    EXPECT_NEAR(apexes[n], std::pow(e, 2.0 * static_cast<double>(n + 1)) * h0, 0.01 * h0)
+        << "bounce " << n + 1;
 }
 
 // A square block on a plane inclined by α: it slides with a = g (sin α − μ cos α) when

@@ -20,7 +20,9 @@ fs::path default_case_copy(const std::string& name) {
   return dir;
 }
 
-void write(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+void write(const fs::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
 
 TEST(LmgcCheck, DefaultCaseHasNoErrorAndExitsZero) {
   const fs::path dir = default_case_copy("check_ok");
@@ -37,8 +39,10 @@ TEST(LmgcCheck, BrokenNumberGivesCompilerStyleDiagnosticAndExitOne) {
   const ToolRun run = run_tool("lmgc-check", dir.string() + " --no-color");
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_NE(run.output.find("DATBOX/BODIES.DAT:9:35: error[L1002]:"), std::string::npos) << run.output;
-  EXPECT_NE(run.output.find("    9 |  DISKx      1  color  BLEUx  byrd= 0.10OOOOOD+00"), std::string::npos) << run.output;
-  EXPECT_NE(run.output.find("      |                                   ^~~~~~~~~~~~~~"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("    9 |  DISKx      1  color  BLEUx  byrd= 0.10OOOOOD+00"), std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("      |                                   ^~~~~~~~~~~~~~"), std::string::npos)
+      << run.output;
   EXPECT_NE(run.output.find("1 error, 0 warnings"), std::string::npos) << run.output;
 }
 
@@ -53,7 +57,8 @@ TEST(LmgcCheck, JsonModePrintsOnlyAJsonArrayWithTheDocumentedFields) {
   ASSERT_TRUE(json.is_array());
   ASSERT_FALSE(json.empty());
   const auto& d = json[0];
-  for (const char* field : {"file", "line", "column", "end_column", "severity", "code", "message", "related", "hint"})
+  for (const char* field :
+       {"file", "line", "column", "end_column", "severity", "code", "message", "related", "hint"})
     EXPECT_TRUE(d.contains(field)) << field;
   EXPECT_EQ(d["code"], "L1001");
   EXPECT_EQ(d["line"], 9);
@@ -79,14 +84,16 @@ TEST(LmgcCheck, FolderWithoutDatboxIsAUsageErrorExitTwo) {
 TEST(LmgcCheck, EchoWritesOutboxAndNeverTouchesDatbox) {
   const fs::path dir = default_case_copy("check_echo");
   std::map<std::string, std::string> before;
-  for (const auto& e : fs::directory_iterator(dir / "DATBOX")) before[e.path().filename().string()] = read_file(e.path());
+  for (const auto& e : fs::directory_iterator(dir / "DATBOX"))
+    before[e.path().filename().string()] = read_file(e.path());
   const ToolRun run = run_tool("lmgc-check", dir.string() + " --echo");
   EXPECT_EQ(run.exit_code, 0) << run.output;
   for (const char* name : {"BODIES.OUT", "BULK_BEHAV.OUT", "TACT_BEHAV.OUT", "DRV_DOF.OUT"})
     EXPECT_TRUE(fs::is_regular_file(dir / "OUTBOX" / name)) << name;
   EXPECT_NE(read_file(dir / "OUTBOX" / "BODIES.OUT").find(" RBDY2        2\n"), std::string::npos);
   std::map<std::string, std::string> after;
-  for (const auto& e : fs::directory_iterator(dir / "DATBOX")) after[e.path().filename().string()] = read_file(e.path());
+  for (const auto& e : fs::directory_iterator(dir / "DATBOX"))
+    after[e.path().filename().string()] = read_file(e.path());
   EXPECT_EQ(before, after);
   for (const auto& e : fs::directory_iterator(dir / "OUTBOX"))
     EXPECT_NE(e.path().filename().string().front(), '.') << "temporary file left: " << e.path();

@@ -23,7 +23,8 @@ fs::path default_case_copy(const std::string& name) {
 
 std::map<std::string, std::string> folder_contents(const fs::path& dir) {
   std::map<std::string, std::string> contents;
-  for (const auto& e : fs::directory_iterator(dir)) contents[e.path().filename().string()] = read_file(e.path());
+  for (const auto& e : fs::directory_iterator(dir))
+    contents[e.path().filename().string()] = read_file(e.path());
   return contents;
 }
 
@@ -40,8 +41,8 @@ TEST(LmgcSolve, DefaultCaseRunsItsCommandDatAndLeavesDatboxUntouched) {
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_EQ(folder_contents(dir / "DATBOX"), before);
   EXPECT_EQ(last_step(dir), 3000);  // REPETE 2999 FOIS: 3000 passes of the step loop
-  for (const char* name : {"BODIES.OUT", "TACT_BEHAV.OUT", "DOF.OUT.30", "Vloc_Rloc.OUT.30", "Vloc_Rloc.LAST",
-                           "run_report.csv"})
+  for (const char* name :
+       {"BODIES.OUT", "TACT_BEHAV.OUT", "DOF.OUT.30", "Vloc_Rloc.OUT.30", "Vloc_Rloc.LAST", "run_report.csv"})
     EXPECT_TRUE(fs::is_regular_file(dir / "OUTBOX" / name)) << name;
   EXPECT_FALSE(fs::exists(dir / "OUTBOX" / "DOF.OUT.31"));
   for (const auto& e : fs::directory_iterator(dir / "OUTBOX"))
@@ -76,8 +77,10 @@ TEST(LmgcSolve, StrictExitsThreeWhenAStepHitsTheIterationCap) {
   LMGC_REQUIRE_SHARED();
   // 1024 disks with one sweep per step cannot reach 1e-12: every step with contacts hits the cap.
   const fs::path dir = scratch_dir("solve_strict");
-  fs::copy(examples_dir() / "RIGID_2D" / "1024DK_BoxJC" / "DATBOX", dir / "DATBOX", fs::copy_options::recursive);
-  const std::string args = "'" + dir.string() + "' --quiet --steps 60 --gs-it1 1 --gs-it2 1 --tol 1e-12 --write-every 0";
+  fs::copy(examples_dir() / "RIGID_2D" / "1024DK_BoxJC" / "DATBOX", dir / "DATBOX",
+           fs::copy_options::recursive);
+  const std::string args =
+      "'" + dir.string() + "' --quiet --steps 60 --gs-it1 1 --gs-it2 1 --tol 1e-12 --write-every 0";
   EXPECT_EQ(run_tool("lmgc-solve", args + " --strict").exit_code, 3);
   EXPECT_EQ(run_tool("lmgc-solve", args).exit_code, 0);
 }

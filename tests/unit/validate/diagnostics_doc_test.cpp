@@ -32,7 +32,8 @@ TEST(DiagnosticsDoc, ListsExactlyTheCatalogueWithItsSeverities) {
 TEST(DiagnosticCatalogue, IsSortedWithUniqueCodesAndCompleteTexts) {
   const auto catalogue = diagnostic_catalogue();
   for (std::size_t i = 0; i < catalogue.size(); ++i) {
-    EXPECT_TRUE(std::regex_match(std::string(catalogue[i].code), std::regex(R"(L\d{4})"))) << catalogue[i].code;
+    EXPECT_TRUE(std::regex_match(std::string(catalogue[i].code), std::regex(R"(L\d{4})")))
+        << catalogue[i].code;
     EXPECT_FALSE(catalogue[i].summary.empty());
     EXPECT_FALSE(catalogue[i].explanation.empty());
     if (i > 0) {

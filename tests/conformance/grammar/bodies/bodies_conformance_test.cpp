@@ -14,8 +14,8 @@ std::string errors_of(const DiagnosticSink& sink) {
   std::string text;
   for (const auto& d : sink.items())
     if (d.severity == Severity::error)
-      text += d.where.file + ":" + std::to_string(d.where.span.line) + ":" + std::to_string(d.where.span.column) +
-              ": " + d.code + " " + d.message + "\n";
+      text += d.where.file + ":" + std::to_string(d.where.span.line) + ":" +
+              std::to_string(d.where.span.column) + ": " + d.code + " " + d.message + "\n";
   return text;
 }
 
@@ -55,15 +55,19 @@ const std::map<std::string, std::string> kEchoDifferences = {
     {"RIGID_2D/500PL_PerioBoxJC",
      "POLYG vertices are echoed relative to the computed centroid and the node at the centre of inertia"},
     {"RIGID_2D/BridgePL_GroundJC", "POLYG vertices and centres of inertia are recomputed by LMGC90"},
-    {"RIGID_2D/clusterDKPL_GroundJC", "avrd/gyrd given as 0 are computed, cluster shifts recentred by LMGC90"},
+    {"RIGID_2D/clusterDKPL_GroundJC",
+     "avrd/gyrd given as 0 are computed, cluster shifts recentred by LMGC90"},
     {"RIGID_2D/BouncingBallsDK", "avrd and gyrd given as 0 are computed from the disks by LMGC90"},
     {"mecaMAILx_2D/mur", "the JONCx body's avrd and gyrd given as 0 are computed by LMGC90"},
     {"mecaMAILx_RIGID_2D/4cubes", "avrd and gyrd given as 0 are computed by LMGC90"},
-    {"RIGID_3D/100_PR_PerioBox", "RBDY3: avrd, principal inertia and POLYR vertices in the inertia frame are computed"},
+    {"RIGID_3D/100_PR_PerioBox",
+     "RBDY3: avrd, principal inertia and POLYR vertices in the inertia frame are computed"},
     {"RIGID_3D/1_ClusterSP_2_PL", "RBDY3: avrd, principal inertia and cluster offsets are computed"},
     {"RIGID_3D/945_SP_Box_PL", "RBDY3: avrd and principal inertia are computed"},
-    {"RIGID_3D/Beam_ClusterPR", "RBDY3: avrd, principal inertia and POLYR vertices in the inertia frame are computed"},
-    {"RIGID_3D/Bridge_PR", "RBDY3: avrd, principal inertia and POLYR vertices in the inertia frame are computed"},
+    {"RIGID_3D/Beam_ClusterPR",
+     "RBDY3: avrd, principal inertia and POLYR vertices in the inertia frame are computed"},
+    {"RIGID_3D/Bridge_PR",
+     "RBDY3: avrd, principal inertia and POLYR vertices in the inertia frame are computed"},
 };
 
 TEST(BodiesConformance, EchoEqualsLmgc90OutputExceptDocumentedComputedValues) {
@@ -76,7 +80,8 @@ TEST(BodiesConformance, EchoEqualsLmgc90OutputExceptDocumentedComputedValues) {
     SCOPED_TRACE(name);
     const auto input = case_dir / "DATBOX" / "BODIES.DAT";
     DiagnosticSink sink;
-    const std::string echo = write_bodies(parse_bodies(SourceText(input.string(), test::read_file(input)), sink));
+    const std::string echo =
+        write_bodies(parse_bodies(SourceText(input.string(), test::read_file(input)), sink));
     const std::string expected = test::read_file(reference);
     const auto known = kEchoDifferences.find(name);
     if (known != kEchoDifferences.end()) {

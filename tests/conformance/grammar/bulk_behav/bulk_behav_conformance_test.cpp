@@ -52,7 +52,8 @@ TEST(BulkBehavConformance, EchoEqualsLmgc90ReferenceByteForByte) {
     SCOPED_TRACE(name);
     if (kKnownEchoDifferences.count(name)) continue;
     DiagnosticSink sink;
-    const std::string echo = write_bulk_behav(parse_bulk_behav(SourceText(input.string(), test::read_file(input)), sink));
+    const std::string echo =
+        write_bulk_behav(parse_bulk_behav(SourceText(input.string(), test::read_file(input)), sink));
     const std::string expected = test::read_file(reference);
     ++compared;
     EXPECT_TRUE(echo == expected) << first_difference(echo, expected);

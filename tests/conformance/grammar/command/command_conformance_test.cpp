@@ -38,7 +38,8 @@ TEST(CommandConformance, RunParametersOf1024DiskBox) {
   LMGC_REQUIRE_SHARED();
   const auto path = test::examples_dir() / "RIGID_2D/1024DK_BoxJC/DATBOX/COMMAND.DAT";
   DiagnosticSink sink;
-  const CommandRunParameters p = command_run_parameters(parse_command(SourceText(path.string(), test::read_file(path)), sink), sink);
+  const CommandRunParameters p =
+      command_run_parameters(parse_command(SourceText(path.string(), test::read_file(path)), sink), sink);
   EXPECT_FALSE(sink.has_errors());
   EXPECT_DOUBLE_EQ(p.dt, 2e-4);
   EXPECT_DOUBLE_EQ(p.theta, 0.5);
@@ -57,7 +58,8 @@ TEST(CommandConformance, PeriodOfThePeriodicPolygonBox) {
   LMGC_REQUIRE_SHARED();
   const auto path = test::examples_dir() / "RIGID_2D/500PL_PerioBoxJC/DATBOX/COMMAND.DAT";
   DiagnosticSink sink;
-  const CommandRunParameters p = command_run_parameters(parse_command(SourceText(path.string(), test::read_file(path)), sink), sink);
+  const CommandRunParameters p =
+      command_run_parameters(parse_command(SourceText(path.string(), test::read_file(path)), sink), sink);
   EXPECT_FALSE(sink.has_errors());
   EXPECT_DOUBLE_EQ(p.x_period, 1.1);
 }

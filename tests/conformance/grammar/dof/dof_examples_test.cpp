@@ -21,8 +21,8 @@ std::string describe(const DiagnosticSink& sink) {
   std::size_t shown = 0;
   for (const auto& d : sink.items()) {
     if (++shown > 10) break;
-    s << d.code << " " << d.where.file << ":" << d.where.span.line << ":" << d.where.span.column << " " << d.message
-      << "\n";
+    s << d.code << " " << d.where.file << ":" << d.where.span.line << ":" << d.where.span.column << " "
+      << d.message << "\n";
   }
   return s.str();
 }
@@ -50,7 +50,8 @@ TEST(DofExamples, WriteOfParseIsIdentityForEveryLmgc90DofFile) {
     if (!std::filesystem::is_directory(outbox)) continue;
     std::vector<std::filesystem::path> files;
     for (const auto& entry : std::filesystem::directory_iterator(outbox))
-      if (entry.is_regular_file() && is_dof_state_file(entry.path().filename().string())) files.push_back(entry.path());
+      if (entry.is_regular_file() && is_dof_state_file(entry.path().filename().string()))
+        files.push_back(entry.path());
     std::sort(files.begin(), files.end());
     for (const auto& path : files) {
       SCOPED_TRACE(path.string());

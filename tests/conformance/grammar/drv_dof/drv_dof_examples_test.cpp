@@ -18,8 +18,8 @@ namespace {
 std::string describe(const DiagnosticSink& sink) {
   std::ostringstream s;
   for (const auto& d : sink.items())
-    s << d.code << " " << d.where.file << ":" << d.where.span.line << ":" << d.where.span.column << " " << d.message
-      << "\n";
+    s << d.code << " " << d.where.file << ":" << d.where.span.line << ":" << d.where.span.column << " "
+      << d.message << "\n";
   return s.str();
 }
 

@@ -27,7 +27,8 @@ TEST(PostproConformance, EveryExampleParsesAndRoundTrips) {
     const PostproFile g = parse_postpro(SourceText(path.string(), test::read_file(path)), unknown);
     EXPECT_FALSE(unknown.has_errors());
     ASSERT_EQ(g.commands.size(), f.commands.size());
-    for (std::size_t k = 0; k < f.commands.size(); ++k) EXPECT_EQ(g.commands[k].name.value, f.commands[k].name.value);
+    for (std::size_t k = 0; k < f.commands.size(); ++k)
+      EXPECT_EQ(g.commands[k].name.value, f.commands[k].name.value);
   }
 }
 

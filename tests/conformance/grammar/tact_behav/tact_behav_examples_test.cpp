@@ -17,8 +17,8 @@ namespace {
 std::string describe(const DiagnosticSink& sink) {
   std::ostringstream s;
   for (const auto& d : sink.items())
-    s << d.code << " " << d.where.file << ":" << d.where.span.line << ":" << d.where.span.column << " " << d.message
-      << "\n";
+    s << d.code << " " << d.where.file << ":" << d.where.span.line << ":" << d.where.span.column << " "
+      << d.message << "\n";
   return s.str();
 }
 
@@ -76,7 +76,8 @@ TEST(TactBehavExamples, LostLawsAreReported) {
   EXPECT_EQ(file.laws.back().nickname.value, "wet01");
   bool swallowed = false, skipped = false;
   for (const auto& d : sink.items()) {
-    if (d.code == "L1019" && d.message.find("'$behav' line is read as a value line") != std::string::npos) swallowed = true;
+    if (d.code == "L1019" && d.message.find("'$behav' line is read as a value line") != std::string::npos)
+      swallowed = true;
     if (d.code == "L1019" && d.message.find("law line of 'mohr1'") != std::string::npos) skipped = true;
   }
   EXPECT_TRUE(swallowed) << describe(sink);

@@ -37,8 +37,8 @@ TEST(VlocRlocConformance, LmgcOutputsAreReproducedByteForByte) {
   }
   EXPECT_GE(compared, 400);
   // The modules the examples exercise (the others are checked against the source in unit tests).
-  EXPECT_EQ(modules, (std::set<std::string>{"CLALp", "CLJCx", "CSASx", "DKDKx", "DKJCx", "DKPLx", "PLALp", "PLJCx",
-                                            "PLPLx", "PRPLx", "PRPRx", "SPPLx", "SPSPx"}));
+  EXPECT_EQ(modules, (std::set<std::string>{"CLALp", "CLJCx", "CSASx", "DKDKx", "DKJCx", "DKPLx", "PLALp",
+                                            "PLJCx", "PLPLx", "PRPLx", "PRPRx", "SPPLx", "SPSPx"}));
 }
 
 TEST(VlocRlocConformance, EveryInitialFileParses) {

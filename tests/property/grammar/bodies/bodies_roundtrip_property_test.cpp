@@ -14,13 +14,17 @@ namespace {
 using test::gen_d14_real;
 using test::gen_word;
 
-Real real() { return Real{*gen_d14_real()}; }
+Real real() {
+  return Real{*gen_d14_real()};
+}
 std::vector<Real> reals(int n) {
   std::vector<Real> v;
   for (int i = 0; i < n; ++i) v.push_back(real());
   return v;
 }
-Integer rank(int max = 99999) { return Integer{*rc::gen::inRange(1, max + 1)}; }
+Integer rank(int max = 99999) {
+  return Integer{*rc::gen::inRange(1, max + 1)};
+}
 
 Node node(int dofs) {
   Node n;
@@ -37,13 +41,18 @@ Contactor contactor_of(const ContactorKind& kind) {
   auto vertex = [&] { return std::array<Real, 3>{real(), real(), dim == 3 ? real() : Real{0.0}}; };
   auto face = [&] { return std::array<Integer, 3>{rank(999), rank(999), rank(999)}; };
   switch (kind.layout) {
-    case ContactorLayout::values: c.values = reals(kind.value_count); break;
-    case ContactorLayout::values_offset: c.values = reals(kind.value_count + kind.offset_count); break;
+    case ContactorLayout::values:
+      c.values = reals(kind.value_count);
+      break;
+    case ContactorLayout::values_offset:
+      c.values = reals(kind.value_count + kind.offset_count);
+      break;
     case ContactorLayout::values_frame:
       c.values = reals(kind.value_count);
       if (*rc::gen::arbitrary<bool>()) {
         LocalFrame frame;
-        for (auto* row : {&frame.alpha, &frame.beta, &frame.gamma, &frame.shift}) *row = {real(), real(), real()};
+        for (auto* row : {&frame.alpha, &frame.beta, &frame.gamma, &frame.shift})
+          *row = {real(), real(), real()};
         if (!(frame == LocalFrame{})) c.frame.push_back(frame);
       }
       break;
@@ -75,7 +84,8 @@ Contactor contactor_of(const ContactorKind& kind) {
       for (int i = 0, n = *rc::gen::inRange(0, 3); i < n; ++i) c.continuations.push_back({{rank(), rank()}});
       break;
     case ContactorLayout::node_patch: {
-      const int count = kind.patch_nodes ? kind.patch_nodes : *rc::gen::elementOf(std::vector<int>{3, 4, 6, 8});
+      const int count =
+          kind.patch_nodes ? kind.patch_nodes : *rc::gen::elementOf(std::vector<int>{3, 4, 6, 8});
       for (int i = 0; i < count; ++i) c.nodes.push_back(rank());
       if (kind.patch_nodes == 0)
         for (int k = 0, n = *rc::gen::inRange(0, 3); k < n; ++k) {
@@ -103,8 +113,10 @@ Body rigid_body(BodyType type) {
   bulk.type = Word{"PLAIN"};
   bulk.behav = Word{*gen_word()};
   bulk.avrd = real();
-  if (type == BodyType::rbdy2) bulk.gyrd = real();
-  else bulk.principal_inertia = {real(), real(), real()};
+  if (type == BodyType::rbdy2)
+    bulk.gyrd = real();
+  else
+    bulk.principal_inertia = {real(), real(), real()};
   b.rigid_bulk = bulk;
   b.nodes.push_back(node(type == BodyType::rbdy2 ? 3 : 6));
   const auto kinds = kinds_for(type == BodyType::rbdy2 ? kOnRbdy2 : kOnRbdy3);
@@ -117,12 +129,14 @@ Body mailx_body(int dim) {
   Body b;
   b.type = BodyType::mailx;
   for (int i = 0, n = *rc::gen::inRange(1, 4); i < n; ++i) {
-    const ElementKind& kind = **rc::gen::elementOf(std::vector<const ElementKind*>{
-        find_element_kind("Q4xxx"), find_element_kind("T3xxx"), find_element_kind("H20xx"), find_element_kind("TE10x")});
+    const ElementKind& kind = **rc::gen::elementOf(
+        std::vector<const ElementKind*>{find_element_kind("Q4xxx"), find_element_kind("T3xxx"),
+                                        find_element_kind("H20xx"), find_element_kind("TE10x")});
     Element e;
     e.type = Word{std::string(kind.keyword)};
     for (int k = 0; k < kind.node_count; ++k) e.nodes.push_back(rank(999999));
-    for (int m = 0, nm = *rc::gen::inRange(1, 3); m < nm; ++m) e.models.push_back({Word{*gen_word()}, Word{*gen_word()}});
+    for (int m = 0, nm = *rc::gen::inRange(1, 3); m < nm; ++m)
+      e.models.push_back({Word{*gen_word()}, Word{*gen_word()}});
     b.elements.push_back(e);
   }
   for (int i = 0, n = *rc::gen::inRange(1, 5); i < n; ++i) b.nodes.push_back(node(dim));

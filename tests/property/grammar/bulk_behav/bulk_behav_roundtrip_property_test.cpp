@@ -12,7 +12,9 @@
 namespace lmgc::grammar {
 namespace {
 
-Real real() { return Real{*test::gen_d14_real()}; }
+Real real() {
+  return Real{*test::gen_d14_real()};
+}
 
 // Values for one line of `layout` (`count` values: 2 or 3 for DISCRETE, by dimension).
 BulkValues values(const BulkValueLayout& layout, int count) {
@@ -26,7 +28,8 @@ BulkValues values(const BulkValueLayout& layout, int count) {
 }
 
 void add_lines(BulkBlock& block, std::span<const BulkValueLayout> layouts, int dimension) {
-  for (const BulkValueLayout& layout : layouts) block.lines.push_back(values(layout, layout.by_dimension ? dimension : layout.count));
+  for (const BulkValueLayout& layout : layouts)
+    block.lines.push_back(values(layout, layout.by_dimension ? dimension : layout.count));
 }
 
 // A supported option case, chosen at random (unsupported ones are errors in LMGC90).
@@ -48,7 +51,8 @@ BulkBlock generated_block(BulkBlockKind kind, const std::string& anisotropy, int
       case BulkStepKind::option: {
         std::vector<const BulkOptionCase*> cases;
         for (const BulkOptionCase& c : step.cases)
-          if (c.supported && !(step.label == "ani_:" && kind == BulkBlockKind::elas && c.value != anisotropy)) cases.push_back(&c);
+          if (c.supported && !(step.label == "ani_:" && kind == BulkBlockKind::elas && c.value != anisotropy))
+            cases.push_back(&c);
         const BulkOptionCase& chosen = cases.empty() ? pick(step.cases) : **rc::gen::elementOf(cases);
         block.options.push_back(Word{std::string(chosen.value)});
         add_lines(block, chosen.lines, dimension);
@@ -92,8 +96,9 @@ BulkBehavFile generated() {
     // CPLT (ELAS_DILA, THERMO_ELAS*) is not defined for anisotropic elasticity.
     bool has_cplt = false;
     for (BulkBlockKind b : kind.blocks) has_cplt |= b == BulkBlockKind::cplt;
-    const std::string anisotropy = has_cplt ? *rc::gen::elementOf(std::vector<std::string>{"isotropic", "orthotropic"})
-                                            : *rc::gen::elementOf(std::vector<std::string>{"isotropic", "orthotropic", "anisotropic"});
+    const std::string anisotropy =
+        has_cplt ? *rc::gen::elementOf(std::vector<std::string>{"isotropic", "orthotropic"})
+                 : *rc::gen::elementOf(std::vector<std::string>{"isotropic", "orthotropic", "anisotropic"});
     for (BulkBlockKind b : kind.blocks) law.blocks.push_back(generated_block(b, anisotropy, dimension));
     f.laws.push_back(std::move(law));
   }
@@ -124,7 +129,8 @@ TEST(BulkBehavRoundTrip, EveryLawTypeOfTheCatalogueRoundTrips) {
       BulkLaw law;
       law.nickname = Word{"LAW01"};
       law.law_type = Word{std::string(kind.law_type)};
-      if (kind.first_line == BulkFirstLine::umas) law.density = real();
+      if (kind.first_line == BulkFirstLine::umas)
+        law.density = real();
       else
         for (int k = 0; k < kind.first_values.count; ++k) law.first_line_values.push_back(real());
       for (BulkBlockKind b : kind.blocks) law.blocks.push_back(generated_block(b, "isotropic", 3));
@@ -144,9 +150,15 @@ RC_GTEST_PROP(BulkBehavRobustness, ParserNeverCrashesOnDamagedText, ()) {
   for (int k = 0, n = *rc::gen::inRange(1, 8); k < n && !text.empty(); ++k) {
     const std::size_t at = *rc::gen::inRange<std::size_t>(0, text.size());
     switch (*rc::gen::inRange(0, 3)) {
-      case 0: text[at] = *rc::gen::elementOf(std::string("x0.-+D$! \n\t")); break;
-      case 1: text.erase(at, *rc::gen::inRange<std::size_t>(1, 40)); break;
-      default: text.insert(at, "\n"); break;
+      case 0:
+        text[at] = *rc::gen::elementOf(std::string("x0.-+D$! \n\t"));
+        break;
+      case 1:
+        text.erase(at, *rc::gen::inRange<std::size_t>(1, 40));
+        break;
+      default:
+        text.insert(at, "\n");
+        break;
     }
   }
   DiagnosticSink sink;

@@ -20,7 +20,8 @@ CommandLine line_of(CommandLineKind kind, std::string text) {
   CommandLine line;
   line.kind = kind;
   const std::size_t room = text.size() <= 30 ? 30 - text.size() : 0;
-  line.indent = static_cast<std::uint32_t>(*rc::gen::inRange<std::size_t>(0, std::min<std::size_t>(room, 4) + 1));
+  line.indent =
+      static_cast<std::uint32_t>(*rc::gen::inRange<std::size_t>(0, std::min<std::size_t>(room, 4) + 1));
   if (*rc::gen::arbitrary<bool>()) {
     line.trailer.assign(30 - line.indent - text.size(), ' ');
     line.trailer += ':';
@@ -38,7 +39,9 @@ CommandLine control(std::string text, std::string keyword, std::string parameter
   return line;
 }
 
-std::string d_text(double value) { return std::string(trim(fortran_d(value))); }
+std::string d_text(double value) {
+  return std::string(trim(fortran_d(value)));
+}
 
 CommandLine argument(CommandArgumentKind kind) {
   CommandValue value;
@@ -58,7 +61,8 @@ CommandLine argument(CommandArgumentKind kind) {
       break;
     }
     case CommandArgumentKind::word:
-      text = *rc::gen::elementOf(std::vector<std::string>{"3D", "2D PSTRAIN", "Stored_Delassus_Loops", "Exchange_Local_Global"});
+      text = *rc::gen::elementOf(
+          std::vector<std::string>{"3D", "2D PSTRAIN", "Stored_Delassus_Loops", "Exchange_Local_Global"});
       value.word = Word{text};
       break;
     case CommandArgumentKind::type_tol: {
@@ -91,7 +95,8 @@ void add_keyword(std::vector<CommandLine>& lines) {
   std::string text(k->keyword);
   std::string parameter;
   if (k->inline_part == CommandInline::step_or_dtps &&
-      (*rc::gen::arbitrary<bool>() || text.rfind("WRITE OUT ", 0) == 0 || text.rfind("BINARY WRITE OUT ", 0) == 0)) {
+      (*rc::gen::arbitrary<bool>() || text.rfind("WRITE OUT ", 0) == 0 ||
+       text.rfind("BINARY WRITE OUT ", 0) == 0)) {
     parameter = "STEP " + std::to_string(*rc::gen::inRange(1, 1000));
     if (text.size() + 1 + parameter.size() > 30) return;
     text += " " + parameter;
@@ -106,8 +111,12 @@ void add_keyword(std::vector<CommandLine>& lines) {
 void add_body(std::vector<CommandLine>& lines, int count) {
   for (int i = 0; i < count; ++i) {
     switch (*rc::gen::inRange(0, 8)) {
-      case 0: lines.push_back(line_of(CommandLineKind::comment, "#" + *test::gen_word(4))); break;
-      case 1: lines.push_back(line_of(CommandLineKind::message, "." + *test::gen_word(8))); break;
+      case 0:
+        lines.push_back(line_of(CommandLineKind::comment, "#" + *test::gen_word(4)));
+        break;
+      case 1:
+        lines.push_back(line_of(CommandLineKind::message, "." + *test::gen_word(8)));
+        break;
       case 2: {
         CommandLine blank;  // all blank: leading blanks only, or 30 blanks and a comment
         blank.indent = static_cast<std::uint32_t>(*rc::gen::element(0, 3, 30));
@@ -115,7 +124,8 @@ void add_body(std::vector<CommandLine>& lines, int count) {
         lines.push_back(blank);
         break;
       }
-      default: add_keyword(lines);
+      default:
+        add_keyword(lines);
     }
   }
 }
@@ -162,8 +172,8 @@ RC_GTEST_PROP(CommandRoundTrip, WriteOfParseIsIdentity, ()) {
 
 // Any text at all comes back unchanged (the echo keeps what CHIC ignores).
 RC_GTEST_PROP(CommandRoundTrip, WriteOfParseOfAnyTextIsIdentity, ()) {
-  const std::string text = *rc::gen::container<std::string>(
-      rc::gen::elementOf(std::string("AB #.:\r\n 0123FINDUPROGAMESTC")));
+  const std::string text =
+      *rc::gen::container<std::string>(rc::gen::elementOf(std::string("AB #.:\r\n 0123FINDUPROGAMESTC")));
   DiagnosticSink sink;
   RC_ASSERT(write_command(parse_command(SourceText("COMMAND.DAT", text), sink)) == text);
 }

@@ -49,10 +49,11 @@ DofBody gen_body() {
       const int dimension = *rc::gen::inRange(2, 4);
       const int count = *rc::gen::inRange(1, 6);
       for (int i = 0; i < count; ++i)
-        body.nodes.push_back(
-            gen_node(dimension == 3 ? "NO3xx" : "NO2xx", *rc::gen::inRange(1, 1000000), dimension, true, false));
+        body.nodes.push_back(gen_node(dimension == 3 ? "NO3xx" : "NO2xx", *rc::gen::inRange(1, 1000000),
+                                      dimension, true, false));
       if (*rc::gen::inRange(0, 3) == 0)
-        body.rigid_part = dimension == 3 ? gen_node("NO6xx", 0, 6, true, true) : gen_node("NO3xx", 0, 3, true, false);
+        body.rigid_part =
+            dimension == 3 ? gen_node("NO6xx", 0, 6, true, true) : gen_node("NO3xx", 0, 3, true, false);
       break;
     }
     default: {
@@ -60,7 +61,8 @@ DofBody gen_body() {
       body.number = *rc::gen::inRange(1, 10000000);
       body.model = std::string("THERM");
       const int count = *rc::gen::inRange(1, 6);
-      for (int i = 0; i < count; ++i) body.nodes.push_back(gen_node("NO1xx", *rc::gen::inRange(1, 1000000), 1, false, false));
+      for (int i = 0; i < count; ++i)
+        body.nodes.push_back(gen_node("NO1xx", *rc::gen::inRange(1, 1000000), 1, false, false));
       break;
     }
   }

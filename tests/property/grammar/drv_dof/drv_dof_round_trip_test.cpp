@@ -18,13 +18,14 @@ namespace {
 
 // Sorted distinct integers in [low, high], at least one.
 rc::Gen<std::vector<int>> gen_sorted_distinct(int low, int high, int most) {
-  return rc::gen::map(rc::gen::container<std::vector<int>>(rc::gen::inRange(low, high + 1)), [=](std::vector<int> drawn) {
-    std::set<int> values(drawn.begin(), drawn.end());
-    if (values.empty()) values.insert(low);
-    std::vector<int> out(values.begin(), values.end());
-    if (static_cast<int>(out.size()) > most) out.resize(static_cast<std::size_t>(most));
-    return out;
-  });
+  return rc::gen::map(rc::gen::container<std::vector<int>>(rc::gen::inRange(low, high + 1)),
+                      [=](std::vector<int> drawn) {
+                        std::set<int> values(drawn.begin(), drawn.end());
+                        if (values.empty()) values.insert(low);
+                        std::vector<int> out(values.begin(), values.end());
+                        if (static_cast<int>(out.size()) > most) out.resize(static_cast<std::size_t>(most));
+                        return out;
+                      });
 }
 
 DrivenDof gen_dof(const std::string& kind, int number) {
@@ -114,7 +115,8 @@ RC_GTEST_PROP(EvolutionRoundTrip, ParseOfWriteIsIdentity, ()) {
   times.insert(1.0);
   EvolutionFile file;
   for (double time : times) {
-    double value = *rc::gen::suchThat(rc::gen::arbitrary<double>(), [](double x) { return std::isfinite(x); });
+    double value =
+        *rc::gen::suchThat(rc::gen::arbitrary<double>(), [](double x) { return std::isfinite(x); });
     if (value == 0.0) value = 0.0;  // -0.0 is written as 0
     file.points.push_back(EvolutionPoint{time == 0.0 ? 0.0 : time, value});
   }

@@ -18,14 +18,16 @@ GpvFile generated() {
     body.number = Integer{b + 1};
     for (int e = 0, ne = *rc::gen::inRange(1, 4); e < ne; ++e) {
       GpvElement el;
-      el.type = Word{*rc::gen::elementOf(std::vector<std::string>{"T3xxx", "Q4xxx", "H8xxx", "TE4xx", "PRI15"})};
+      el.type =
+          Word{*rc::gen::elementOf(std::vector<std::string>{"T3xxx", "Q4xxx", "H8xxx", "TE4xx", "PRI15"})};
       el.number = Integer{e + 1};
       GpvModelBlock m;
       m.model = Word{*rc::gen::elementOf(std::vector<std::string>{"MECAx", "THERM", "THMCx", "POROx"})};
       for (int l = 0, nl = *rc::gen::inRange(1, 6); l < nl; ++l) {
         std::vector<Real> line;
         // 0 values: LMGC90 writes an empty record for an empty vector.
-        for (int v = 0, nv = *rc::gen::inRange(0, 10); v < nv; ++v) line.push_back(Real{*test::gen_d14_real()});
+        for (int v = 0, nv = *rc::gen::inRange(0, 10); v < nv; ++v)
+          line.push_back(Real{*test::gen_d14_real()});
         m.lines.push_back(line);
       }
       el.models.push_back(m);

@@ -23,12 +23,14 @@ ModelsFile generated() {
     Model m;
     m.nickname = Word{*test::gen_word()};
     m.kind = Word{*rc::gen::elementOf(std::vector<std::string>{"MECAx", "THERM", "POROx", "MULTI"})};
-    m.element = Word{*rc::gen::elementOf(std::vector<std::string>{"Q4xxx", "T3xxx", "H8xxx", "TE4xx", "Q4P0x"})};
+    m.element =
+        Word{*rc::gen::elementOf(std::vector<std::string>{"Q4xxx", "T3xxx", "H8xxx", "TE4xx", "Q4P0x"})};
     if (*rc::gen::inRange(0, 4) == 0) m.user_model = Word{*test::gen_word(*rc::gen::inRange(1, 51))};
     bool extvf_after_mdlty_line = false;
     for (int k = 0, no = *rc::gen::inRange(0, 6); k < no; ++k) {
       ModelOption o;
-      o.id = Word{*rc::gen::elementOf(std::vector<std::string>{"isext", "kine_", "form_", "mater", "extvf", "extsf", "mstrg"})};
+      o.id = Word{*rc::gen::elementOf(
+          std::vector<std::string>{"isext", "kine_", "form_", "mater", "extvf", "extsf", "mstrg"})};
       o.value = Word{option_value()};
       extvf_after_mdlty_line |= o.id.value == "extvf" && (k > 0 || !m.user_model.value.empty());
       m.options.push_back(o);
@@ -60,9 +62,15 @@ RC_GTEST_PROP(ModelsRobustness, ParserNeverCrashesOnDamagedText, ()) {
   for (int k = 0, n = *rc::gen::inRange(1, 8); k < n && !text.empty(); ++k) {
     const std::size_t at = *rc::gen::inRange<std::size_t>(0, text.size());
     switch (*rc::gen::inRange(0, 3)) {
-      case 0: text[at] = *rc::gen::elementOf(std::string("x0.-+D$! \n\t")); break;
-      case 1: text.erase(at, *rc::gen::inRange<std::size_t>(1, 40)); break;
-      default: text.insert(at, "\n"); break;
+      case 0:
+        text[at] = *rc::gen::elementOf(std::string("x0.-+D$! \n\t"));
+        break;
+      case 1:
+        text.erase(at, *rc::gen::inRange<std::size_t>(1, 40));
+        break;
+      default:
+        text.insert(at, "\n");
+        break;
     }
   }
   DiagnosticSink sink;

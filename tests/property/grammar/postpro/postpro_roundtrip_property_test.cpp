@@ -17,15 +17,23 @@ PostproArgument generated_line(const PostproStep& step, bool counts_small) {
   PostproArgument a;
   a.format = step.format;
   auto count_or = [&](std::int64_t low, std::int64_t high) {
-    return step.repeat == PostproRepeat::last_integer || counts_small ? *rc::gen::inRange<std::int64_t>(0, 4)
-                                                                      : *rc::gen::inRange<std::int64_t>(low, high);
+    return step.repeat == PostproRepeat::last_integer || counts_small
+               ? *rc::gen::inRange<std::int64_t>(0, 4)
+               : *rc::gen::inRange<std::int64_t>(low, high);
   };
   switch (step.format) {
-    case F::i5: a.integers.push_back(Integer{count_or(-9999, 100000)}); break;
-    case F::i7: a.integers.push_back(Integer{count_or(-999999, 10000000)}); break;
-    case F::a5: a.word = Word{*test::gen_word(5)}; break;
+    case F::i5:
+      a.integers.push_back(Integer{count_or(-9999, 100000)});
+      break;
+    case F::i7:
+      a.integers.push_back(Integer{count_or(-999999, 10000000)});
+      break;
+    case F::a5:
+      a.word = Word{*test::gen_word(5)};
+      break;
     case F::a12:
-      a.word = Word{*rc::gen::elementOf(std::vector<std::string>{"SMOOTH BOX", "ROUGH BOX", "CLUSTER BOX", "COUETTE", "SELECTION"})};
+      a.word = Word{*rc::gen::elementOf(
+          std::vector<std::string>{"SMOOTH BOX", "ROUGH BOX", "CLUSTER BOX", "COUETTE", "SELECTION"})};
       break;
     case F::i7_x_i3:
       a.integers.push_back(Integer{*rc::gen::inRange<std::int64_t>(-999999, 10000000)});
@@ -35,14 +43,18 @@ PostproArgument generated_line(const PostproStep& step, bool counts_small) {
       a.integers.push_back(Integer{*rc::gen::inRange<std::int64_t>(-999999, 10000000)});
       a.integers.push_back(Integer{count_or(-999999, 10000000)});
       break;
-    case F::list_integer: a.integers.push_back(Integer{count_or(-1000000000, 1000000000)}); break;
+    case F::list_integer:
+      a.integers.push_back(Integer{count_or(-1000000000, 1000000000)});
+      break;
     case F::list_integer_pair:
     case F::list_integer_quad:
       for (int k = 0; k < (step.format == F::list_integer_pair ? 2 : 4); ++k)
         a.integers.push_back(Integer{*rc::gen::inRange<std::int64_t>(-999999, 10000000)});
       break;
     case F::list_real:
-    case F::es14_7: a.reals.push_back(Real{*test::gen_d14_real()}); break;
+    case F::es14_7:
+      a.reals.push_back(Real{*test::gen_d14_real()});
+      break;
     case F::dense_sample:
       if (*rc::gen::arbitrary<bool>()) {
         const std::int64_t id = *rc::gen::inRange<std::int64_t>(0, 10000000);

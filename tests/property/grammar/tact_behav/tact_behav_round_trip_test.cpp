@@ -19,7 +19,8 @@ namespace {
 
 // A 5-character word that is not a card keyword (columns 2-6 of a law or see line).
 std::string gen_name() {
-  return *rc::gen::suchThat(test::gen_word(5), [](const std::string& w) { return w != "behav" && w != "seety"; });
+  return *rc::gen::suchThat(test::gen_word(5),
+                            [](const std::string& w) { return w != "behav" && w != "seety"; });
 }
 
 std::vector<const LawKind*> readable_kinds() {
@@ -43,7 +44,8 @@ TactLaw gen_law() {
 
 SeeEntry gen_see() {
   const auto body = [] {
-    return *rc::gen::oneOf(rc::gen::element<std::string>("RBDY2", "RBDY3", "MAILx"), rc::gen::just(gen_name()));
+    return *rc::gen::oneOf(rc::gen::element<std::string>("RBDY2", "RBDY3", "MAILx"),
+                           rc::gen::just(gen_name()));
   };
   // Known contactor names drive LMGC90's sort; a few unknown ones (id -99) too.
   const auto contactor = [] {
@@ -64,7 +66,8 @@ SeeEntry gen_see() {
   see.alert = *test::gen_d14_real();
   // LMGC90 prints the global alert only when it is non-zero and below 1e20.
   if (*rc::gen::arbitrary<bool>())
-    see.global_alert = Real{*rc::gen::suchThat(test::gen_d14_real(), [](double v) { return v != 0.0 && v < 1.0e20; })};
+    see.global_alert =
+        Real{*rc::gen::suchThat(test::gen_d14_real(), [](double v) { return v != 0.0 && v < 1.0e20; })};
   return see;
 }
 

@@ -15,7 +15,9 @@
 namespace lmgc::grammar {
 namespace {
 
-Real real() { return Real{*test::gen_d14_real()}; }
+Real real() {
+  return Real{*test::gen_d14_real()};
+}
 
 // Largest value an Iw field holds.
 std::int64_t largest(int width) {
@@ -32,7 +34,8 @@ VlocRlocInteraction generated_interaction(const InteractionKind& kind) {
   c.title = std::string(kind.title);
   for (const DataItem& item : data_items(kind.data_format)) {
     if (item.kind == 'A') c.words.push_back(Word{*test::gen_word()});
-    if (item.kind == 'I') c.integers.push_back(Integer{*rc::gen::inRange<std::int64_t>(0, largest(item.width) + 1)});
+    if (item.kind == 'I')
+      c.integers.push_back(Integer{*rc::gen::inRange<std::int64_t>(0, largest(item.width) + 1)});
   }
   for (const VectorLineKind& v : kind.vectors) {
     VlocRlocVector vec;
@@ -48,14 +51,15 @@ VlocRlocInteraction generated_interaction(const InteractionKind& kind) {
   for (int k = 0; k < internals; ++k) values.push_back(real());
   const std::size_t per_line = kind.internals == InternalLayout2D::per_line_6   ? 6
                                : kind.internals == InternalLayout2D::per_line_5 ? 5
-                                                                                 : values.size();
+                                                                                : values.size();
   if (kind.internals == InternalLayout2D::one_line_with_comment) {
     c.internal_comment = std::string(285, ' ');
     c.internal_comment.replace(0, 11, "#taille_ele");
   }
   for (std::size_t k = 0; k < values.size(); k += per_line)
-    c.internal_lines.emplace_back(values.begin() + static_cast<std::ptrdiff_t>(k),
-                                  values.begin() + static_cast<std::ptrdiff_t>(std::min(values.size(), k + per_line)));
+    c.internal_lines.emplace_back(
+        values.begin() + static_cast<std::ptrdiff_t>(k),
+        values.begin() + static_cast<std::ptrdiff_t>(std::min(values.size(), k + per_line)));
   return c;
 }
 
@@ -65,8 +69,8 @@ VlocRlocFile generated() {
   f.time = real();
   const auto kinds = interaction_catalogue();
   for (int i = 0, n = *rc::gen::inRange(0, 6); i < n; ++i)
-    f.interactions.push_back(
-        generated_interaction(kinds[static_cast<std::size_t>(*rc::gen::inRange(0, static_cast<int>(kinds.size())))]));
+    f.interactions.push_back(generated_interaction(
+        kinds[static_cast<std::size_t>(*rc::gen::inRange(0, static_cast<int>(kinds.size())))]));
   return f;
 }
 
@@ -89,7 +93,8 @@ RC_GTEST_PROP(VlocRlocRoundTrip, InternalValuesAreKeptInOrder, ()) {
   const VlocRlocFile back = parse_vloc_rloc(SourceText("Vloc_Rloc.LAST", write_vloc_rloc(f)), sink);
   RC_ASSERT(back.interactions.size() == f.interactions.size());
   for (std::size_t k = 0; k < f.interactions.size(); ++k)
-    RC_ASSERT(vloc_rloc_internal_values(back.interactions[k]) == vloc_rloc_internal_values(f.interactions[k]));
+    RC_ASSERT(vloc_rloc_internal_values(back.interactions[k]) ==
+              vloc_rloc_internal_values(f.interactions[k]));
 }
 
 }  // namespace

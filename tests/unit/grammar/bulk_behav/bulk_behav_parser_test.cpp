@@ -1,9 +1,8 @@
 // BULK_BEHAV.DAT: laws and their sub-blocks, the echo of each law family, and broken files with
 // their exact diagnostic. spec: datbox-inputs.md §2, §10.
-#include "grammar/bulk_behav/parser.hpp"
-
 #include <gtest/gtest.h>
 
+#include "grammar/bulk_behav/parser.hpp"
 #include "grammar/bulk_behav/writer.hpp"
 
 namespace lmgc::grammar {
@@ -31,18 +30,19 @@ const std::string kElasPlas =
     "                                        cinh: none\n"
     "                                        vpla: none\n";
 
-const std::string kThermoElas = kGravity +
-                                "$behav  lawty\n"
-                                " acier  THERMO_ELAS                     Umas= 0.8000000D+04\n"
-                                "                                        elas: standard\n"
-                                "                                        ani_: isotropic\n"
-                                "                                        EYng= 0.2000000D+12  EPss= 0.3000000D+00\n"
-                                "                                        cplt:\n"
-                                "                                        Dila= 0.2000000D-06\n"
-                                "                                        Tref= 0.2730000D+03\n"
-                                "                                        ther:\n"
-                                "                                        SPHV= 0.1125000D+01\n"
-                                "                                        COCO= 0.3000000D+03\n";
+const std::string kThermoElas =
+    kGravity +
+    "$behav  lawty\n"
+    " acier  THERMO_ELAS                     Umas= 0.8000000D+04\n"
+    "                                        elas: standard\n"
+    "                                        ani_: isotropic\n"
+    "                                        EYng= 0.2000000D+12  EPss= 0.3000000D+00\n"
+    "                                        cplt:\n"
+    "                                        Dila= 0.2000000D-06\n"
+    "                                        Tref= 0.2730000D+03\n"
+    "                                        ther:\n"
+    "                                        SPHV= 0.1125000D+01\n"
+    "                                        COCO= 0.3000000D+03\n";
 
 const Diagnostic& first(const DiagnosticSink& sink) {
   static const Diagnostic none{"none", Severity::note, {}, "no diagnostic", {}, {}};
@@ -63,7 +63,8 @@ std::string echo_body(const std::string& text) {
   return out.substr(at);
 }
 
-void expect_diagnostic(const std::string& text, const std::string& code, std::uint32_t line, std::uint32_t column) {
+void expect_diagnostic(const std::string& text, const std::string& code, std::uint32_t line,
+                       std::uint32_t column) {
   DiagnosticSink sink;
   parse(text, sink);
   EXPECT_EQ(first(sink).code, code) << first(sink).message;
@@ -71,7 +72,9 @@ void expect_diagnostic(const std::string& text, const std::string& code, std::ui
   EXPECT_EQ(first(sink).where.span.column, column) << first(sink).message;
 }
 
-std::string law(const std::string& lines) { return kGravity + "$behav  lawty\n" + lines; }
+std::string law(const std::string& lines) {
+  return kGravity + "$behav  lawty\n" + lines;
+}
 
 constexpr const char* kGravityEcho =
     "$gravy\n"
@@ -151,10 +154,11 @@ TEST(BulkBehavParser, FieldInsteadOfValues) {
 
 TEST(BulkBehavParser, DiscreteLawIsTwoDimensionalWhenItsThirdColumnsAreBlank) {
   DiagnosticSink sink;
-  const BulkBehavFile f = parse(law(" Spr01  DISCRETE                        m1  = 0.1000000D+01  m2  = 0.2000000D+01\n"
-                                    "                                        k1  = 0.3000000D+01  k2  = 0.4000000D+01\n"
-                                    "                                        c1  = 0.5000000D+01  c2  = 0.6000000D+01\n"),
-                                sink);
+  const BulkBehavFile f =
+      parse(law(" Spr01  DISCRETE                        m1  = 0.1000000D+01  m2  = 0.2000000D+01\n"
+                "                                        k1  = 0.3000000D+01  k2  = 0.4000000D+01\n"
+                "                                        c1  = 0.5000000D+01  c2  = 0.6000000D+01\n"),
+            sink);
   EXPECT_TRUE(sink.items().empty());
   ASSERT_EQ(f.laws.size(), 1u);
   EXPECT_EQ(f.laws[0].first_line_values.size(), 2u);
@@ -188,7 +192,8 @@ TEST(BulkBehavWriter, ElasticPlasticEchoHasItsBlankLines) {
             " \n"
             "                                        crit: Von-Mises    \n"
             "                                        isoh: Swift        \n"
-            "                                        C0__= 0.1000000D+03  EPS0= 0.4000000D+00  n___= 0.1000000D+01\n"
+            "                                        C0__= 0.1000000D+03  EPS0= 0.4000000D+00  n___= "
+            "0.1000000D+01\n"
             "                                        cinh: none         \n"
             "                                        vpla: none         \n"
             " \n"
@@ -199,7 +204,8 @@ TEST(BulkBehavWriter, HeaderIsLmgc90CommentBlock) {
   DiagnosticSink sink;
   const std::string out = write_bulk_behav(parse(kRigid, sink));
   EXPECT_EQ(out.substr(0, 73), "! File BULK_BEHAV                                                       \n");
-  EXPECT_NE(out.find("\n  ! The symbol   'behav'   stands for the nickname of a bulk behaviour  \n"), std::string::npos);
+  EXPECT_NE(out.find("\n  ! The symbol   'behav'   stands for the nickname of a bulk behaviour  \n"),
+            std::string::npos);
   EXPECT_NE(out.find(std::string(72, ' ') + "\n$gravy\n"), std::string::npos);
 }
 
@@ -224,42 +230,49 @@ TEST(BulkBehavWriter, ThermoElasticEcho) {
 }
 
 TEST(BulkBehavWriter, FieldEchoWritesFieldAfterEveryLabel) {
-  const std::string body = echo_body(law(" Mat01  ELAS                            Umas=field\n"
-                                         "                                        elas: standard\n"
-                                         "                                        ani_: isotropic\n"
-                                         "                                        EYng=field\n"));
+  const std::string body =
+      echo_body(law(" Mat01  ELAS                            Umas=field\n"
+                    "                                        elas: standard\n"
+                    "                                        ani_: isotropic\n"
+                    "                                        EYng=field\n"));
   EXPECT_NE(body.find(" Mat01  ELAS                            Umas=field\n"), std::string::npos);
-  EXPECT_NE(body.find("                                        EYng=field  EPss=field\n \n \n"), std::string::npos);
+  EXPECT_NE(body.find("                                        EYng=field  EPss=field\n \n \n"),
+            std::string::npos);
 }
 
 TEST(BulkBehavWriter, AnisotropicValuesHaveBlankLabels) {
-  std::string lines = " Mat01  VISCO_ELAS                      Umas= 0.1000000D+01\n"
-                      "                                        elas: standard\n"
-                      "                                        ani_: isotropic\n"
-                      "                                        EYng= 0.1000000D+01  EPss= 0.2000000D+00\n"
-                      "                                        visc: KelvinVoigt\n"
-                      "                                        ani_: anisotropic\n";
+  std::string lines =
+      " Mat01  VISCO_ELAS                      Umas= 0.1000000D+01\n"
+      "                                        elas: standard\n"
+      "                                        ani_: isotropic\n"
+      "                                        EYng= 0.1000000D+01  EPss= 0.2000000D+00\n"
+      "                                        visc: KelvinVoigt\n"
+      "                                        ani_: anisotropic\n";
   for (int i = 0; i < 7; ++i)
-    lines += "                                        Cijk= 0.1000000D+01  Cijk= 0.2000000D+01  Cijk= 0.3000000D+01\n";
+    lines +=
+        "                                        Cijk= 0.1000000D+01  Cijk= 0.2000000D+01  Cijk= "
+        "0.3000000D+01\n";
   const std::string body = echo_body(law(lines));
   EXPECT_NE(body.find("                                        visc: KelvinVoigt  \n"
                       "                                        ani_: anisotropic  \n"
-                      "                                              0.1000000D+01        0.2000000D+01        0.3000000D+01\n"),
+                      "                                              0.1000000D+01        0.2000000D+01      "
+                      "  0.3000000D+01\n"),
             std::string::npos);
   EXPECT_EQ(body.substr(body.size() - 7), "01\n \n \n");
 }
 
 TEST(BulkBehavWriter, ThermoElectroRigidEcho) {
-  const std::string body = echo_body(law(" Cu_01  THERMO_ELECTRO_RIGID            Umas= 0.8900000D+04\n"
-                                         "                                        iso:\n"
-                                         "                                        TCnd= 0.4000000D+03\n"
-                                         "                                        Hspe= 0.3850000D+03\n"
-                                         "                                        Eeq_= 0.1000000D+12  NUeq= 0.3000000D+00\n"
-                                         "                                        ECnd= 0.6000000D+08\n"
-                                         "                                        Eel_= 0.1000000D+12  NUel= 0.3000000D+00\n"
-                                         "                                        WSlw= NHU14\n"
-                                         "                                        WSmx= 0.1000000D+01  WSmn= 0.0000000D+00\n"
-                                         "                                        CtTi= 0.1000000D-02  AcTi= 0.2000000D+00\n"));
+  const std::string body =
+      echo_body(law(" Cu_01  THERMO_ELECTRO_RIGID            Umas= 0.8900000D+04\n"
+                    "                                        iso:\n"
+                    "                                        TCnd= 0.4000000D+03\n"
+                    "                                        Hspe= 0.3850000D+03\n"
+                    "                                        Eeq_= 0.1000000D+12  NUeq= 0.3000000D+00\n"
+                    "                                        ECnd= 0.6000000D+08\n"
+                    "                                        Eel_= 0.1000000D+12  NUel= 0.3000000D+00\n"
+                    "                                        WSlw= NHU14\n"
+                    "                                        WSmx= 0.1000000D+01  WSmn= 0.0000000D+00\n"
+                    "                                        CtTi= 0.1000000D-02  AcTi= 0.2000000D+00\n"));
   EXPECT_EQ(body, std::string(kGravityEcho) +
                       "$behav  lawty\n"
                       " Cu_01  THERMO_ELECTRO_RIGID            Umas= 0.8900000D+04\n"
@@ -277,23 +290,30 @@ TEST(BulkBehavWriter, ThermoElectroRigidEcho) {
 }
 
 TEST(BulkBehavWriter, JointAndUserMaterialEcho) {
-  const std::string body = echo_body(law(" Jnt01  JOINT_MC                        kt  = 0.1000000D+01  knc = 0.2000000D+01  knt = 0.3000000D+01\n"
-                                         "                                        kncc= 0.4000000D+01  ec  = 0.5000000D+01\n"
-                                         "                                        ftrc= 0.6000000D+01\n"
-                                         "                                        phi = 0.7000000D+01  C   = 0.8000000D+01  zmu = 0.9000000D+01\n"
-                                         "$behav  lawty\n"
-                                         " Usr01  USER_MAT                        Umas= 0.1000000D+01\n"
-                                         "  my_material.mat   \n"));
+  const std::string body =
+      echo_body(law(" Jnt01  JOINT_MC                        kt  = 0.1000000D+01  knc = 0.2000000D+01  knt = "
+                    "0.3000000D+01\n"
+                    "                                        kncc= 0.4000000D+01  ec  = 0.5000000D+01\n"
+                    "                                        ftrc= 0.6000000D+01\n"
+                    "                                        phi = 0.7000000D+01  C   = 0.8000000D+01  zmu = "
+                    "0.9000000D+01\n"
+                    "$behav  lawty\n"
+                    " Usr01  USER_MAT                        Umas= 0.1000000D+01\n"
+                    "  my_material.mat   \n"));
   EXPECT_EQ(body, std::string(kGravityEcho) +
                       "$behav  lawty\n"
-                      " Jnt01  JOINT_MC                        kt  = 0.1000000D+01  knc = 0.2000000D+01  knt = 0.3000000D+01\n"
+                      " Jnt01  JOINT_MC                        kt  = 0.1000000D+01  knc = 0.2000000D+01  knt "
+                      "= 0.3000000D+01\n"
                       "                                        kncc= 0.4000000D+01  ec  = 0.5000000D+01\n"
                       "                                        ftrc= 0.6000000D+01\n"
-                      "                                        phi = 0.7000000D+01  C   = 0.8000000D+01  zmu = 0.9000000D+01\n"
+                      "                                        phi = 0.7000000D+01  C   = 0.8000000D+01  zmu "
+                      "= 0.9000000D+01\n"
                       " \n"
                       "$behav  lawty\n"
                       " Usr01  USER_MAT                        Umas= 0.1000000D+01\n"
-                      "                                        my_material.mat" + std::string(35, ' ') + "\n"
+                      "                                        my_material.mat" +
+                      std::string(35, ' ') +
+                      "\n"
                       " \n");
 }
 
@@ -316,7 +336,8 @@ TEST(BulkBehavWriter, UnknownLawIsKeptBlankAsLmgc90DoesAndItsLinesAreSkipped) {
 // --- broken files: one diagnostic each, exact code and position -----------------------------
 
 TEST(BulkBehavBroken, MissingGravity) {
-  expect_diagnostic("$behav  lawty\n PLEXx  RIGID                           Umas= 0.2000000D+04\n", "L1012", 2, 60);
+  expect_diagnostic("$behav  lawty\n PLEXx  RIGID                           Umas= 0.2000000D+04\n", "L1012",
+                    2, 60);
 }
 TEST(BulkBehavBroken, UnknownLawType) {
   std::string t = kRigid;
@@ -359,12 +380,14 @@ TEST(BulkBehavBroken, ElasticModelNotImplementedInLmgc90) {
   expect_diagnostic(t, "L1017", 5, 47);
 }
 TEST(BulkBehavBroken, DilatationOfAnisotropicElasticity) {
-  std::string lines = " Mat01  ELAS_DILA                       Umas= 0.1000000D+01\n"
-                      "                                        elas: standard\n"
-                      "                                        ani_: anisotropic\n";
+  std::string lines =
+      " Mat01  ELAS_DILA                       Umas= 0.1000000D+01\n"
+      "                                        elas: standard\n"
+      "                                        ani_: anisotropic\n";
   for (int i = 0; i < 7; ++i) lines += "                                        Cijk= 0.1000000D+01\n";
-  lines += "                                        cplt:\n"
-           "                                        Tref= 0.2730000D+03\n";
+  lines +=
+      "                                        cplt:\n"
+      "                                        Tref= 0.2730000D+03\n";
   expect_diagnostic(law(lines), "L1017", 14, 41);
 }
 TEST(BulkBehavBroken, UnknownChemicalLaw) {
@@ -377,7 +400,8 @@ TEST(BulkBehavBroken, TruncatedLaw) {
   expect_diagnostic(t, "L1006", 7, 81);
 }
 TEST(BulkBehavBroken, LawCutShortByTheNextLaw) {
-  const std::string t = kElasPlas.substr(0, kElasPlas.find("                                        cinh")) + kRigid.substr(kGravity.size());
+  const std::string t = kElasPlas.substr(0, kElasPlas.find("                                        cinh")) +
+                        kRigid.substr(kGravity.size());
   expect_diagnostic(t, "L1013", 11, 1);
 }
 TEST(BulkBehavBroken, DensityShiftedOneColumnRight) {
@@ -391,7 +415,9 @@ TEST(BulkBehavBroken, MissingUserMaterialFileNameLine) {
 TEST(BulkBehavBroken, StrayLineBetweenLaws) {
   expect_diagnostic(kRigid + "stray text\n", "L1019", 5, 1);
 }
-TEST(BulkBehavBroken, EmptyFile) { expect_diagnostic("! only a comment\n", "L1009", 0, 0); }
+TEST(BulkBehavBroken, EmptyFile) {
+  expect_diagnostic("! only a comment\n", "L1009", 0, 0);
+}
 
 }  // namespace
 }  // namespace lmgc::grammar

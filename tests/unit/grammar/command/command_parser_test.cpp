@@ -1,11 +1,10 @@
 // COMMAND.DAT: lexical rules, classification, control structures, expansion, broken files.
-#include "grammar/command/parser.hpp"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
 #include "grammar/command/expand.hpp"
+#include "grammar/command/parser.hpp"
 #include "grammar/command/writer.hpp"
 
 namespace lmgc::grammar {
@@ -58,7 +57,8 @@ CommandFile parse(const std::string& text, DiagnosticSink& sink) {
 }
 
 std::size_t count(const std::vector<ExecutedCommand>& run, std::string_view keyword) {
-  return static_cast<std::size_t>(std::count_if(run.begin(), run.end(), [&](const ExecutedCommand& c) { return c.keyword == keyword; }));
+  return static_cast<std::size_t>(
+      std::count_if(run.begin(), run.end(), [&](const ExecutedCommand& c) { return c.keyword == keyword; }));
 }
 
 TEST(CommandParser, ClassifiesLinesAsChicReadsThem) {
@@ -92,8 +92,9 @@ TEST(CommandParser, ClassifiesLinesAsChicReadsThem) {
 }
 
 TEST(CommandWriter, ReproducesTheTextByteForByte) {
-  for (const std::string& text : {kProgram, std::string("NO CHECK CHIC COMMAND  \r\nFIN DU PROGRAMME\r\nFIN DU FICHIER"),
-                                  std::string("   \n#\n  x  :  y  \n"), std::string()}) {
+  for (const std::string& text :
+       {kProgram, std::string("NO CHECK CHIC COMMAND  \r\nFIN DU PROGRAMME\r\nFIN DU FICHIER"),
+        std::string("   \n#\n  x  :  y  \n"), std::string()}) {
     DiagnosticSink sink;
     EXPECT_EQ(write_command(parse(text, sink)), text);
   }
@@ -114,7 +115,8 @@ TEST(CommandExpansion, RepeteGivesOneMorePassThanItsCount) {
   EXPECT_EQ(run[0].keyword, "TIME STEP");
   ASSERT_EQ(run[0].arguments.size(), 1u);
   EXPECT_EQ(run[0].line, 3u);
-  const auto nlgs = std::find_if(run.begin(), run.end(), [](const ExecutedCommand& c) { return c.keyword == "NLGS CHECK TYPE"; });
+  const auto nlgs = std::find_if(run.begin(), run.end(),
+                                 [](const ExecutedCommand& c) { return c.keyword == "NLGS CHECK TYPE"; });
   ASSERT_NE(nlgs, run.end());
   EXPECT_EQ(nlgs->arguments.size(), 2u);
   EXPECT_EQ(nlgs->module, "nlgs");
@@ -161,7 +163,8 @@ TEST(CommandExpansion, RunParametersOfTheProgram) {
   EXPECT_EQ(p.write_every, 10);
 }
 
-void expect_diagnostic(const std::string& text, const std::string& code, std::uint32_t line, std::uint32_t column) {
+void expect_diagnostic(const std::string& text, const std::string& code, std::uint32_t line,
+                       std::uint32_t column) {
   DiagnosticSink sink;
   parse(text, sink);
   ASSERT_FALSE(sink.items().empty());
@@ -173,8 +176,12 @@ void expect_diagnostic(const std::string& text, const std::string& code, std::ui
 const std::string kHead = "NO CHECK CHIC COMMAND\n";
 const std::string kTail = "FIN DU PROGRAMME\nFIN DU FICHIER\n";
 
-TEST(CommandBroken, MissingFinDuProgramme) { expect_diagnostic("COMPUTE BOX\nCOMPUTE MASS\n", "L1012", 2, 13); }
-TEST(CommandBroken, MissingFinDuFichier) { expect_diagnostic(kHead + "FIN DU PROGRAMME\nSUB x\n", "L1012", 3, 6); }
+TEST(CommandBroken, MissingFinDuProgramme) {
+  expect_diagnostic("COMPUTE BOX\nCOMPUTE MASS\n", "L1012", 2, 13);
+}
+TEST(CommandBroken, MissingFinDuFichier) {
+  expect_diagnostic(kHead + "FIN DU PROGRAMME\nSUB x\n", "L1012", 3, 6);
+}
 TEST(CommandBroken, UnknownKeywordIsAWarning) {
   DiagnosticSink sink;
   parse(kHead + "  COMPTE MASS   : typo\n" + kTail, sink);
@@ -184,29 +191,40 @@ TEST(CommandBroken, UnknownKeywordIsAWarning) {
   EXPECT_EQ(sink.items()[0].where.span.line, 2u);
   EXPECT_EQ(sink.items()[0].where.span.column, 3u);
 }
-TEST(CommandBroken, MalformedRealArgument) { expect_diagnostic(kHead + "TIME STEP\n  1.x-3\n" + kTail, "L1002", 3, 3); }
+TEST(CommandBroken, MalformedRealArgument) {
+  expect_diagnostic(kHead + "TIME STEP\n  1.x-3\n" + kTail, "L1002", 3, 3);
+}
 TEST(CommandBroken, MalformedIntegerArgument) {
   expect_diagnostic(kHead + "CUNDALL ITERATION\n2.5\n" + kTail, "L1004", 3, 1);
 }
 TEST(CommandBroken, MissingToleranceOfTheCheckType) {
   expect_diagnostic(kHead + "NLGS CHECK TYPE\nQuad\n1.\n" + kTail, "L1015", 3, 1);
 }
-TEST(CommandBroken, WriteOutWithoutStep) { expect_diagnostic(kHead + "WRITE OUT DOF\n" + kTail, "L1015", 2, 1); }
+TEST(CommandBroken, WriteOutWithoutStep) {
+  expect_diagnostic(kHead + "WRITE OUT DOF\n" + kTail, "L1015", 2, 1);
+}
 TEST(CommandBroken, CallOfAMissingSubroutine) {
   expect_diagnostic(kHead + "APPELLE reading data\n" + kTail, "L1012", 2, 1);
 }
 TEST(CommandBroken, SubroutineWithoutRetour) {
-  expect_diagnostic(kHead + "APPELLE x\nFIN DU PROGRAMME\nSUB x\nREAD BODIES\nFIN DU FICHIER\n", "L1012", 4, 1);
+  expect_diagnostic(kHead + "APPELLE x\nFIN DU PROGRAMME\nSUB x\nREAD BODIES\nFIN DU FICHIER\n", "L1012", 4,
+                    1);
 }
 TEST(CommandBroken, LoopLabelNotFound) {
   expect_diagnostic(kHead + "REPETE 3 FOIS\nDEPUIS nowhere\n" + kTail, "L1012", 3, 1);
 }
-TEST(CommandBroken, RepeteWithoutFois) { expect_diagnostic(kHead + "a\nREPETE 3\nDEPUIS a\n" + kTail, "L1004", 3, 1); }
-TEST(CommandBroken, RepeteNotFollowedByDepuis) { expect_diagnostic(kHead + "a\nREPETE 3 FOIS\na\n" + kTail, "L1013", 4, 1); }
+TEST(CommandBroken, RepeteWithoutFois) {
+  expect_diagnostic(kHead + "a\nREPETE 3\nDEPUIS a\n" + kTail, "L1004", 3, 1);
+}
+TEST(CommandBroken, RepeteNotFollowedByDepuis) {
+  expect_diagnostic(kHead + "a\nREPETE 3 FOIS\na\n" + kTail, "L1013", 4, 1);
+}
 TEST(CommandBroken, FlagNumberOutOfRange) {
   expect_diagnostic(kHead + "IOK = FLAG 16\nINTO AFTER ITER CHECK\n" + kTail, "L1003", 2, 7);
 }
-TEST(CommandBroken, MissingComputeBox) { expect_diagnostic("COMPUTE MASS\n" + kTail, "L1012", 3, 15); }
+TEST(CommandBroken, MissingComputeBox) {
+  expect_diagnostic("COMPUTE MASS\n" + kTail, "L1012", 3, 15);
+}
 TEST(CommandBroken, ArgumentCutByTheEndOfTheSection) {
   expect_diagnostic(kHead + "FIN DU PROGRAMME\nSUB x\nRETOUR\nTHETA\nFIN DU FICHIER\n", "L1002", 6, 1);
 }

@@ -19,7 +19,9 @@ TEST(FortranReal, ReadsLowerCaseAndEExponents) {
   EXPECT_DOUBLE_EQ(read_fortran_real("3.0788939d-01", 7).value, 0.30788939);
 }
 
-TEST(FortranReal, ReadsBareSignedExponent) { EXPECT_DOUBLE_EQ(read_fortran_real("1.0+05", 7).value, 1.0e5); }
+TEST(FortranReal, ReadsBareSignedExponent) {
+  EXPECT_DOUBLE_EQ(read_fortran_real("1.0+05", 7).value, 1.0e5);
+}
 
 TEST(FortranReal, BlankFieldIsZeroAndFlagged) {
   auto r = read_fortran_real("              ", 7);
@@ -27,7 +29,9 @@ TEST(FortranReal, BlankFieldIsZeroAndFlagged) {
   EXPECT_EQ(r.value, 0.0);
 }
 
-TEST(FortranReal, EmbeddedBlanksAreIgnored) { EXPECT_DOUBLE_EQ(read_fortran_real(" 1. 5 D+0 1", 7).value, 15.0); }
+TEST(FortranReal, EmbeddedBlanksAreIgnored) {
+  EXPECT_DOUBLE_EQ(read_fortran_real(" 1. 5 D+0 1", 7).value, 15.0);
+}
 
 TEST(FortranReal, MantissaWithoutPointUsesImpliedDecimal) {
   EXPECT_DOUBLE_EQ(read_fortran_real("           100", 7).value, 1.0e-5);

@@ -11,17 +11,23 @@ namespace lmgc::grammar {
 namespace {
 
 const std::string kDashes = "!" + std::string(71, '-') + "\n";
-const std::string kHeader = "     \n! DOF\n     \n$steps        0              time= 0.0000000D+00\n \n" + kDashes;
+const std::string kHeader =
+    "     \n! DOF\n     \n$steps        0              time= 0.0000000D+00\n \n" + kDashes;
 const std::string kLead = std::string(27, ' ');
 const std::string kXLine = " NO3xx      1" + std::string(14, ' ') +
                            "  X(1)= 0.1000000D+01  X(2)=-0.2000000D+01  X(3)= 0.3000000D+00";
 const std::string kVLine = kLead + "  V(1)= 0.0000000D+00  V(2)= 0.0000000D+00  V(3)= 0.1000000D-02";
 
-std::string rbdy2_body() { return "$bdyty\n RBDY2        1\n$nodty\n" + kXLine + "\n" + kVLine + "\n$$$$$$\n      \n"; }
+std::string rbdy2_body() {
+  return "$bdyty\n RBDY2        1\n$nodty\n" + kXLine + "\n" + kVLine + "\n$$$$$$\n      \n";
+}
 
-DofFile parse(const std::string& text, DiagnosticSink& sink) { return parse_dof(SourceText("DOF.INI", text), sink); }
+DofFile parse(const std::string& text, DiagnosticSink& sink) {
+  return parse_dof(SourceText("DOF.INI", text), sink);
+}
 
-void expect_one(const DiagnosticSink& sink, const std::string& code, std::uint32_t line, std::uint32_t column) {
+void expect_one(const DiagnosticSink& sink, const std::string& code, std::uint32_t line,
+                std::uint32_t column) {
   ASSERT_FALSE(sink.items().empty()) << "expected " << code;
   EXPECT_EQ(sink.items()[0].code, code) << sink.items()[0].message;
   EXPECT_EQ(sink.items()[0].where.span.line, line) << sink.items()[0].message;
@@ -54,9 +60,9 @@ TEST(DofParser, ReadsRbdy3FrameAndThermalMailx) {
       "  a(1)= 0.1000000D+01  a(2)= 0.0000000D+00  a(3)= 0.0000000D+00\n" + kLead +
       "  b(1)= 0.0000000D+00  b(2)= 0.1000000D+01  b(3)= 0.0000000D+00\n" + kLead +
       "  g(1)= 0.0000000D+00  g(2)= 0.0000000D+00  g(3)= 0.1000000D+01\n$$$$$$\n      \n";
-  const std::string thermal = "$bdyty\n MAILx      1\n$model\n THERM\n$nodty\n NO1xx      1" + std::string(14, ' ') +
-                              "  T(1)= 0.2930000D+03\n NO1xx      2" + std::string(14, ' ') +
-                              "  T(1)= 0.2948538D+03\n$$$$$$\n      \n";
+  const std::string thermal = "$bdyty\n MAILx      1\n$model\n THERM\n$nodty\n NO1xx      1" +
+                              std::string(14, ' ') + "  T(1)= 0.2930000D+03\n NO1xx      2" +
+                              std::string(14, ' ') + "  T(1)= 0.2948538D+03\n$$$$$$\n      \n";
   const std::string text = kHeader + rbdy3 + kDashes + thermal + kDashes;
   DiagnosticSink sink;
   const DofFile file = parse(text, sink);
@@ -74,8 +80,8 @@ TEST(DofParser, ReadsRbdy3FrameAndThermalMailx) {
 
 TEST(DofParser, HandWrittenIniWithoutDashesAndLabelsIgnored) {
   // datbox-inputs.md §6: labels are not read (`c(1)=` where the writer emits `g(1)=`).
-  const std::string text = "$steps      5                time= 0.5000000D+00\n$bdyty\n RBDY2  3\n$nodty\n" + kXLine +
-                           "\n" + kLead + "  c(1)= 0.1000000D+01\n$$$$$$\n";
+  const std::string text = "$steps      5                time= 0.5000000D+00\n$bdyty\n RBDY2  3\n$nodty\n" +
+                           kXLine + "\n" + kLead + "  c(1)= 0.1000000D+01\n$$$$$$\n";
   DiagnosticSink sink;
   const DofFile file = parse(text, sink);
   ASSERT_EQ(sink.items().size(), 0u);
@@ -158,8 +164,11 @@ TEST(DofBroken, TimeShiftedLeftLosingOnlyAZeroIsAccepted) {
 }
 
 TEST(DofBroken, NeverCrashesOnGarbage) {
-  const std::string inputs[] = {"$steps", "$bdyty", "$steps\n$bdyty\n MAILx\n$model\n MECAx\n$nodty\n NO2xx",
-                                "$steps\n$bdyty\n RBDY3 x\n$nodty\n NO6xx\n", "!rigid part\n$bdyty\n MAILx\n",
+  const std::string inputs[] = {"$steps",
+                                "$bdyty",
+                                "$steps\n$bdyty\n MAILx\n$model\n MECAx\n$nodty\n NO2xx",
+                                "$steps\n$bdyty\n RBDY3 x\n$nodty\n NO6xx\n",
+                                "!rigid part\n$bdyty\n MAILx\n",
                                 std::string(300, '!') + "\n" + std::string(300, '$')};
   for (const auto& text : inputs) {
     DiagnosticSink sink;

@@ -1,12 +1,13 @@
 // The law catalogue: 94 LMGC90 ids, names and layouts as in contact-laws.md §0, and every
 // readable row round-trips: a card written from the row parses back to the same law.
+#include "grammar/tact_behav/law_catalogue.hpp"
+
 #include <gtest/gtest.h>
 
 #include <set>
 #include <string>
 #include <vector>
 
-#include "grammar/tact_behav/law_catalogue.hpp"
 #include "grammar/tact_behav/parser.hpp"
 #include "grammar/tact_behav/writer.hpp"
 
@@ -38,7 +39,8 @@ TEST(TactLawCatalogue, EveryParameterIsReadAndWritten) {
     for (const LawField& field : kind.reads)
       for (int slot = 0; slot < field.count; ++slot) ++read.at(field.first + static_cast<std::size_t>(slot));
     for (const LawField& field : kind.writes)
-      for (int slot = 0; slot < field.count; ++slot) ++written.at(field.first + static_cast<std::size_t>(slot));
+      for (int slot = 0; slot < field.count; ++slot)
+        ++written.at(field.first + static_cast<std::size_t>(slot));
     for (std::size_t i = 0; i < kind.parameters.size(); ++i) {
       EXPECT_EQ(read[i], 1) << i;
       EXPECT_EQ(written[i], 1) << i;
@@ -100,7 +102,8 @@ TEST(TactLawCatalogue, EveryRowRoundTripsThroughWriterAndParser) {
     if (!kind.readable) continue;
     SCOPED_TRACE(std::string(kind.keyword));
     std::vector<double> values;
-    for (std::size_t i = 0; i < kind.parameters.size(); ++i) values.push_back(0.125 * static_cast<double>(i + 1));
+    for (std::size_t i = 0; i < kind.parameters.size(); ++i)
+      values.push_back(0.125 * static_cast<double>(i + 1));
     values = values_read_back_from_echo(kind, values);
     TactBehavFile file;
     TactLaw law;
@@ -114,11 +117,13 @@ TEST(TactLawCatalogue, EveryRowRoundTripsThroughWriterAndParser) {
     ASSERT_EQ(back.laws.size(), 1u);
     EXPECT_EQ(back.laws[0].keyword.value, kind.keyword);
     ASSERT_EQ(back.laws[0].parameters.size(), values.size());
-    for (std::size_t i = 0; i < values.size(); ++i) EXPECT_EQ(back.laws[0].parameters[i].value, values[i]) << i;
+    for (std::size_t i = 0; i < values.size(); ++i)
+      EXPECT_EQ(back.laws[0].parameters[i].value, values[i]) << i;
     // A row whose reader takes every printed field exactly once gets all its distinct values back.
     if (kind.quirk.empty() || kind.keyword == "IQS_MAP" || kind.keyword == "IQS_BW_CLB" ||
         kind.keyword == "IQS_SGR_CLB_WEAR") {
-      for (std::size_t i = 0; i < values.size(); ++i) EXPECT_EQ(values[i], 0.125 * static_cast<double>(i + 1));
+      for (std::size_t i = 0; i < values.size(); ++i)
+        EXPECT_EQ(values[i], 0.125 * static_cast<double>(i + 1));
     }
   }
 }

@@ -23,7 +23,8 @@ const std::string kSeeTitle = " cdbdy  cdtac  cdcol  behav  anbdy  antac  ancol 
 
 TEST(TactBehavParserErrors, UnknownLawKeywordPointsAtColumns9To38WithClosestKeyword) {
   DiagnosticSink sink;
-  const auto file = parse("$behav  lawty\n iqsc0  IQS_CLBX                        fric= 0.5000000D+00\n", sink);
+  const auto file =
+      parse("$behav  lawty\n iqsc0  IQS_CLBX                        fric= 0.5000000D+00\n", sink);
   ASSERT_EQ(sink.items().size(), 1u);
   const auto& d = sink.items()[0];
   EXPECT_EQ(d.code, "L1001");
@@ -36,10 +37,11 @@ TEST(TactBehavParserErrors, UnknownLawKeywordPointsAtColumns9To38WithClosestKeyw
 
 TEST(TactBehavParserErrors, GuideOnlyKeywordNamesTheCurrentOne) {
   DiagnosticSink sink;
-  parse("$behav  lawty\n mac01  IQS_MAC_CZM_3D                 dfrc= 0.1000000D+00  sfrc= 0.1000000D+00\n"
-        "                                        cn  = 0.1000000D+01  ct  = 0.1000000D+01\n"
-        "                                        visc= 0.1000000D+01  dupr= 0.1000000D+01\n",
-        sink);
+  parse(
+      "$behav  lawty\n mac01  IQS_MAC_CZM_3D                 dfrc= 0.1000000D+00  sfrc= 0.1000000D+00\n"
+      "                                        cn  = 0.1000000D+01  ct  = 0.1000000D+01\n"
+      "                                        visc= 0.1000000D+01  dupr= 0.1000000D+01\n",
+      sink);
   ASSERT_EQ(sink.items().size(), 1u);
   const auto& d = sink.items()[0];
   EXPECT_EQ(d.code, "L1001");
@@ -59,9 +61,10 @@ TEST(TactBehavParserErrors, MalformedNumberInTheValueField) {
 
 TEST(TactBehavParserErrors, OutOfRangeNumberOnAContinuationLine) {
   DiagnosticSink sink;
-  parse("$behav  lawty\n rstc1  RST_CLB                         rstn= 0.9000000D+00  rstt= 0.100000D+400\n"
-        "                                        fric= 0.5000000D+00\n",
-        sink);
+  parse(
+      "$behav  lawty\n rstc1  RST_CLB                         rstn= 0.9000000D+00  rstt= 0.100000D+400\n"
+      "                                        fric= 0.5000000D+00\n",
+      sink);
   ASSERT_EQ(sink.items().size(), 1u);
   EXPECT_EQ(sink.items()[0].code, "L1003");
   EXPECT_EQ(sink.items()[0].where.span.line, 2u);
@@ -70,7 +73,9 @@ TEST(TactBehavParserErrors, OutOfRangeNumberOnAContinuationLine) {
 
 TEST(TactBehavParserErrors, TruncatedCardAtEndOfFile) {
   DiagnosticSink sink;
-  const auto file = parse("$behav  lawty\n rstc1  RST_CLB                         rstn= 0.9000000D+00  rstt= 0.5000000D+00\n", sink);
+  const auto file = parse(
+      "$behav  lawty\n rstc1  RST_CLB                         rstn= 0.9000000D+00  rstt= 0.5000000D+00\n",
+      sink);
   ASSERT_EQ(sink.items().size(), 1u);
   EXPECT_EQ(sink.items()[0].code, "L1006");
   EXPECT_EQ(sink.items()[0].where.span.line, 2u);
@@ -89,7 +94,8 @@ TEST(TactBehavParserErrors, FileEndsAfterBehavKeyword) {
 
 TEST(TactBehavParserErrors, ValueShiftedOutOfItsColumns) {
   DiagnosticSink sink;
-  const auto file = parse("$behav  lawty\n iqsc0  IQS_CLB                         fric=  0.5000000D+00\n", sink);
+  const auto file =
+      parse("$behav  lawty\n iqsc0  IQS_CLB                         fric=  0.5000000D+00\n", sink);
   ASSERT_EQ(sink.items().size(), 1u);
   EXPECT_EQ(sink.items()[0].code, "L1011");
   EXPECT_EQ(sink.items()[0].where.span.line, 2u);
@@ -100,7 +106,8 @@ TEST(TactBehavParserErrors, ValueShiftedOutOfItsColumns) {
 
 TEST(TactBehavParserErrors, MissingSeeTitleLine) {
   DiagnosticSink sink;
-  const auto file = parse("$seety\n RBDY2  DISKx  BLEUx  iqsc0  RBDY2  DISKx  BLEUx       0.5000000D-03\n", sink);
+  const auto file =
+      parse("$seety\n RBDY2  DISKx  BLEUx  iqsc0  RBDY2  DISKx  BLEUx       0.5000000D-03\n", sink);
   ASSERT_EQ(sink.items().size(), 1u);
   EXPECT_EQ(sink.items()[0].code, "L1012");
   EXPECT_EQ(sink.items()[0].where.span.line, 2u);
@@ -121,7 +128,8 @@ TEST(TactBehavParserErrors, SeeEntryRepeatedWithAnotherLaw) {
 
 TEST(TactBehavParserErrors, MalformedAlertDistance) {
   DiagnosticSink sink;
-  parse("$seety\n" + kSeeTitle + " RBDY2  DISKx  BLEUx  iqsc0  RBDY2  DISKx  BLEUx       0.5OOOOOOD-03\n", sink);
+  parse("$seety\n" + kSeeTitle + " RBDY2  DISKx  BLEUx  iqsc0  RBDY2  DISKx  BLEUx       0.5OOOOOOD-03\n",
+        sink);
   ASSERT_EQ(sink.items().size(), 1u);
   EXPECT_EQ(sink.items()[0].code, "L1002");
   EXPECT_EQ(sink.items()[0].where.span.line, 3u);
@@ -149,12 +157,13 @@ TEST(TactBehavParserErrors, InternalLawIdIsNotReadable) {
 
 TEST(TactBehavParser, ParameterLabelsAreIgnoredOnlyColumnsCount) {
   DiagnosticSink sink;
-  const auto file = parse("$behav  lawty                           data\n"
-                          " rdsc1  RST_DS_CLB                      xxxx= 0.9000000D+00        0.5000000D+00\n"
-                          "! a comment inside the card\n"
-                          "\n"
-                          "                                        dyfr= 0.3000000D+00  stfr= 0.5000000D+00\n",
-                          sink);
+  const auto file = parse(
+      "$behav  lawty                           data\n"
+      " rdsc1  RST_DS_CLB                      xxxx= 0.9000000D+00        0.5000000D+00\n"
+      "! a comment inside the card\n"
+      "\n"
+      "                                        dyfr= 0.3000000D+00  stfr= 0.5000000D+00\n",
+      sink);
   EXPECT_TRUE(sink.items().empty());
   ASSERT_EQ(file.laws.size(), 1u);
   EXPECT_EQ(file.laws[0].nickname.value, "rdsc1");
@@ -169,12 +178,13 @@ TEST(TactBehavParser, ParameterLabelsAreIgnoredOnlyColumnsCount) {
 TEST(TactBehavParser, ShortCardSwallowsTheNextBehavLineAsLmgc90Does) {
   // IQS_WET_DS_CLB reads 2/1/2 values; written 2/2 it takes the next `$behav` line as values.
   DiagnosticSink sink;
-  const auto file = parse("$behav  lawty\n"
-                          " wet01  IQS_WET_DS_CLB                  cohn= 0.2000000D+01  Wthk= 0.1000000D-02\n"
-                          "                                        dyfr= 0.2500000D+00  stfr= 0.5500000D+00\n"
-                          "$behav  lawty\n"
-                          " iqsc0  IQS_CLB                         fric= 0.5000000D+00\n",
-                          sink);
+  const auto file = parse(
+      "$behav  lawty\n"
+      " wet01  IQS_WET_DS_CLB                  cohn= 0.2000000D+01  Wthk= 0.1000000D-02\n"
+      "                                        dyfr= 0.2500000D+00  stfr= 0.5500000D+00\n"
+      "$behav  lawty\n"
+      " iqsc0  IQS_CLB                         fric= 0.5000000D+00\n",
+      sink);
   ASSERT_EQ(file.laws.size(), 1u);
   const auto& p = file.laws[0].parameters;
   EXPECT_EQ(p[1].value, 0.001);  // cohet
@@ -190,9 +200,10 @@ TEST(TactBehavParser, ShortCardSwallowsTheNextBehavLineAsLmgc90Does) {
 
 TEST(TactBehavParser, PerioDofReadsTheSameFieldThreeTimes) {
   DiagnosticSink sink;
-  const auto file = parse("$behav  lawty\n pdof1  PERIO_DOF                       E_XX= 0.1000000D-01\n"
-                          "                                        E_YY= 0.2000000D-01\n",
-                          sink);
+  const auto file = parse(
+      "$behav  lawty\n pdof1  PERIO_DOF                       E_XX= 0.1000000D-01\n"
+      "                                        E_YY= 0.2000000D-01\n",
+      sink);
   ASSERT_EQ(file.laws.size(), 1u);
   ASSERT_EQ(file.laws[0].parameters.size(), 3u);
   for (const auto& value : file.laws[0].parameters) EXPECT_EQ(value.value, 0.01);
@@ -203,9 +214,10 @@ TEST(TactBehavParser, PerioDofReadsTheSameFieldThreeTimes) {
 
 TEST(TactBehavParser, ElasticWetNtReadsItsThirdPairFromTheSecondLine) {
   DiagnosticSink sink;
-  const auto file = parse("$behav  lawty\n ewnt1  ELASTIC_WET_NT                  kn  = 0.1000000D+01  kt  = 0.2000000D+01\n"
-                          "                                        dmpn= 0.3000000D+01  dmpt= 0.4000000D+01\n",
-                          sink);
+  const auto file = parse(
+      "$behav  lawty\n ewnt1  ELASTIC_WET_NT                  kn  = 0.1000000D+01  kt  = 0.2000000D+01\n"
+      "                                        dmpn= 0.3000000D+01  dmpt= 0.4000000D+01\n",
+      sink);
   EXPECT_TRUE(sink.items().empty());
   ASSERT_EQ(file.laws.size(), 1u);
   const auto& p = file.laws[0].parameters;
@@ -215,12 +227,13 @@ TEST(TactBehavParser, ElasticWetNtReadsItsThirdPairFromTheSecondLine) {
 
 TEST(TactBehavParser, SeeBlockWithGlobalAlertAndObsoleteNames) {
   DiagnosticSink sink;
-  const auto file = parse("$seety\n" + kSeeTitle +
-                              " MAILx  CSxxx  xxxxx  czmc0  MAILx  ASpxx  xxxxx       0.1000000e-01\n"
-                              "+                                                      0.1000000e+01\n"
-                              "$seety\n" + kSeeTitle +
-                              " DISKx  BDARY  BLEUx  iqsc1  JONCx  BDARY  UPxxx       0.5000000D-00\n",
-                          sink);
+  const auto file =
+      parse("$seety\n" + kSeeTitle +
+                " MAILx  CSxxx  xxxxx  czmc0  MAILx  ASpxx  xxxxx       0.1000000e-01\n"
+                "+                                                      0.1000000e+01\n"
+                "$seety\n" +
+                kSeeTitle + " DISKx  BDARY  BLEUx  iqsc1  JONCx  BDARY  UPxxx       0.5000000D-00\n",
+            sink);
   EXPECT_TRUE(sink.items().empty());
   ASSERT_EQ(file.sees.size(), 2u);
   EXPECT_EQ(file.sees[0].candidate_contactor.value, "CSxxx");
@@ -233,7 +246,8 @@ TEST(TactBehavParser, SeeBlockWithGlobalAlertAndObsoleteNames) {
 
 TEST(TactBehavParser, KeywordNotInColumns2To6IsNotACard) {
   DiagnosticSink sink;
-  const auto file = parse(" $behav  lawty\n wet01  IQS_CLB                         fric= 0.5000000D+00\n", sink);
+  const auto file =
+      parse(" $behav  lawty\n wet01  IQS_CLB                         fric= 0.5000000D+00\n", sink);
   EXPECT_TRUE(file.laws.empty());
   ASSERT_EQ(sink.items().size(), 2u);
   EXPECT_EQ(sink.items()[0].code, "L1019");
@@ -244,8 +258,8 @@ TEST(TactBehavParser, KeywordNotInColumns2To6IsNotACard) {
 // ---------------------------------------------------------------------------------------------
 // LMGC90's see table order and the echo layout.
 
-SeeEntry see(const std::string& cdtac, const std::string& cdcol, const std::string& law, const std::string& antac,
-             const std::string& ancol) {
+SeeEntry see(const std::string& cdtac, const std::string& cdcol, const std::string& law,
+             const std::string& antac, const std::string& ancol) {
   SeeEntry entry;
   entry.candidate_body = std::string("RBDY2");
   entry.candidate_contactor = cdtac;
@@ -259,10 +273,10 @@ SeeEntry see(const std::string& cdtac, const std::string& cdcol, const std::stri
 }
 
 TEST(TactBehavSeeOrder, SortsByAntagonistThenColourAndDropsDuplicates) {
-  const std::vector<SeeEntry> input = {see("DISKx", "BLEUx", "iqsc1", "DISKx", "BLEUx"),
-                                       see("DISKx", "BLEUx", "iqsc0", "JONCx", "UPxxx"),
-                                       see("DISKx", "BLEUx", "iqsc0", "JONCx", "DOWNx"),
-                                       see("JONCx", "DOWNx", "iqsc0", "DISKx", "BLEUx")};  // swapped duplicate
+  const std::vector<SeeEntry> input = {
+      see("DISKx", "BLEUx", "iqsc1", "DISKx", "BLEUx"), see("DISKx", "BLEUx", "iqsc0", "JONCx", "UPxxx"),
+      see("DISKx", "BLEUx", "iqsc0", "JONCx", "DOWNx"),
+      see("JONCx", "DOWNx", "iqsc0", "DISKx", "BLEUx")};  // swapped duplicate
   const auto order = lmgc90_see_order(input);
   ASSERT_EQ(order.size(), 3u);
   EXPECT_EQ(order[0].antagonist_contactor.value, "DISKx");

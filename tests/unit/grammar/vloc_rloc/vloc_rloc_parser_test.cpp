@@ -1,12 +1,11 @@
 // Vloc_Rloc: the interaction catalogue, interaction blocks by module (2D, 3D, xxl, internal
 // variables), and broken files with their exact diagnostic.
-#include "grammar/vloc_rloc/parser.hpp"
-
 #include <gtest/gtest.h>
 
 #include <map>
 
 #include "grammar/vloc_rloc/interaction_catalogue.hpp"
+#include "grammar/vloc_rloc/parser.hpp"
 #include "grammar/vloc_rloc/writer.hpp"
 
 namespace lmgc::grammar {
@@ -47,7 +46,8 @@ VlocRlocFile parse(const std::string& text, DiagnosticSink& sink) {
   return parse_vloc_rloc(SourceText("Vloc_Rloc.LAST", text), sink);
 }
 
-void expect_diagnostic(const std::string& text, const std::string& code, std::uint32_t line, std::uint32_t column) {
+void expect_diagnostic(const std::string& text, const std::string& code, std::uint32_t line,
+                       std::uint32_t column) {
   DiagnosticSink sink;
   parse_vloc_rloc(SourceText("Vloc_Rloc.INI", text), sink);
   ASSERT_FALSE(sink.items().empty());
@@ -59,10 +59,11 @@ void expect_diagnostic(const std::string& text, const std::string& code, std::ui
 TEST(VlocRlocCatalogue, TitlesHaveTheWidthLmgcWritesThemWith) {
   // The A-format width of each module's title line (state-and-outputs.md §1.4.1, §1.4.2).
   const std::map<std::string, std::size_t> widths = {
-      {"DKDKx", 76}, {"DKJCx", 76}, {"DKKDx", 76}, {"DKDKL", 76}, {"CLJCx", 76}, {"PTPT2", 76}, {"P2P2L", 76},
-      {"CLALp", 83}, {"DKALp", 89}, {"DKPLx", 103}, {"PLJCx", 103}, {"PLPLx", 90}, {"PLALp", 103},
-      {"PRPRx", 76}, {"PRPLx", 76}, {"PRASp", 76}, {"SPSPx", 76}, {"SPPLx", 76}, {"CDCDx", 76}, {"CDPLx", 76},
-      {"SPCDx", 76}, {"SPDCx", 76}, {"SPPRx", 69}, {"CSASx", 69}, {"CSPRx", 76}, {"PTPT3", 76}};
+      {"DKDKx", 76},  {"DKJCx", 76}, {"DKKDx", 76}, {"DKDKL", 76},  {"CLJCx", 76},  {"PTPT2", 76},
+      {"P2P2L", 76},  {"CLALp", 83}, {"DKALp", 89}, {"DKPLx", 103}, {"PLJCx", 103}, {"PLPLx", 90},
+      {"PLALp", 103}, {"PRPRx", 76}, {"PRPLx", 76}, {"PRASp", 76},  {"SPSPx", 76},  {"SPPLx", 76},
+      {"CDCDx", 76},  {"CDPLx", 76}, {"SPCDx", 76}, {"SPDCx", 76},  {"SPPRx", 69},  {"CSASx", 69},
+      {"CSPRx", 76},  {"PTPT3", 76}};
   std::size_t normal = 0;
   for (const InteractionKind& kind : interaction_catalogue()) {
     SCOPED_TRACE(std::string(kind.type));
@@ -232,7 +233,9 @@ TEST(VlocRlocParser, EveryTruncationOfAFileIsReadWithoutCrashing) {
 }
 
 // Broken inputs: one diagnostic each, with its exact code and position.
-TEST(VlocRlocBroken, MissingStepsHeader) { expect_diagnostic("! nothing\n!\n" + kBlock, "L1012", 3, 2); }
+TEST(VlocRlocBroken, MissingStepsHeader) {
+  expect_diagnostic("! nothing\n!\n" + kBlock, "L1012", 3, 2);
+}
 TEST(VlocRlocBroken, UnknownModule) {
   std::string t = kHeader + kBlock;
   t.replace(t.find("DKDKx"), 5, "DKXXx");
@@ -248,7 +251,9 @@ TEST(VlocRlocBroken, MalformedBodyNumber) {
   t.replace(t.find("  844  DISKx"), 5, "  8x4");
   expect_diagnostic(t, "L1004", 9, 44);
 }
-TEST(VlocRlocBroken, TruncatedBlock) { expect_diagnostic(kHeader + "$icdan  DKDKx        1\n", "L1006", 7, 23); }
+TEST(VlocRlocBroken, TruncatedBlock) {
+  expect_diagnostic(kHeader + "$icdan  DKDKx        1\n", "L1006", 7, 23);
+}
 TEST(VlocRlocBroken, MalformedStepTime) {
   std::string t = kHeader + kBlock;
   t.replace(t.find("0.6000000D-01"), 13, "0.6000000D-X1");
@@ -262,8 +267,9 @@ TEST(VlocRlocBroken, MissingGapLine) {
   expect_diagnostic(t, "L1012", 12, 30);
 }
 TEST(VlocRlocBroken, MissingDataLine) {
-  const std::string t = kHeader + "$icdan  DKDKx        1\n"
-                                  " cdbdy  numbr  cdtac  numbr  behav  anbdy  numbr  antac  numbr  sttus   iadj\n" +
+  const std::string t = kHeader +
+                        "$icdan  DKDKx        1\n"
+                        " cdbdy  numbr  cdtac  numbr  behav  anbdy  numbr  antac  numbr  sttus   iadj\n" +
                         kBlock;
   expect_diagnostic(t, "L1012", 9, 1);
 }
