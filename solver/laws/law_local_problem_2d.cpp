@@ -35,39 +35,6 @@ void gap_form(Interaction2D& c, double h) {
   c.covfree(1) = c.gap_begin / h;
 }
 
-ContactStatus wet(ContactStatus s) {
-  switch (s) {
-    case ContactStatus::nknow:
-      return ContactStatus::Wnnow;
-    case ContactStatus::noctc:
-      return ContactStatus::Wnctc;
-    case ContactStatus::stick:
-      return ContactStatus::Wstck;
-    case ContactStatus::slibw:
-      return ContactStatus::Wslbw;
-    case ContactStatus::slifw:
-      return ContactStatus::Wslfw;
-    default:
-      return s;
-  }
-}
-ContactStatus dry(ContactStatus s) {
-  switch (s) {
-    case ContactStatus::Wnnow:
-      return ContactStatus::nknow;
-    case ContactStatus::Wnctc:
-      return ContactStatus::noctc;
-    case ContactStatus::Wstck:
-      return ContactStatus::stick;
-    case ContactStatus::Wslbw:
-      return ContactStatus::slibw;
-    case ContactStatus::Wslfw:
-      return ContactStatus::slifw;
-    default:
-      return s;
-  }
-}
-
 // Cohesion c (force) acting through the normal: rr_n = r_n + c h >= 0 (§3.2).
 void add_cohesion(Interaction2D& c, double cohesion, double h) {
   c.covfree(0) -= cohesion * h * c.W(0, 1);
@@ -154,7 +121,7 @@ void prepare_local_problem_2d(const ContactLaw& law, Interaction2D& c, double h)
                  },
                  [&](const IqsWetDsClb& p) {
                    if (c.gap_begin <= p.wethk) {
-                     c.status_begin = wet(c.status_begin);
+                     c.status_begin = wet_status(c.status_begin);
                      iqs_form(c, h);
                      add_cohesion(c, p.cohen, h);
                    } else {
@@ -208,7 +175,7 @@ LocalSolution2D solve_local_problem_2d(const ContactLaw& law, const Interaction2
   }
   s = solve_signorini_coulomb_2d(c.WW, vv, c.mu);
   s.r += c.correction;
-  if (is_wet_law(law) && !(c.correction.array() == 0.0).all()) s.status = wet(s.status);
+  if (is_wet_law(law) && !(c.correction.array() == 0.0).all()) s.status = wet_status(s.status);
   return s;
 }
 
@@ -243,7 +210,7 @@ void finish_step_2d(const ContactLaw& law, Interaction2D& c, double h, double ti
                      c.status = ContactStatus::Mstck;
                  },
                  [&](const IqsWetDsClb&) {
-                   if (c.correction(1) == 0.0) c.status = dry(c.status);
+                   if (c.correction(1) == 0.0) c.status = dry_status(c.status);
                  },
                  [&](const auto&) {},
              },

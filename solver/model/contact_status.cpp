@@ -43,4 +43,55 @@ bool is_sliding(ContactStatus s) {
   }
 }
 
+ContactStatus wet_status(ContactStatus s) {
+  switch (s) {
+    case ContactStatus::nknow:
+      return ContactStatus::Wnnow;
+    case ContactStatus::noctc:
+      return ContactStatus::Wnctc;
+    case ContactStatus::stick:
+      return ContactStatus::Wstck;
+    case ContactStatus::slibw:
+      return ContactStatus::Wslbw;
+    case ContactStatus::slifw:
+      return ContactStatus::Wslfw;
+    default:
+      return s;
+  }
+}
+
+ContactStatus dry_status(ContactStatus s) {
+  switch (s) {
+    case ContactStatus::Wnnow:
+      return ContactStatus::nknow;
+    case ContactStatus::Wnctc:
+      return ContactStatus::noctc;
+    case ContactStatus::Wstck:
+      return ContactStatus::stick;
+    case ContactStatus::Wslbw:
+      return ContactStatus::slibw;
+    case ContactStatus::Wslfw:
+      return ContactStatus::slifw;
+    default:
+      return s;
+  }
+}
+
+ContactStatus cohesive_status(ContactStatus s) {
+  switch (s) {
+    case ContactStatus::nknow:
+      return ContactStatus::Cnnow;
+    case ContactStatus::noctc:
+      return ContactStatus::Cnctc;
+    case ContactStatus::stick:
+      return ContactStatus::Cstck;
+    case ContactStatus::slibw:
+      return ContactStatus::Cslbw;
+    case ContactStatus::slifw:
+      return ContactStatus::Cslfw;
+    default:
+      return s;
+  }
+}
+
 }  // namespace lmgc::solver

@@ -35,6 +35,12 @@ enum class ContactStatus : std::uint8_t {
 };
 
 std::string_view status_name(ContactStatus status);
+
+// The same contact state under a wet (IQS_WET_DS_CLB) or cohesive (MAC_CZM) law, and back:
+// nknow/noctc/stick/slibw/slifw <-> W... / C...; other statuses are returned unchanged.
+ContactStatus wet_status(ContactStatus status);
+ContactStatus dry_status(ContactStatus status);
+ContactStatus cohesive_status(ContactStatus status);
 // nullopt-like: returns false when `name` is not a status.
 bool status_from_name(std::string_view name, ContactStatus& status);
 

@@ -71,36 +71,6 @@ Matrix2d delassus_block(const Interaction2D& c, const std::vector<Vector3d>& inv
   return W;
 }
 
-ContactStatus cohesive_status(ContactStatus s) {
-  switch (s) {
-    case ContactStatus::noctc:
-      return ContactStatus::Cnctc;
-    case ContactStatus::stick:
-      return ContactStatus::Cstck;
-    case ContactStatus::slibw:
-      return ContactStatus::Cslbw;
-    case ContactStatus::slifw:
-      return ContactStatus::Cslfw;
-    default:
-      return s;
-  }
-}
-
-ContactStatus wet_status(ContactStatus s) {
-  switch (s) {
-    case ContactStatus::noctc:
-      return ContactStatus::Wnctc;
-    case ContactStatus::stick:
-      return ContactStatus::Wstck;
-    case ContactStatus::slibw:
-      return ContactStatus::Wslbw;
-    case ContactStatus::slifw:
-      return ContactStatus::Wslfw;
-    default:
-      return s;
-  }
-}
-
 // The cohesive-zone reaction (contact-laws.md §3.5): with A = (I − WW K)⁻¹ the auxiliary
 // problem is uu = A (v + WW radh) + A WW rr, solved for rr; then r = rr + radh + K uu.
 // Out of line: rare, and its 2×2 inverse would bloat the sweep's hot loop.
