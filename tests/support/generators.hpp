@@ -32,4 +32,24 @@ inline rc::Gen<std::string> gen_word(int length = 5) {
       rc::gen::elementOf(std::string("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_")));
 }
 
+// Canonical text damaged in 1 to 7 places: a byte overwritten by one that matters to the
+// readers, up to 40 bytes cut, or a line broken in two (robustness properties).
+inline std::string damaged_text(std::string text) {
+  for (int k = 0, n = *rc::gen::inRange(1, 8); k < n && !text.empty(); ++k) {
+    const std::size_t at = *rc::gen::inRange<std::size_t>(0, text.size());
+    switch (*rc::gen::inRange(0, 3)) {
+      case 0:
+        text[at] = *rc::gen::elementOf(std::string("x0.-+D$! \n\t"));
+        break;
+      case 1:
+        text.erase(at, *rc::gen::inRange<std::size_t>(1, 40));
+        break;
+      default:
+        text.insert(at, "\n");
+        break;
+    }
+  }
+  return text;
+}
+
 }  // namespace lmgc::test

@@ -58,21 +58,7 @@ RC_GTEST_PROP(ModelsRoundTrip, WriteOfParseOfCanonicalTextIsIdentity, ()) {
 // The parser never throws nor crashes: canonical text with random bytes overwritten, lines cut
 // short or dropped still parses (diagnostics are allowed).
 RC_GTEST_PROP(ModelsRobustness, ParserNeverCrashesOnDamagedText, ()) {
-  std::string text = write_models(generated());
-  for (int k = 0, n = *rc::gen::inRange(1, 8); k < n && !text.empty(); ++k) {
-    const std::size_t at = *rc::gen::inRange<std::size_t>(0, text.size());
-    switch (*rc::gen::inRange(0, 3)) {
-      case 0:
-        text[at] = *rc::gen::elementOf(std::string("x0.-+D$! \n\t"));
-        break;
-      case 1:
-        text.erase(at, *rc::gen::inRange<std::size_t>(1, 40));
-        break;
-      default:
-        text.insert(at, "\n");
-        break;
-    }
-  }
+  const std::string text = test::damaged_text(write_models(generated()));
   DiagnosticSink sink;
   parse_models(SourceText("DAMAGED", text), sink);
   RC_SUCCEED();
