@@ -39,4 +39,13 @@ inline std::filesystem::path scratch_dir(const std::string& name) {
   return dir;
 }
 
+// A scratch folder holding a copy of the shipped default case's DATBOX/ (never the original).
+inline std::filesystem::path default_case_copy(const std::string& name) {
+  const auto dir = scratch_dir(name);
+  std::filesystem::copy(
+      std::filesystem::path(LMGC_SOURCE_DIR) / "reference_cases" / "disk_bounce_rst" / "DATBOX",
+      dir / "DATBOX", std::filesystem::copy_options::recursive);
+  return dir;
+}
+
 }  // namespace lmgc::test

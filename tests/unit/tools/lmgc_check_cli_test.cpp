@@ -12,14 +12,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Copies the shipped default case into a scratch folder.
-fs::path default_case_copy(const std::string& name) {
-  const fs::path dir = scratch_dir(name);
-  fs::copy(fs::path(LMGC_SOURCE_DIR) / "reference_cases" / "disk_bounce_rst" / "DATBOX", dir / "DATBOX",
-           fs::copy_options::recursive);
-  return dir;
-}
-
 void write(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
 }

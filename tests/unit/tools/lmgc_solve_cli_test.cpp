@@ -14,13 +14,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path default_case_copy(const std::string& name) {
-  const fs::path dir = scratch_dir(name);
-  fs::copy(fs::path(LMGC_SOURCE_DIR) / "reference_cases" / "disk_bounce_rst" / "DATBOX", dir / "DATBOX",
-           fs::copy_options::recursive);
-  return dir;
-}
-
 std::map<std::string, std::string> folder_contents(const fs::path& dir) {
   std::map<std::string, std::string> contents;
   for (const auto& e : fs::directory_iterator(dir))
