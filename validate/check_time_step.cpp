@@ -21,6 +21,7 @@
 
 #include "grammar/command/expand.hpp"
 #include "grammar/tact_behav/law_catalogue.hpp"
+#include "spatial/multilevel_grid.hpp"
 #include "validate/case_index.hpp"
 #include "validate/checks.hpp"
 #include "validate/rigid_layout.hpp"
@@ -154,7 +155,7 @@ std::optional<Fall> worst_fall(const CaseFiles& files, const RigidLayout& layout
   if (radii.empty()) return std::nullopt;
   std::nth_element(radii.begin(), radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2), radii.end());
   const double w = 2.0 * radii[radii.size() / 2];
-  auto column = [&](double x) { return grid_index(x, w); };
+  auto column = [&](double x) { return spatial::grid_index(x, w); };
   std::unordered_map<std::int64_t, std::vector<Obstacle>> columns;  // key: column (2D), column pair (3D)
   auto key = [](std::int64_t a, std::int64_t b) { return a * 1'000'003 + b; };
   std::vector<Obstacle> capsules, wide;

@@ -146,13 +146,6 @@ RigidLayout place_rigid_contactors(const CaseFiles& files) {
   return layout;
 }
 
-std::int64_t grid_index(double x, double cell) {
-  constexpr double kLimit = 1099511627776.0;  // 2^40
-  const double q = std::floor(x / cell);
-  if (!(q == q)) return 0;
-  return static_cast<std::int64_t>(std::max(-kLimit, std::min(kLimit, q)));
-}
-
 double penetration(const PlacedContactor& a, const PlacedContactor& b) {
   const PlacedContactor* round = &a;
   const PlacedContactor* other = &b;

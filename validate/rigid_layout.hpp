@@ -44,10 +44,6 @@ struct RigidLayout {
 
 RigidLayout place_rigid_contactors(const CaseFiles& files);
 
-// floor(x / cell) as a grid index, clamped to +-2^40 (a coordinate of 1e300 must not overflow the
-// conversion); 0 for NaN.
-std::int64_t grid_index(double x, double cell);
-
 // Penetration depth of two placed contactors (> 0: they overlap by that much), for the pairs
 // disk-disk, disk-stadium, sphere-sphere and sphere-box; nullopt-like NaN for other pairs.
 double penetration(const PlacedContactor& a, const PlacedContactor& b);

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "solver/detection/pair_geometry_2d.hpp"
+#include "spatial/multilevel_grid.hpp"
 
 namespace lmgc::solver {
 namespace {
@@ -112,18 +113,17 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
           q + orientation[i] * scene.vertices[static_cast<std::size_t>(c.first_vertex + k)];
   };
 
-  // Rough detection: grid of cells of size 2·R_typical + alert; contactors larger than a cell are
-  // "big" and tested against every other (as LMGC90 does for big disks).
-  std::vector<double> radii;
-  radii.reserve(n);
-  for (const auto& c : scene.contactors) radii.push_back(c.bounding_radius);
-  std::vector<double> sorted = radii;
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(n / 2), sorted.end());
-  const double typical = std::max(sorted[n / 2], 1e-12);
-  const double cell = 2.0 * 1.5 * typical + index.max_alert;
-  std::vector<std::size_t> small, big;
-  for (std::size_t i = 0; i < n; ++i) (radii[i] * 2.0 > cell ? big : small).push_back(i);
-
+  // Rough detection on the spatial grid shared with lmgc-check (spatial/multilevel_grid.hpp):
+  // every pair whose bounding circles, grown by the largest alert distance, may meet.
+  std::vector<double> radii(n);
+  std::vector<Vector3d> grid_centres(n);
+  std::vector<std::uint8_t> in_grid(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Contactor2D& c = scene.contactors[i];
+    radii[i] = c.bounding_radius;
+    grid_centres[i] = Vector3d(centre[i].x(), centre[i].y(), 0.0);
+    in_grid[i] = scene.bodies.visible[static_cast<std::size_t>(c.body)];
+  }
   // Rough pairs (i < j); `shift` moves j by that many periods (periodic pairs only).
   struct RoughPair {
     std::size_t i, j;
@@ -147,42 +147,11 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
     if ((centre[i] - centre[j]).squaredNorm() > reach * reach) return;
     rough.push_back({std::min(i, j), std::max(i, j), 0});
   };
-  if (!small.empty()) {
-    Vector2d lo = centre[small[0]], hi = lo;
-    for (std::size_t i : small) {
-      lo = lo.cwiseMin(centre[i]);
-      hi = hi.cwiseMax(centre[i]);
-    }
-    // Cells as (key, contactor) pairs sorted by key: deterministic and allocation-light.
-    const auto ny = static_cast<std::int64_t>(std::floor((hi.y() - lo.y()) / cell)) + 3;
-    auto key = [&](std::int64_t x, std::int64_t y) { return x * ny + y; };
-    std::vector<std::pair<std::int64_t, std::uint32_t>> cells;
-    cells.reserve(small.size());
-    std::vector<std::pair<std::int64_t, std::int64_t>> where(n);
-    for (std::size_t i : small) {
-      const auto x = static_cast<std::int64_t>(std::floor((centre[i].x() - lo.x()) / cell)) + 1;
-      const auto y = static_cast<std::int64_t>(std::floor((centre[i].y() - lo.y()) / cell)) + 1;
-      where[i] = {x, y};
-      cells.emplace_back(key(x, y), static_cast<std::uint32_t>(i));
-    }
-    std::sort(cells.begin(), cells.end());
-    for (std::size_t i : small) {
-      const auto [x, y] = where[i];
-      for (std::int64_t dx = -1; dx <= 1; ++dx)
-        for (std::int64_t dy = -1; dy <= 1; ++dy) {
-          const std::int64_t k = key(x + dx, y + dy);
-          auto it = std::lower_bound(cells.begin(), cells.end(), std::make_pair(k, std::uint32_t{0}));
-          for (; it != cells.end() && it->first == k; ++it)
-            if (it->second > i) consider(i, it->second);
-        }
-    }
-  }
-  // Big contactors against every other one (a pair of two big ones once).
-  std::vector<std::uint8_t> is_big(n, 0);
-  for (std::size_t b : big) is_big[b] = 1;
-  for (std::size_t b : big)
-    for (std::size_t j = 0; j < n; ++j)
-      if (j != b && !(is_big[j] && j < b)) consider(std::min(b, j), std::max(b, j));
+  spatial::MultilevelGrid grid;
+  grid.build(grid_centres, radii, in_grid, index.max_alert);
+  grid.for_each_candidate_pair(grid_centres, radii, index.max_alert, [&](std::size_t i, std::size_t j) {
+    consider(std::min(i, j), std::max(i, j));
+  });
   // Periodic in x: contactors near the right edge against images of those near the left edge
   // (docs/lmgc90-facts/rigid-2d.md §6). JONCx and points have no periodic pairs in LMGC90.
   if (scene.x_period > 0.0) {
@@ -212,8 +181,8 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
           rough.push_back({b, a, -1});
       }
   }
-  if (!big.empty() || scene.x_period > 0.0) {
-    // Only pairs with a big contactor (or periodic images) can be found twice.
+  if (scene.x_period > 0.0) {
+    // The grid gives each pair once; only periodic images can repeat one.
     std::sort(rough.begin(), rough.end());
     rough.erase(std::unique(rough.begin(), rough.end()), rough.end());
   }

@@ -1,0 +1,134 @@
+#pragma once
+// The spatial grid of lmgc: uniform grids, one per power-of-two level of bounding radius, so that
+// a few large contactors among many small ones (walls, hoppers, big disks) do not make every cell
+// large. Used by the solver's rough detection and by lmgc-check's initial-overlap check, so that
+// both find the same candidate pairs; linear in the number of items. Points are 3D (2D scenes
+// pass z = 0).
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <compare>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace lmgc::spatial {
+
+// The cell index of coordinate x, clamped so that absurd coordinates cannot overflow.
+inline std::int64_t grid_index(double x, double cell) {
+  constexpr double kLimit = 1099511627776.0;  // 2^40
+  const double q = std::floor(x / cell);
+  if (!(q == q)) return 0;
+  return static_cast<std::int64_t>(std::max(-kLimit, std::min(kLimit, q)));
+}
+
+class MultilevelGrid {
+ public:
+  // Items with a finite centre and a finite radius >= 0 are placed (`placed[i]` false skips one);
+  // radius r goes to level floor(log2(r / smallest positive radius)) (level 0 for points).
+  // Cells are twice the largest radius of their level, and at least `min_cell`.
+  void build(std::span<const Eigen::Vector3d> centres, std::span<const double> radii,
+             std::span<const std::uint8_t> placed, double min_cell) {
+    levels_.clear();
+    level_of_.assign(centres.size(), -1);
+    double smallest = 0.0;
+    for (std::size_t i = 0; i < centres.size(); ++i)
+      if (usable(centres, radii, placed, i) && radii[i] > 0.0)
+        smallest = smallest == 0.0 ? radii[i] : std::min(smallest, radii[i]);
+    for (std::size_t i = 0; i < centres.size(); ++i) {
+      if (!usable(centres, radii, placed, i)) continue;
+      const int level = smallest > 0.0 && radii[i] > smallest
+                            ? static_cast<int>(std::min(60.0, std::floor(std::log2(radii[i] / smallest))))
+                            : 0;
+      level_of_[i] = level;
+      if (static_cast<int>(levels_.size()) <= level) levels_.resize(static_cast<std::size_t>(level) + 1);
+      Level& l = levels_[static_cast<std::size_t>(level)];
+      l.largest_radius = std::max(l.largest_radius, radii[i]);
+    }
+    for (Level& l : levels_) l.cell = std::max({2.0 * l.largest_radius, min_cell, 1e-300});
+    for (std::size_t i = 0; i < centres.size(); ++i)
+      if (level_of_[i] >= 0) {
+        Level& l = levels_[static_cast<std::size_t>(level_of_[i])];
+        l.entries.push_back({l.cell_of(centres[i]), i});
+      }
+    for (Level& l : levels_)
+      std::sort(l.entries.begin(), l.entries.end(), [](const Entry& p, const Entry& q) {
+        return p.cell < q.cell || (p.cell == q.cell && p.item < q.item);
+      });
+  }
+
+  int level_of(std::size_t i) const { return level_of_[i]; }
+  std::size_t level_count() const { return levels_.size(); }
+
+  // Calls f(j) for every item j of `level` whose cell meets the box [lo, hi] grown by the level's
+  // largest radius (a superset of the items whose sphere meets the box). Walks the whole level
+  // instead when the box covers more cells than the level has items.
+  template <class F>
+  void for_each_near(std::size_t level, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, F&& f) const {
+    const Level& l = levels_[level];
+    const Eigen::Vector3d grow = Eigen::Vector3d::Constant(l.largest_radius);
+    const Cell a = l.cell_of(lo - grow), b = l.cell_of(hi + grow);
+    const double span = double(b.x - a.x + 1) * double(b.y - a.y + 1) * double(b.z - a.z + 1);
+    if (span > double(l.entries.size())) {
+      for (const Entry& e : l.entries)
+        if (e.cell.x >= a.x && e.cell.x <= b.x && e.cell.y >= a.y && e.cell.y <= b.y && e.cell.z >= a.z &&
+            e.cell.z <= b.z)
+          f(e.item);
+      return;
+    }
+    // Entries are sorted by (x, y, z): one binary search per (x, y) column of the box.
+    for (std::int64_t x = a.x; x <= b.x; ++x)
+      for (std::int64_t y = a.y; y <= b.y; ++y) {
+        auto it = std::lower_bound(l.entries.begin(), l.entries.end(), Cell{x, y, a.z},
+                                   [](const Entry& e, const Cell& c) { return e.cell < c; });
+        for (; it != l.entries.end() && it->cell.x == x && it->cell.y == y && it->cell.z <= b.z; ++it)
+          f(it->item);
+      }
+  }
+
+  // Calls f(i, j) once for every pair of placed items whose spheres, grown by `margin`, may meet:
+  // each item against its own level (j > i) and the larger levels.
+  template <class F>
+  void for_each_candidate_pair(std::span<const Eigen::Vector3d> centres, std::span<const double> radii,
+                               double margin, F&& f) const {
+    for (std::size_t i = 0; i < level_of_.size(); ++i) {
+      const int li = level_of_[i];
+      if (li < 0) continue;
+      const Eigen::Vector3d reach = Eigen::Vector3d::Constant(radii[i] + margin);
+      for (std::size_t l = static_cast<std::size_t>(li); l < levels_.size(); ++l)
+        for_each_near(l, centres[i] - reach, centres[i] + reach, [&](std::size_t j) {
+          if (level_of_[j] > li || j > i) f(i, j);
+        });
+    }
+  }
+
+ private:
+  struct Cell {
+    std::int64_t x, y, z;
+    friend auto operator<=>(const Cell&, const Cell&) = default;
+  };
+  // A cell list sorted by cell then item: deterministic, and no allocation per cell.
+  struct Entry {
+    Cell cell;
+    std::size_t item;
+  };
+  struct Level {
+    double largest_radius = 0.0;
+    double cell = 0.0;
+    std::vector<Entry> entries;
+    Cell cell_of(const Eigen::Vector3d& p) const {
+      return {grid_index(p.x(), cell), grid_index(p.y(), cell), grid_index(p.z(), cell)};
+    }
+  };
+
+  static bool usable(std::span<const Eigen::Vector3d> centres, std::span<const double> radii,
+                     std::span<const std::uint8_t> placed, std::size_t i) {
+    return (placed.empty() || placed[i]) && centres[i].allFinite() && std::isfinite(radii[i]) &&
+           radii[i] >= 0.0;
+  }
+
+  std::vector<Level> levels_;
+  std::vector<int> level_of_;
+};
+
+}  // namespace lmgc::spatial
