@@ -1,0 +1,46 @@
+// The shared spatial grid finds every pair of items whose spheres, grown by the margin, overlap
+// (compared with the all-pairs search) and gives each candidate pair exactly once.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <set>
+
+#include "spatial/multilevel_grid.hpp"
+
+namespace lmgc::spatial {
+namespace {
+
+RC_GTEST_PROP(MultilevelGrid, FindsEveryOverlappingPairExactlyOnce, ()) {
+  const int count = *rc::gen::inRange(0, 120);
+  const bool flat = *rc::gen::arbitrary<bool>();  // 2D scenes pass z = 0
+  std::vector<Eigen::Vector3d> centres;
+  std::vector<double> radii;
+  for (int i = 0; i < count; ++i) {
+    auto coordinate = [] { return *rc::gen::inRange(-1000, 1000) / 100.0; };
+    centres.emplace_back(coordinate(), coordinate(), flat ? 0.0 : coordinate());
+    // Mostly small items, a few very large ones (walls), some points.
+    const int kind = *rc::gen::inRange(0, 10);
+    radii.push_back(kind == 0   ? 0.0
+                    : kind == 1 ? *rc::gen::inRange(100, 800) / 100.0
+                                : *rc::gen::inRange(1, 60) / 100.0);
+  }
+  const double margin = *rc::gen::inRange(0, 30) / 100.0;
+  MultilevelGrid grid;
+  grid.build(centres, radii, {}, margin);
+  std::set<std::pair<std::size_t, std::size_t>> found;
+  std::size_t calls = 0;
+  grid.for_each_candidate_pair(centres, radii, margin, [&](std::size_t i, std::size_t j) {
+    ++calls;
+    found.insert({std::min(i, j), std::max(i, j)});
+    RC_ASSERT(i != j);
+  });
+  RC_ASSERT(calls == found.size());  // no pair twice
+  for (std::size_t i = 0; i < centres.size(); ++i)
+    for (std::size_t j = i + 1; j < centres.size(); ++j) {
+      const double reach = radii[i] + radii[j] + margin;
+      if ((centres[i] - centres[j]).norm() <= reach) RC_ASSERT(found.count({i, j}) == 1u);
+    }
+}
+
+}  // namespace
+}  // namespace lmgc::spatial
