@@ -7,8 +7,11 @@
 #include <vector>
 
 #include "grammar/common/fortran_number.hpp"
+#include "grammar/common/list_directed.hpp"
 
 namespace lmgc::grammar::chic {
+
+using grammar::list_items;
 
 inline bool starts_with(std::string_view text, std::string_view prefix) {
   return text.substr(0, prefix.size()) == prefix;
@@ -24,24 +27,6 @@ inline std::string_view trim_blanks(std::string_view text) {
   if (b == std::string_view::npos) return {};
   const auto e = text.find_last_not_of(' ');
   return text.substr(b, e - b + 1);
-}
-
-// Items of a list-directed record: separated by blanks or a comma, ended by '/'.
-inline std::vector<std::string_view> list_items(std::string_view text) {
-  std::vector<std::string_view> items;
-  std::size_t p = 0;
-  while (p < text.size()) {
-    while (p < text.size() && (text[p] == ' ' || text[p] == '\t')) ++p;
-    if (p >= text.size() || text[p] == '/') break;
-    if (text[p] == ',') {
-      ++p;
-      continue;
-    }
-    const std::size_t begin = p;
-    while (p < text.size() && text[p] != ' ' && text[p] != '\t' && text[p] != ',' && text[p] != '/') ++p;
-    items.push_back(text.substr(begin, p - begin));
-  }
-  return items;
 }
 
 // READ(text,*) of one integer: nullopt when missing or malformed.

@@ -6,6 +6,7 @@
 #include "grammar/common/card_reader.hpp"
 #include "grammar/common/fortran_format.hpp"
 #include "grammar/common/fortran_number.hpp"
+#include "grammar/common/list_directed.hpp"
 #include "grammar/postpro/catalogue.hpp"
 
 namespace lmgc::grammar {
@@ -13,24 +14,6 @@ namespace {
 
 bool starts_with(std::string_view text, std::string_view prefix) {
   return text.substr(0, prefix.size()) == prefix;
-}
-
-// The items of a list-directed record: separated by blanks or one comma, ended by '/'.
-std::vector<std::string_view> list_items(std::string_view text, std::size_t wanted) {
-  std::vector<std::string_view> items;
-  std::size_t p = 0;
-  while (items.size() < wanted && p < text.size()) {
-    while (p < text.size() && (text[p] == ' ' || text[p] == '\t')) ++p;
-    if (p >= text.size() || text[p] == '/') break;
-    if (text[p] == ',') {
-      ++p;
-      continue;
-    }
-    const std::size_t begin = p;
-    while (p < text.size() && text[p] != ' ' && text[p] != '\t' && text[p] != ',' && text[p] != '/') ++p;
-    items.push_back(text.substr(begin, p - begin));
-  }
-  return items;
 }
 
 class PostproParser {
