@@ -1,0 +1,273 @@
+#include "solver/nlgs/local_solver_3d.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace lmgc::solver {
+
+namespace {
+
+constexpr int kMaxNewtonIterations = 40;
+constexpr int kMaxLineSearchHalvings = 30;
+constexpr int kMaxFixedPointIterations = 2000;
+
+// Alart–Curnier map of one contact in its "radius mu r_n" form (spec: contact-laws.md §2.2) and its
+// generalised Jacobian.
+struct AlartCurnier {
+  const Eigen::Matrix3d& W;
+  const Eigen::Vector3d& q;
+  double mu, rho_n, rho_t;
+
+  Eigen::Vector3d value(const Eigen::Vector3d& r, Eigen::Matrix3d* jacobian) const {
+    const Eigen::Vector3d u = W * r + q;
+    Eigen::Vector3d phi;
+    // Normal part: rn = max(0, rn - rho_n un).
+    if (r(0) - rho_n * u(0) > 0.0) {
+      phi(0) = rho_n * u(0);
+      if (jacobian) jacobian->row(0) = rho_n * W.row(0);
+    } else {
+      phi(0) = r(0);
+      if (jacobian) jacobian->row(0) = Eigen::RowVector3d(1.0, 0.0, 0.0);
+    }
+    // Tangential part: r_T = projection of r_T - rho_t u_T on the disc of radius mu rn.
+    const Eigen::Vector2d z = r.tail<2>() - rho_t * u.tail<2>();
+    const double radius = mu * std::max(r(0), 0.0);
+    const double z_norm = z.norm();
+    if (z_norm <= radius || z_norm == 0.0) {
+      phi.tail<2>() = rho_t * u.tail<2>();
+      if (jacobian) jacobian->bottomRows<2>() = rho_t * W.bottomRows<2>();
+    } else {
+      const Eigen::Vector2d direction = z / z_norm;
+      phi.tail<2>() = r.tail<2>() - radius * direction;
+      if (jacobian) {
+        Eigen::Matrix<double, 2, 3> dz = -rho_t * W.bottomRows<2>();
+        dz(0, 1) += 1.0;
+        dz(1, 2) += 1.0;
+        const Eigen::Matrix2d tangent_projector =
+            (Eigen::Matrix2d::Identity() - direction * direction.transpose()) / z_norm;
+        Eigen::Matrix<double, 2, 3> J = -radius * tangent_projector * dz;
+        J(0, 1) += 1.0;
+        J(1, 2) += 1.0;
+        if (r(0) > 0.0) J.col(0) -= mu * direction;
+        jacobian->bottomRows<2>() = J;
+      }
+    }
+    return phi;
+  }
+};
+
+// LMGC90's augmentation parameters: rho_n = 1/Wnn, rho_t = lambda_min / lambda_max^2 of the
+// (symmetrised) tangential block.
+void augmentation_parameters(const Eigen::Matrix3d& W, double& rho_n, double& rho_t) {
+  rho_n = W(0, 0) > 0.0 ? 1.0 / W(0, 0) : 1.0;
+  const double a = W(1, 1), d = W(2, 2), b = 0.5 * (W(1, 2) + W(2, 1));
+  const double sum = a + d;
+  const double root = std::sqrt(std::max(0.0, (a - d) * (a - d) + 4.0 * b * b));
+  const double lambda_max = 0.5 * (sum + root), lambda_min = 0.5 * (sum - root);
+  if (lambda_max <= 0.0)
+    rho_t = rho_n;
+  else if (lambda_min <= 1e-12 * lambda_max)
+    rho_t = 1.0 / lambda_max;
+  else
+    rho_t = lambda_min / (lambda_max * lambda_max);
+}
+
+LocalCase3D classify(const Eigen::Vector3d& r, double mu) {
+  if (r(0) <= 0.0) return LocalCase3D::take_off;
+  return r.tail<2>().norm() < mu * r(0) * (1.0 - 1e-10) ? LocalCase3D::stick : LocalCase3D::slide;
+}
+
+// Sliding solutions by the direction angle phi of r_T: r = r_n (1, mu d), d = (cos phi, sin phi),
+// u_n = 0 gives r_n = -q_n / den(phi), den = W_nn + mu W_nT d (> 0 needed), and u_T must be
+// anti-parallel to d. G(phi) = den * (d x u_T) is smooth (no pole at den = 0); its roots with den > 0
+// and d . u_T <= 0 are the sliding solutions. The zeros of den are added to the grid so that a root
+// lying between the last grid node and a zero of den (r_n very large) is still bracketed.
+bool enumerate_sliding(const Eigen::Matrix3d& W, const Eigen::Vector3d& q, double mu, Eigen::Vector3d& out,
+                       double& out_res) {
+  if (mu <= 0.0 || q(0) >= 0.0) return false;
+  const auto den_of = [&](double phi) {
+    return W(0, 0) + mu * (W(0, 1) * std::cos(phi) + W(0, 2) * std::sin(phi));
+  };
+  const auto G = [&](double phi) {
+    const Eigen::Vector2d d(std::cos(phi), std::sin(phi));
+    const double den = den_of(phi);
+    // den * u_T = -q_n (W_Tn + mu W_TT d) + den q_T
+    const Eigen::Vector2d v =
+        -q(0) * (W.col(0).tail<2>() + mu * W.bottomRightCorner<2, 2>() * d) + den * q.tail<2>();
+    return d(0) * v(1) - d(1) * v(0);
+  };
+  const auto reaction = [&](double phi) {
+    const double rn = -q(0) / den_of(phi);
+    return Eigen::Vector3d(rn, mu * rn * std::cos(phi), mu * rn * std::sin(phi));
+  };
+  std::vector<double> nodes;
+  const int n = 360;
+  for (int k = 0; k <= n; ++k) nodes.push_back(-std::numbers::pi + 2.0 * std::numbers::pi * k / n);
+  const double a = mu * W(0, 1), b = mu * W(0, 2), rho = std::hypot(a, b);
+  if (rho > 0.0 && std::fabs(W(0, 0)) <= rho) {
+    const double psi = std::atan2(b, a), delta = std::acos(-W(0, 0) / rho);
+    for (double phi : {psi + delta, psi - delta}) {
+      phi = std::remainder(phi, 2.0 * std::numbers::pi);
+      nodes.push_back(phi);
+    }
+  }
+  std::sort(nodes.begin(), nodes.end());
+  bool found = false;
+  out_res = 1e300;
+  for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
+    double lo = nodes[k], hi = nodes[k + 1];
+    const double mid = 0.5 * (lo + hi);
+    if (!(den_of(mid) > 0.0)) continue;
+    double g_lo = G(lo);
+    const double g_hi = G(hi);
+    if ((g_lo <= 0.0) == (g_hi <= 0.0)) continue;
+    for (int it = 0; it < 200 && hi - lo > 0.0; ++it) {
+      const double m = 0.5 * (lo + hi);
+      if (m <= lo || m >= hi) break;
+      const double gm = G(m);
+      if ((gm <= 0.0) == (g_lo <= 0.0)) {
+        lo = m;
+        g_lo = gm;
+      } else {
+        hi = m;
+      }
+    }
+    for (const double phi : {lo, hi}) {
+      if (!(den_of(phi) > 0.0)) continue;
+      const Eigen::Vector3d r = reaction(phi);
+      const double res = natural_map_3d(r, W * r + q, mu).norm();
+      if (res < out_res) {
+        out_res = res;
+        out = r;
+        found = true;
+      }
+    }
+  }
+  return found;
+}
+
+}  // namespace
+
+Eigen::Vector3d project_on_coulomb_cone(const Eigen::Vector3d& x, double mu) {
+  const double tangent_norm = x.tail<2>().norm();
+  if (mu * tangent_norm <= -x(0)) return Eigen::Vector3d::Zero();
+  if (tangent_norm <= mu * x(0)) return x;
+  const double a = (mu * tangent_norm + x(0)) / (1.0 + mu * mu);
+  Eigen::Vector3d p;
+  p(0) = a;
+  p.tail<2>() =
+      tangent_norm > 0.0 ? Eigen::Vector2d(mu * a * x.tail<2>() / tangent_norm) : Eigen::Vector2d::Zero();
+  return p;
+}
+
+Eigen::Vector3d natural_map_3d(const Eigen::Vector3d& r, const Eigen::Vector3d& u, double mu) {
+  Eigen::Vector3d x = r - u;
+  x(0) -= mu * u.tail<2>().norm();
+  return r - project_on_coulomb_cone(x, mu);
+}
+
+LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen::Vector3d& q, double mu,
+                                           const Eigen::Vector3d& r_start, double tolerance) {
+  LocalSolution3D s;
+  if (!q.allFinite() || !W.allFinite()) {
+    s.failed = true;
+    return s;
+  }
+  // Take-off: r = 0 solves the problem whenever the free velocity separates.
+  if (q(0) >= 0.0) return s;
+
+  // Sticking: u = 0, r = -W⁻¹ q, valid when it lies inside the cone.
+  Eigen::FullPivLU<Eigen::Matrix3d> lu(W);
+  if (lu.isInvertible()) {
+    const Eigen::Vector3d r_stick = -lu.solve(q);
+    if (r_stick(0) > 0.0 && r_stick.tail<2>().norm() <= mu * r_stick(0)) {
+      s.r = r_stick;
+      s.state = LocalCase3D::stick;
+      s.residual = natural_map_3d(s.r, W * s.r + q, mu).norm();
+      if (s.residual <= tolerance) return s;
+    }
+  }
+
+  // Sliding (or a near-singular block): generalised Newton on the Alart–Curnier map.
+  double rho_n, rho_t;
+  augmentation_parameters(W, rho_n, rho_t);
+  const AlartCurnier map{W, q, mu, rho_n, rho_t};
+  Eigen::Vector3d r = r_start.allFinite() ? project_on_coulomb_cone(r_start, mu) : Eigen::Vector3d::Zero();
+  if (r(0) <= 0.0) r = Eigen::Vector3d(-q(0) * rho_n, 0.0, 0.0);
+  Eigen::Vector3d best = r;
+  double best_residual = natural_map_3d(r, W * r + q, mu).norm();
+  Eigen::Matrix3d J;
+  Eigen::Vector3d phi = map.value(r, &J);
+  double merit = phi.squaredNorm();
+  int iteration = 0;
+  for (; iteration < kMaxNewtonIterations && best_residual > tolerance; ++iteration) {
+    Eigen::PartialPivLU<Eigen::Matrix3d> step_lu(J);
+    Eigen::Vector3d step = -step_lu.solve(phi);
+    if (!step.allFinite()) step = -phi;
+    double t = 1.0;
+    Eigen::Vector3d trial;
+    Eigen::Vector3d trial_phi;
+    Eigen::Matrix3d trial_J;
+    bool accepted = false;
+    for (int halving = 0; halving < kMaxLineSearchHalvings; ++halving, t *= 0.5) {
+      trial = r + t * step;
+      trial_phi = map.value(trial, &trial_J);
+      if (trial_phi.squaredNorm() <= (1.0 - 1e-4 * t) * merit) {
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) break;
+    r = trial;
+    phi = trial_phi;
+    J = trial_J;
+    merit = phi.squaredNorm();
+    const Eigen::Vector3d admissible = project_on_coulomb_cone(r, mu);
+    const double residual = natural_map_3d(admissible, W * admissible + q, mu).norm();
+    if (residual < best_residual) {
+      best_residual = residual;
+      best = admissible;
+    }
+  }
+  s.newton_iterations = iteration;
+  if (best_residual > tolerance) {
+    // Near a direction where W_nn + mu W_nT d vanishes r_n is huge and the damped Newton does not
+    // get there: enumerate the sliding directions instead.
+    Eigen::Vector3d enumerated;
+    double enumerated_residual;
+    if (enumerate_sliding(W, q, mu, enumerated, enumerated_residual) && enumerated_residual < best_residual) {
+      best = enumerated;
+      best_residual = enumerated_residual;
+    }
+  }
+
+  // Fallback: the projected fixed point r <- P_K(r - rho (u + mu |u_T| e_n)), keeping the best iterate.
+  if (best_residual > tolerance) {
+    const double rho = 1.0 / std::max(W.norm(), 1e-300);
+    r = best;
+    for (int k = 0; k < kMaxFixedPointIterations && best_residual > tolerance; ++k) {
+      const Eigen::Vector3d u = W * r + q;
+      Eigen::Vector3d x = r - rho * u;
+      x(0) -= rho * mu * u.tail<2>().norm();
+      r = project_on_coulomb_cone(x, mu);
+      const double residual = natural_map_3d(r, W * r + q, mu).norm();
+      if (residual < best_residual) {
+        best_residual = residual;
+        best = r;
+      }
+    }
+  }
+  // The enumeration's r_T = mu r_n d can exceed the cone by round-off: return an admissible reaction.
+  best = project_on_coulomb_cone(best, mu);
+  best_residual = natural_map_3d(best, W * best + q, mu).norm();
+  s.r = best;
+  s.residual = best_residual;
+  s.state = classify(best, mu);
+  s.failed = !(best_residual <= tolerance);
+  return s;
+}
+
+}  // namespace lmgc::solver

@@ -1,0 +1,38 @@
+#pragma once
+// The 3D Signorini–Coulomb problem of one contact:
+//   u = W r + q,  r in K_mu,  u + mu |u_T| e_n in K*_mu,  r . (u + mu |u_T| e_n) = 0
+// (fc3d/FORMAT.md §1.1). Vectors here are ordered normal first, (n, t, s), as in FCLIB;
+// LMGC90's (t, n, s) callers permute.
+//
+// Method: the two closed-form cases first (take-off: q_n >= 0; sticking: -W⁻¹q inside the cone),
+// then a generalised Newton on the Alart–Curnier map with LMGC90's augmentation parameters
+// (spec: contact-laws.md §2.2, "mu_NG_solver") made globally convergent by a backtracking line
+// search, then (when Newton stalls) a bisection over the sliding direction angle, and a projected
+// fixed-point fallback. Every answer is checked with the natural map.
+#include <Eigen/Core>
+
+namespace lmgc::solver {
+
+enum class LocalCase3D : unsigned char { take_off, stick, slide };
+
+struct LocalSolution3D {
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();
+  LocalCase3D state = LocalCase3D::take_off;
+  int newton_iterations = 0;
+  // |F(r)| of the natural map of this contact alone (same units as u).
+  double residual = 0.0;
+  bool failed = false;  // NaN in the data or no iterate reached the tolerance: best iterate kept
+};
+
+// `r_start` is the Newton starting point for the sliding case (the previous reaction).
+// `tolerance` is absolute, on |F(r)| of the natural map.
+LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen::Vector3d& q, double mu,
+                                           const Eigen::Vector3d& r_start, double tolerance);
+
+// Projection onto the Coulomb cone K_mu = { |x_T| <= mu x_n } (fc3d/FORMAT.md §3).
+Eigen::Vector3d project_on_coulomb_cone(const Eigen::Vector3d& x, double mu);
+
+// F(r) = r - P_K(r - u - mu |u_T| e_n) of one contact (fc3d/FORMAT.md §3).
+Eigen::Vector3d natural_map_3d(const Eigen::Vector3d& r, const Eigen::Vector3d& u, double mu);
+
+}  // namespace lmgc::solver
