@@ -1,0 +1,172 @@
+#include "solver/io/fclib/fclib_reader.hpp"
+
+#include <hdf5.h>
+
+#include <algorithm>
+#include <numeric>
+
+namespace lmgc::solver {
+
+namespace {
+
+// Owns one HDF5 identifier.
+class Handle {
+ public:
+  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  ~Handle() {
+    if (id_ >= 0) close_(id_);
+  }
+  hid_t get() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+class File {
+ public:
+  explicit File(const std::filesystem::path& path)
+      : path_(path.string()), file_(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose) {
+    if (!file_.valid()) throw FclibError(path_ + ": not an HDF5 file, or it cannot be opened");
+  }
+
+  // True when every component of the absolute path exists.
+  bool has(const std::string& name) const {
+    std::size_t position = 0;
+    while ((position = name.find('/', position + 1)) != std::string::npos)
+      if (H5Lexists(file_.get(), name.substr(0, position).c_str(), H5P_DEFAULT) <= 0) return false;
+    return H5Lexists(file_.get(), name.c_str(), H5P_DEFAULT) > 0;
+  }
+
+  template <typename T>
+  std::vector<T> read(const std::string& name) const {
+    if (!has(name)) throw FclibError(path_ + ": dataset " + name + " is missing");
+    Handle dataset(H5Dopen2(file_.get(), name.c_str(), H5P_DEFAULT), H5Dclose);
+    if (!dataset.valid()) throw FclibError(path_ + ": dataset " + name + " cannot be opened");
+    Handle space(H5Dget_space(dataset.get()), H5Sclose);
+    const hssize_t count = H5Sget_simple_extent_npoints(space.get());
+    if (count < 0) throw FclibError(path_ + ": dataset " + name + " has no size");
+    std::vector<T> values(static_cast<std::size_t>(count));
+    const hid_t memory_type = std::is_same_v<T, int> ? H5T_NATIVE_INT : H5T_NATIVE_DOUBLE;
+    if (count > 0 && H5Dread(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
+      throw FclibError(path_ + ": dataset " + name + " cannot be read as " +
+                       (std::is_same_v<T, int> ? "integers" : "numbers"));
+    return values;
+  }
+
+  int scalar(const std::string& name) const {
+    const std::vector<int> values = read<int>(name);
+    if (values.size() != 1) throw FclibError(path_ + ": " + name + " is not a scalar");
+    return values[0];
+  }
+
+  Eigen::VectorXd vector(const std::string& name) const {
+    const std::vector<double> values = read<double>(name);
+    return Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size()));
+  }
+
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  Handle file_;
+};
+
+// Compressed rows from (row, column, value) triplets; duplicates are kept (the block builder sums them).
+void rows_from_triplets(int rows, const std::vector<int>& row, const std::vector<int>& column,
+                        const std::vector<double>& value, FclibLocalProblem& problem,
+                        const std::string& path) {
+  problem.row_pointer.assign(rows + 1, 0);
+  for (int i : row) {
+    if (i < 0 || i >= rows) throw FclibError(path + ": W has a row index out of range");
+    ++problem.row_pointer[i + 1];
+  }
+  std::partial_sum(problem.row_pointer.begin(), problem.row_pointer.end(), problem.row_pointer.begin());
+  std::vector<int> next(problem.row_pointer.begin(), problem.row_pointer.end() - 1);
+  problem.column_index.assign(value.size(), 0);
+  problem.value.assign(value.size(), 0.0);
+  for (std::size_t k = 0; k < value.size(); ++k) {
+    const int slot = next[row[k]]++;
+    problem.column_index[slot] = column[k];
+    problem.value[slot] = value[k];
+  }
+}
+
+}  // namespace
+
+FclibLocalProblem read_fclib_local(const std::filesystem::path& path) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // our messages replace HDF5's stack dumps
+  const File file(path);
+  if (!file.has("/fclib_local")) {
+    if (file.has("/fclib_global"))
+      throw FclibError(file.path() + ": a global problem (/fclib_global); reduce it to local form first");
+    throw FclibError(file.path() + ": no /fclib_local group");
+  }
+  FclibLocalProblem problem;
+  problem.space_dimension = file.scalar("/fclib_local/spacedim");
+  if (problem.space_dimension != 2 && problem.space_dimension != 3)
+    throw FclibError(file.path() + ": spacedim must be 2 or 3");
+  const int rows = file.scalar("/fclib_local/W/m");
+  const int columns = file.scalar("/fclib_local/W/n");
+  const int storage = file.scalar("/fclib_local/W/nz");
+  if (rows != columns || rows < 0) throw FclibError(file.path() + ": W is not square");
+  problem.size = rows;
+  const std::vector<int> p = file.read<int>("/fclib_local/W/p");
+  const std::vector<int> i = file.read<int>("/fclib_local/W/i");
+  const std::vector<double> x = file.read<double>("/fclib_local/W/x");
+  if (storage == -2) {  // compressed rows: p = row pointers, i = columns
+    if (p.size() != static_cast<std::size_t>(rows) + 1)
+      throw FclibError(file.path() + ": W/p has the wrong length");
+    const std::size_t entries = static_cast<std::size_t>(p.back());
+    if (entries > i.size() || entries > x.size())
+      throw FclibError(file.path() + ": W/p points past W/i or W/x");
+    problem.row_pointer = p;
+    problem.column_index.assign(i.begin(), i.begin() + static_cast<std::ptrdiff_t>(entries));
+    problem.value.assign(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(entries));
+  } else if (storage == -1) {  // compressed columns: p = column pointers, i = rows
+    if (p.size() != static_cast<std::size_t>(columns) + 1)
+      throw FclibError(file.path() + ": W/p has the wrong length");
+    const std::size_t entries = static_cast<std::size_t>(p.back());
+    if (entries > i.size() || entries > x.size())
+      throw FclibError(file.path() + ": W/p points past W/i or W/x");
+    std::vector<int> column(entries);
+    for (int j = 0; j < columns; ++j)
+      for (int k = p[j]; k < p[j + 1]; ++k) column[k] = j;
+    rows_from_triplets(rows, std::vector<int>(i.begin(), i.begin() + static_cast<std::ptrdiff_t>(entries)),
+                       column,
+                       std::vector<double>(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(entries)),
+                       problem, file.path());
+  } else if (storage >= 0) {  // triplets: i = rows, p = columns (CSparse orientation, FORMAT.md §2)
+    const std::size_t entries = static_cast<std::size_t>(storage);
+    if (entries > i.size() || entries > p.size() || entries > x.size())
+      throw FclibError(file.path() + ": W/nz exceeds the stored entries");
+    rows_from_triplets(rows, std::vector<int>(i.begin(), i.begin() + static_cast<std::ptrdiff_t>(entries)),
+                       std::vector<int>(p.begin(), p.begin() + static_cast<std::ptrdiff_t>(entries)),
+                       std::vector<double>(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(entries)),
+                       problem, file.path());
+  } else {
+    throw FclibError(file.path() + ": W/nz has an unknown storage code");
+  }
+  problem.q = file.vector("/fclib_local/vectors/q");
+  problem.mu = file.vector("/fclib_local/vectors/mu");
+  if (problem.q.size() != rows) throw FclibError(file.path() + ": q does not match the size of W");
+  if (problem.mu.size() * problem.space_dimension != rows)
+    throw FclibError(file.path() + ": mu does not have one value per contact");
+  if (file.has("/solution/r")) {
+    problem.solution_r = file.vector("/solution/r");
+    if (file.has("/solution/u")) problem.solution_u = file.vector("/solution/u");
+  }
+  if (file.has("/guesses/number_of_guesses")) {
+    const int guesses = file.scalar("/guesses/number_of_guesses");
+    for (int g = 1; g <= guesses; ++g) {
+      const std::string name = "/guesses/" + std::to_string(g) + "/r";
+      if (file.has(name)) problem.guesses_r.push_back(file.vector(name));
+    }
+  }
+  return problem;
+}
+
+}  // namespace lmgc::solver
