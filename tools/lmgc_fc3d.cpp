@@ -84,6 +84,9 @@ int main(int argc, char** argv) {
          "--method", method,
          "nlgs: Gauss-Seidel sweeps only; nlgs+newton: switch to semismooth Newton when the sweeps stall")
       ->check(CLI::IsMember({"nlgs", "nlgs+newton"}));
+  app.add_option("--newton-steps", options.max_newton_steps_per_block,
+                 "Newton steps per phase, at most (a phase ends earlier when its line search stalls)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--csv", csv_path, "also write the per-problem table to this CSV file");
   app.footer(
       "Error measure: natural-map residual / |q| (fc3d/FORMAT.md section 3), recomputed after the solve.\n"
