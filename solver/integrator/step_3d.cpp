@@ -1,0 +1,450 @@
+#include "solver/integrator/step_3d.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <span>
+
+#include "solver/detection/pair_geometry_3d.hpp"
+#include "solver/nlgs/local_solver_3d.hpp"
+#include "spatial/multilevel_grid.hpp"
+
+namespace lmgc::solver {
+
+namespace {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+template <class... Ts>
+struct Overloaded : Ts... {
+  using Ts::operator()...;
+};
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
+
+// SPHEb is a sphere of a cluster: TACT_BEHAV.DAT rows name it SPHER.
+std::string_view seen_as(const std::string& type) {
+  return type == "SPHEb" ? std::string_view("SPHER") : std::string_view(type);
+}
+
+// (t, n, s) <-> the local solver's normal-first (n, t, s).
+Vector3d to_normal_first(const Vector3d& v) {
+  return Vector3d(v(1), v(0), v(2));
+}
+Vector3d from_normal_first(const Vector3d& v) {
+  return Vector3d(v(1), v(0), v(2));
+}
+Matrix3d to_normal_first(const Matrix3d& W) {
+  Matrix3d P;
+  P << 0, 1, 0, 1, 0, 0, 0, 0, 1;
+  return P * W * P;
+}
+
+// Relative local velocity (t, n, s) of the contact for body velocities V (numerics.md §2, 3D).
+Vector3d local_velocity(const Interaction3D& c, const std::vector<Vector6d>& V) {
+  const Vector6d& vc = V[static_cast<std::size_t>(c.candidate_body)];
+  const Vector6d& va = V[static_cast<std::size_t>(c.antagonist_body)];
+  return c.frame * (vc.head<3>() - va.head<3>()) + c.lever_candidate * vc.tail<3>() -
+         c.lever_antagonist * va.tail<3>();
+}
+
+// V += M⁻¹ H r for an impulse r (t, n, s) of one contact.
+void inject(const Interaction3D& c, const Vector3d& r, RigidBodies3D& b, std::vector<Vector6d>& V) {
+  const Vector3d force = c.frame.transpose() * r;
+  const auto cd = static_cast<std::size_t>(c.candidate_body),
+             an = static_cast<std::size_t>(c.antagonist_body);
+  Vector6d impulse_cd, impulse_an;
+  impulse_cd << force, c.lever_candidate.transpose() * r;
+  impulse_an << -force, -(c.lever_antagonist.transpose() * r);
+  V[cd] += b.inverse_mass[cd].cwiseProduct(impulse_cd);
+  V[an] += b.inverse_mass[an].cwiseProduct(impulse_an);
+  b.impulse[cd] += impulse_cd;
+  b.impulse[an] += impulse_an;
+}
+
+// Delassus block Hᵀ M⁻¹ H of one contact (rigid bodies: exact, numerics.md §3).
+Matrix3d delassus_block(const Interaction3D& c, const RigidBodies3D& b) {
+  Matrix3d W = Matrix3d::Zero();
+  for (int side = 0; side < 2; ++side) {
+    const auto body = static_cast<std::size_t>(side == 0 ? c.candidate_body : c.antagonist_body);
+    const Matrix3d& lever = side == 0 ? c.lever_candidate : c.lever_antagonist;
+    const Vector6d& inverse = b.inverse_mass[body];
+    W += c.frame * inverse.head<3>().asDiagonal() * c.frame.transpose() +
+         lever * inverse.tail<3>().asDiagonal() * lever.transpose();
+  }
+  return W;
+}
+
+double positive(double x) {
+  return x > 0.0 ? x : 0.0;
+}
+
+// Derived Signorini–Coulomb problem of the laws the 3D solver provides (contact-laws.md §2, §3.1).
+// Returns false for a law it does not provide.
+bool prepare_law(const ContactLaw& law, Interaction3D& c, double h) {
+  c.covfree.setZero();
+  c.inactive = false;
+  const bool sliding = is_sliding(c.status_begin);
+  const auto restitution = [&](double restn, double restt) {
+    if (c.gap_begin > 0.0) {
+      c.inactive = true;
+      return;
+    }
+    c.covfree =
+        Vector3d(restt * c.velocity_begin(0), restn * c.velocity_begin(1), restt * c.velocity_begin(2));
+  };
+  return std::visit(Overloaded{
+                        [&](const IqsClb& p) {
+                          c.covfree(1) = positive(c.gap_begin) / h;
+                          c.mu = p.sfric;
+                          return true;
+                        },
+                        [&](const IqsDsClb& p) {
+                          c.covfree(1) = positive(c.gap_begin) / h;
+                          c.mu = sliding ? p.dfric : p.sfric;
+                          return true;
+                        },
+                        [&](const GapSgrClb& p) {
+                          c.covfree(1) = c.gap_begin / h;
+                          c.mu = p.sfric;
+                          return true;
+                        },
+                        [&](const GapSgrDsClb& p) {
+                          c.covfree(1) = c.gap_begin / h;
+                          c.mu = sliding ? p.dfric : p.sfric;
+                          return true;
+                        },
+                        [&](const RstClb& p) {
+                          restitution(p.restn, p.restt);
+                          c.mu = p.sfric;
+                          return true;
+                        },
+                        [&](const RstDsClb& p) {
+                          restitution(p.restn, p.restt);
+                          c.mu = sliding ? p.dfric : p.sfric;
+                          return true;
+                        },
+                        [&](const VelSgrClb& p) {
+                          c.inactive = c.gap_begin > 0.0;
+                          c.mu = p.sfric;
+                          return true;
+                        },
+                        [&](const auto&) { return false; },
+                    },
+                    law);
+}
+
+ContactStatus status_of(const Vector3d& r, double mu) {
+  if (r(1) <= 0.0) return ContactStatus::noctc;
+  const double tangential = std::hypot(r(0), r(2));
+  return tangential < mu * r(1) * (1.0 - 1e-10) ? ContactStatus::stick : ContactStatus::slide;
+}
+
+}  // namespace
+
+void increment_step(Scene3D& scene, RunState3D& state) {
+  RigidBodies3D& b = scene.bodies;
+  state.time += state.h;
+  ++state.step;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    b.displacement[i] = b.displacement_begin[i];
+    b.velocity[i] = b.velocity_begin[i];
+    b.impulse[i].setZero();
+  }
+}
+
+void compute_external_forces(Scene3D& scene, const RunState3D& state) {
+  RigidBodies3D& b = scene.bodies;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    Vector6d f;
+    f << b.mass[i] * scene.gravity, gyroscopic_torque(b.inertia[i], b.velocity_begin[i].tail<3>());
+    b.external_force[i] = f;
+  }
+  const double t_begin = state.time - state.h;
+  for (const DrivenDof2D& d : scene.driven)
+    if (d.is_force)
+      b.external_force[static_cast<std::size_t>(d.body)](d.dof) +=
+          (1.0 - state.theta) * d.value(t_begin) + state.theta * d.value(state.time);
+}
+
+void compute_free_velocity(Scene3D& scene, const RunState3D& state) {
+  RigidBodies3D& b = scene.bodies;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    b.velocity_free[i] = b.velocity_begin[i] + state.h * b.inverse_mass[i].cwiseProduct(b.external_force[i]);
+    for (int d = 0; d < 6; ++d)
+      if (b.driven_mask[i] & (1u << d)) b.velocity_free[i](d) = 0.0;
+  }
+  for (const DrivenDof2D& d : scene.driven)
+    if (!d.is_force) b.velocity_free[static_cast<std::size_t>(d.body)](d.dof) = d.value(state.time);
+  b.velocity = b.velocity_free;
+}
+
+void select_prox_tactors(Scene3D& scene, RunState3D& state) {
+  RigidBodies3D& b = scene.bodies;
+  const double h = state.h, theta = state.theta;
+  // Detection configuration (numerics.md §1.2, compute_configurationTT).
+  std::vector<Vector3d> body_centre(b.size());
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    body_centre[i] = b.reference[i] + b.displacement_begin[i].head<3>() +
+                     h * (1.0 - theta) * b.velocity_begin[i].head<3>();
+    b.frame_detection[i] = update_frame(b.frame_initial[i], (1.0 - theta) * b.velocity_begin[i].tail<3>(), h,
+                                        FrameUpdate::linearised);
+  }
+  const std::size_t n = scene.contactors.size();
+  std::vector<Vector3d> centre(n);
+  std::vector<double> radii(n);
+  std::vector<std::uint8_t> placed(n);
+  double max_alert = 0.0;
+  for (const Visibility3D& v : scene.visibility) max_alert = std::max(max_alert, v.alert);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Contactor3D& c = scene.contactors[k];
+    const auto body = static_cast<std::size_t>(c.body);
+    centre[k] = body_centre[body] + b.frame_detection[body] * c.shift;
+    radii[k] = c.bounding_radius;
+    placed[k] = b.visible[body];
+  }
+  // The visibility row of an ordered (candidate, antagonist) pair, -1 if none.
+  const auto row_of = [&](const Contactor3D& cd, const Contactor3D& an) {
+    for (std::size_t r = 0; r < scene.visibility.size(); ++r) {
+      const Visibility3D& v = scene.visibility[r];
+      if (seen_as(cd.type) == v.candidate_type && cd.color == v.candidate_color &&
+          seen_as(an.type) == v.antagonist_type && an.color == v.antagonist_color)
+        return static_cast<int>(r);
+    }
+    return -1;
+  };
+  std::vector<Interaction3D> found;
+  const auto fine = [&](std::size_t i, std::size_t j) {
+    const Contactor3D& cd = scene.contactors[i];
+    const Contactor3D& an = scene.contactors[j];
+    if (cd.body == an.body || cd.shape == ContactorShape3D::plane) return false;
+    const int row = row_of(cd, an);
+    if (row < 0) return false;
+    const Visibility3D& v = scene.visibility[static_cast<std::size_t>(row)];
+    ContactGeometry3D g;
+    bool hit = false;
+    if (an.shape == ContactorShape3D::sphere) {
+      hit = detect_sphere_sphere(centre[i], cd.radius, centre[j], an.radius, v.alert, g);
+    } else {
+      // LMGC90's PLANx frame is (T, S, N) = (e1, -e2, e3) of the body axes times the contactor's
+      // frame (mod_SPPLx).
+      Matrix3d axes = b.frame_detection[static_cast<std::size_t>(an.body)] * an.local_frame;
+      axes.col(1) = -axes.col(1);
+      hit = detect_sphere_plane(centre[i], cd.radius, centre[j], axes, an.half_axes, v.alert, g);
+    }
+    if (!hit) return true;
+    Interaction3D c;
+    c.family = v.family;
+    c.candidate = static_cast<std::int32_t>(i);
+    c.antagonist = static_cast<std::int32_t>(j);
+    c.candidate_body = cd.body;
+    c.antagonist_body = an.body;
+    c.law = v.law;
+    c.visibility = row;
+    c.frame.row(0) = g.tangent.transpose();
+    c.frame.row(1) = g.normal.transpose();
+    c.frame.row(2) = g.second_tangent.transpose();
+    c.point = g.point;
+    c.gap_begin = g.gap;
+    for (int side = 0; side < 2; ++side) {
+      const auto body = static_cast<std::size_t>(side == 0 ? cd.body : an.body);
+      const Vector3d lever = g.point - body_centre[body];
+      Matrix3d& G = side == 0 ? c.lever_candidate : c.lever_antagonist;
+      for (int k = 0; k < 3; ++k)
+        G.row(k) =
+            (b.frame_detection[body].transpose() * lever.cross(c.frame.row(k).transpose())).transpose();
+    }
+    c.velocity_begin = local_velocity(c, b.velocity_begin);
+    c.W = delassus_block(c, b);
+    found.push_back(c);
+    return true;
+  };
+  spatial::MultilevelGrid grid;
+  grid.build(centre, radii, placed, max_alert);
+  grid.for_each_candidate_pair(centre, radii, max_alert, [&](std::size_t i, std::size_t j) {
+    // As in 2D: the lower index is the candidate when a visibility row reads the pair that way.
+    if (!fine(std::min(i, j), std::max(i, j))) fine(std::max(i, j), std::min(i, j));
+  });
+  // LMGC90 writes and sweeps interactions family by family, then by candidate.
+  std::sort(found.begin(), found.end(), [](const Interaction3D& x, const Interaction3D& y) {
+    return std::tie(x.family, x.candidate, x.antagonist) < std::tie(y.family, y.candidate, y.antagonist);
+  });
+  state.contacts = std::move(found);
+}
+
+void recup_rloc(RunState3D& state) {
+  std::map<std::pair<std::int32_t, std::int32_t>, const Interaction3D*> previous;
+  for (const Interaction3D& p : state.previous) previous[{p.candidate, p.antagonist}] = &p;
+  for (Interaction3D& c : state.contacts) {
+    const auto it = previous.find({c.candidate, c.antagonist});
+    if (it == previous.end()) {
+      c.r.setZero();
+      c.status_begin = ContactStatus::nknow;
+      continue;
+    }
+    c.r = it->second->r;
+    c.status_begin = it->second->status;
+    c.internal = it->second->internal;
+  }
+}
+
+NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  RigidBodies3D& b = scene.bodies;
+  NlgsResult result;
+  std::vector<Interaction3D>& contacts = state.contacts;
+  std::vector<Vector6d>& V = b.velocity;
+  V = b.velocity_free;
+  for (auto& impulse : b.impulse) impulse.setZero();
+  double q_squared = 0.0;
+  for (Interaction3D& c : contacts) {
+    if (!prepare_law(scene.laws[static_cast<std::size_t>(c.law)].law, c, state.h)) c.inactive = true;
+    if (c.inactive) c.r.setZero();
+    const Vector3d q = local_velocity(c, b.velocity_free) + c.covfree;
+    if (!c.inactive) q_squared += q.squaredNorm();
+  }
+  for (const Interaction3D& c : contacts)
+    if (!c.inactive) inject(c, c.r, b, V);
+  result.free_velocity_norm = std::sqrt(q_squared);
+
+  const double local_tolerance = 1e-12 * std::max(result.free_velocity_norm, 1e-300);
+  // One local solve of contact c with the others frozen; returns the new auxiliary reaction.
+  const auto local_solve = [&](const Interaction3D& c, Vector3d& q_local) {
+    q_local = local_velocity(c, V) - c.W * c.r + c.covfree;
+    const LocalSolution3D s = solve_signorini_coulomb_3d(to_normal_first(c.W), to_normal_first(q_local), c.mu,
+                                                         to_normal_first(c.r), local_tolerance);
+    return from_normal_first(s.r);
+  };
+  const double tol = options.tolerance;
+  const int max_checks = options.gs_it2;
+  for (int check = 0; check < max_checks; ++check) {
+    for (int sweep = 0; sweep < options.gs_it1; ++sweep) {
+      for (Interaction3D& c : contacts) {
+        if (c.inactive) continue;
+        Vector3d q_local;
+        Vector3d r_new = local_solve(c, q_local);
+        if (options.relax != 1.0) r_new = options.relax * r_new + (1.0 - options.relax) * c.r;
+        inject(c, r_new - c.r, b, V);
+        c.r = r_new;
+      }
+      ++result.iterations;
+    }
+    // Check pass (numerics.md §4.1): one more local solve per contact, r left unchanged.
+    double sum_dvdv = 0, max_dvdv = 0, sum_dvdvrr = 0, max_dvdvrr = 0, sum_dvor = 0, sum_wrr = 0,
+           sum_wrwr = 0;
+    double active = 0.0;
+    for (const Interaction3D& c : contacts) {
+      if (c.inactive) continue;
+      Vector3d q_local;
+      const Vector3d r_check = local_solve(c, q_local);
+      const Vector3d mean_r = 0.5 * (c.r + r_check);
+      const Vector3d dv = c.W * (c.r - r_check);
+      const double dvdv = dv.squaredNorm();
+      const double rr = mean_r.squaredNorm();
+      if (rr == 0.0) continue;
+      active += 1.0;
+      sum_dvdv += dvdv;
+      max_dvdv = std::max(max_dvdv, dvdv);
+      sum_dvdvrr += dvdv * rr;
+      max_dvdvrr = std::max(max_dvdvrr, dvdv * rr);
+      sum_dvor += mean_r.dot(dv);
+      const Vector3d wr = c.W * c.r, wr_check = c.W * r_check;
+      sum_wrr += 0.5 * (wr.dot(c.r) + wr_check.dot(r_check));
+      sum_wrwr += 0.5 * (wr.squaredNorm() + wr_check.squaredNorm());
+    }
+    NlgsNorms& q = result.norms;
+    if (active >= 1.0 && sum_wrr > 1e-18 && sum_wrwr > 1e-18) {
+      q.quad_wr = std::sqrt(sum_wrwr / active);
+      const double mean_wrr = sum_wrr / active;
+      q.quad_dv = std::sqrt(sum_dvdv / active) / (q.quad_wr * tol);
+      q.maxm_dv = std::sqrt(max_dvdv) / (q.quad_wr * tol);
+      q.quad_dvr = std::sqrt(sum_dvdvrr / active) / (mean_wrr * tol);
+      q.maxm_dvr = std::sqrt(max_dvdvrr) / (mean_wrr * tol);
+      q.mean_dvor = sum_dvor / (sum_wrr * tol);
+    } else {
+      q = NlgsNorms{0.111e-11, 0.111e-11, 0.111e-11, 0.111e-11, 0.111e-11, 0.0};
+    }
+    if (!std::isfinite(q.mean_dvor) || !std::isfinite(q.quad_dv)) {
+      result.diverged = true;
+      break;
+    }
+    const bool quad = std::fabs(q.mean_dvor) < 1.0 && q.quad_dv < 1.0 && q.quad_dvr < 1.0;
+    const bool maxm = std::fabs(q.mean_dvor) < 1.0 && q.maxm_dv < 1.0 && q.maxm_dvr < 1.0;
+    switch (options.norm) {
+      case NlgsNorm::maxm:
+        result.converged = maxm;
+        break;
+      case NlgsNorm::qm16:
+        result.converged = quad && q.maxm_dv < 16.666 && q.maxm_dvr < 16.666;
+        break;
+      default:
+        result.converged = quad;
+    }
+    if (result.converged) break;
+  }
+  if (contacts.empty()) result.converged = true;
+
+  // End of the solve: relative velocities, statuses, and the natural-map residual of the local
+  // problems (fc3d/FORMAT.md §3) in the auxiliary variables u + covfree.
+  double residual_squared = 0.0;
+  for (Interaction3D& c : contacts) {
+    c.u = local_velocity(c, V);
+    if (c.inactive) {
+      c.status = ContactStatus::noctc;
+      continue;
+    }
+    c.status = status_of(c.r, c.mu);
+    if (c.r.squaredNorm() > 0.0) ++result.active;
+    residual_squared +=
+        natural_map_3d(to_normal_first(c.r), to_normal_first(Vector3d(c.u + c.covfree)), c.mu).squaredNorm();
+  }
+  result.residual_absolute = std::sqrt(residual_squared);
+  result.residual_relative = result.free_velocity_norm > 0.0
+                                 ? result.residual_absolute / result.free_velocity_norm
+                                 : result.residual_absolute;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+void compute_dof(Scene3D& scene, const RunState3D& state) {
+  RigidBodies3D& b = scene.bodies;
+  const double h = state.h, theta = state.theta;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    b.displacement[i].head<3>() =
+        b.displacement_begin[i].head<3>() +
+        h * ((1.0 - theta) * b.velocity_begin[i].head<3>() + theta * b.velocity[i].head<3>());
+    b.displacement[i].tail<3>().setZero();
+    const Vector3d spin = b.velocity[i].tail<3>();
+    b.frame[i] = scene.rotation == FrameUpdate::cayley
+                     ? update_frame(b.frame_initial[i], spin, h, FrameUpdate::cayley)
+                     : update_frame(b.frame_detection[i], theta * spin, h, FrameUpdate::linearised);
+  }
+}
+
+void update_step(Scene3D& scene, RunState3D& state) {
+  RigidBodies3D& b = scene.bodies;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    b.displacement_begin[i] = b.displacement[i];
+    b.velocity_begin[i] = b.velocity[i];
+    b.frame_initial[i] = b.frame[i];
+  }
+  for (Interaction3D& c : state.contacts) c.status_begin = c.status;
+  state.previous = state.contacts;
+}
+
+NlgsResult step_3d(Scene3D& scene, RunState3D& state, const NlgsOptions& options) {
+  increment_step(scene, state);
+  compute_external_forces(scene, state);
+  compute_free_velocity(scene, state);
+  select_prox_tactors(scene, state);
+  recup_rloc(state);
+  const NlgsResult result = solve_contacts(scene, state, options);
+  compute_dof(scene, state);
+  update_step(scene, state);
+  return result;
+}
+
+}  // namespace lmgc::solver

@@ -1,0 +1,37 @@
+#pragma once
+// One Moreau–Jean θ-scheme step of a rigid 3D scene, as the stages of LMGC90's step
+// (spec: numerics.md §1.2, §2-§5): each stage a plain function over the scene's flat arrays.
+#include <vector>
+
+#include "solver/model/scene_3d.hpp"
+#include "solver/nlgs/nlgs_2d.hpp"  // NlgsOptions, NlgsResult: the same for both dimensions
+
+namespace lmgc::solver {
+
+struct RunState3D {
+  double time = 0.0;
+  long step = 0;
+  double h = 1e-3;
+  double theta = 0.5;
+  std::vector<Interaction3D> contacts;
+  std::vector<Interaction3D> previous;
+};
+
+void increment_step(Scene3D& scene, RunState3D& state);
+// Gravity, the explicit gyroscopic torque at t_begin, driven forces.
+void compute_external_forces(Scene3D& scene, const RunState3D& state);
+void compute_free_velocity(Scene3D& scene, const RunState3D& state);
+// Detection on the θ configuration: centre = reference + X_begin + (1-θ) h v_begin, frame turned
+// from the begin frame by (1-θ) ω_begin.
+void select_prox_tactors(Scene3D& scene, RunState3D& state);
+void recup_rloc(RunState3D& state);
+// NLGS in LMGC90's Exchange_Local_Global form: every local solve sees the bodies' current velocities
+// and injects its impulse increment at once (numerics.md §3).
+NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& options);
+// X = X_begin + h((1-θ) V_begin + θ V); frame per the scene's rotation scheme.
+void compute_dof(Scene3D& scene, const RunState3D& state);
+void update_step(Scene3D& scene, RunState3D& state);
+
+NlgsResult step_3d(Scene3D& scene, RunState3D& state, const NlgsOptions& options);
+
+}  // namespace lmgc::solver

@@ -1,0 +1,85 @@
+#pragma once
+// Everything a rigid 3D run needs, as flat arrays: RBDY3 bodies, sphere and plane contactors,
+// laws, visibility rows, and the ScenePlan3D saying which pair families the scene uses.
+// spec: numerics.md §1.2, §2, §5.3. Local vectors are in LMGC90's order (t, n, s).
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "solver/bodies/rigid_bodies_3d.hpp"
+#include "solver/model/contact_status.hpp"
+#include "solver/model/scene_2d.hpp"  // NamedLaw, DrivenDof2D (dimension-free parts)
+
+namespace lmgc::solver {
+
+enum class ContactorShape3D : std::uint8_t { sphere, plane };
+
+// 3D interaction families, in LMGC90's sweep order for these contactors.
+enum class PairFamily3D : std::uint8_t { SPSPx, SPPLx };
+inline constexpr int kPairFamily3DCount = 2;
+
+struct Contactor3D {
+  ContactorShape3D shape = ContactorShape3D::sphere;
+  std::int32_t body = 0;
+  std::int32_t rank = 1;  // rank within its body (1-based)
+  std::string type;       // "SPHER", "SPHEb", "PLANx"
+  std::string color;
+  Eigen::Vector3d shift = Eigen::Vector3d::Zero();            // offset from the centre of inertia, body axes
+  Eigen::Matrix3d local_frame = Eigen::Matrix3d::Identity();  // PLANx axes (T, S, N) in body axes
+  double radius = 0.0;                                        // SPHER, SPHEb
+  Eigen::Vector3d half_axes = Eigen::Vector3d::Zero();        // PLANx axe1, axe2, axe3
+  double bounding_radius = 0.0;
+};
+
+struct Visibility3D {
+  std::string candidate_type, candidate_color, antagonist_type, antagonist_color;
+  std::int32_t law = 0;
+  double alert = 0.0;
+  PairFamily3D family = PairFamily3D::SPSPx;
+};
+
+struct Interaction3D {
+  PairFamily3D family = PairFamily3D::SPSPx;
+  std::int32_t candidate = 0, antagonist = 0;  // contactor ids
+  std::int32_t candidate_body = 0, antagonist_body = 0;
+  std::int32_t law = 0, visibility = 0;
+  // Geometry at the detection configuration: rows t, n, s of the local frame, global axes.
+  Eigen::Matrix3d frame = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  double gap_begin = 0.0;
+  // Rows: frameᵀ (ℓ × t), frameᵀ (ℓ × n), frameᵀ (ℓ × s) of each body (ℓ = contact point − centre),
+  // in body axes: the rotational part of Hᵀ (numerics.md §2).
+  Eigen::Matrix3d lever_candidate = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d lever_antagonist = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d velocity_begin = Eigen::Vector3d::Zero();  // local (t, n, s) at t_begin
+
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();  // impulse over the step (t, n, s)
+  Eigen::Vector3d u = Eigen::Vector3d::Zero();  // relative velocity at the end of the step
+  ContactStatus status = ContactStatus::nknow;
+  ContactStatus status_begin = ContactStatus::nknow;
+  std::array<double, 6> internal{};
+
+  Eigen::Matrix3d W = Eigen::Matrix3d::Zero();  // Delassus block (t, n, s)
+  Eigen::Vector3d covfree = Eigen::Vector3d::Zero();
+  double mu = 0.0;
+  bool inactive = false;
+};
+
+struct ScenePlan3D {
+  std::array<bool, kPairFamily3DCount> families{};
+};
+
+struct Scene3D {
+  RigidBodies3D bodies;
+  std::vector<Contactor3D> contactors;
+  std::vector<NamedLaw> laws;
+  std::vector<Visibility3D> visibility;
+  std::vector<DrivenDof2D> driven;  // dof 0..5
+  Eigen::Vector3d gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
+  FrameUpdate rotation = FrameUpdate::linearised;  // cayley = RBDY3_NewRotationScheme
+  ScenePlan3D plan;
+};
+
+}  // namespace lmgc::solver

@@ -1,0 +1,38 @@
+#pragma once
+// Building a rigid 3D scene in code (tests, benchmarks, reference cases): spheres, sphere
+// clusters, fixed planes, laws, visibility rows, fixed dofs.
+#include <string>
+#include <vector>
+
+#include "solver/model/scene_3d.hpp"
+
+namespace lmgc::solver {
+
+class SceneBuilder3D {
+ public:
+  // A sphere of radius r and density ρ at `centre`: m = ρ 4/3 π r³, I = 2/5 m r².
+  int add_sphere(const Eigen::Vector3d& centre, double radius, double density,
+                 const std::string& color = "BLEUx");
+  // Equal spheres rigidly joined (SPHEb), offsets from `centre`; mass and inertia of the union of
+  // the balls taken as disjoint (parallel-axis theorem), principal axes from the inertia tensor.
+  int add_sphere_cluster(const Eigen::Vector3d& centre, const std::vector<Eigen::Vector3d>& offsets,
+                         double radius, double density, const std::string& color = "BLEUx");
+  // A fixed PLANx box centred at `centre`, axes (T, S, N) the columns of `frame`, half-axes
+  // (axe1, axe2, axe3).
+  int add_fixed_plane(const Eigen::Vector3d& centre, const Eigen::Matrix3d& frame,
+                      const Eigen::Vector3d& half_axes, const std::string& color = "VERTx");
+  int add_law(const std::string& nickname, const ContactLaw& law);
+  void see(const std::string& candidate_type, const std::string& candidate_color, const std::string& law,
+           const std::string& antagonist_type, const std::string& antagonist_color, double alert);
+  void set_velocity(int body, const Vector6d& velocity);
+  void set_frame(int body, const Eigen::Matrix3d& frame);
+  void set_gravity(const Eigen::Vector3d& g) { scene_.gravity = g; }
+  void set_rotation_scheme(FrameUpdate method) { scene_.rotation = method; }
+  Scene3D build();
+
+ private:
+  int add_body(const Eigen::Vector3d& centre, double mass, const Eigen::Vector3d& inertia);
+  Scene3D scene_;
+};
+
+}  // namespace lmgc::solver
