@@ -1,0 +1,211 @@
+#include "solver/bodies/rigid_3d_properties.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <cmath>
+#include <stdexcept>
+
+namespace lmgc::solver {
+namespace {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+constexpr double one_third = 1.0 / 3.0;  // `untiers` (mod_RBDY3.f90:474)
+
+// Volume, geometric principal inertia, embedded frame and shift of one contactor as LMGC90's
+// read_BDARY_* leave them.
+struct ContactorGeometry {
+  double volume = 0.0;
+  Vector3d inertia = Vector3d::Zero();
+  Matrix3d frame = Matrix3d::Identity();
+  Vector3d shift = Vector3d::Zero();
+  double centre_weight = 0.0;  // volume in the centre of inertia / total volume (0 for PT3Dx)
+  bool modelled = true;
+};
+
+double ball_volume(double r) {
+  return 4.0 * lmgc_pi * r * r * r / 3.0;
+}
+
+ContactorGeometry contactor_geometry(const Rigid3DContactorShape& c, double avrd,
+                                     const Vector3d& given_inertia) {
+  ContactorGeometry g;
+  if (c.type == "SPHER" || c.type == "SPHEb") {
+    // mod_a_BDARY_SPHER.f90:68-71 (SPHER), :92-95 and :105-107 (SPHEb); SPHER's shift is the 0
+    // set by read_bodies (mod_RBDY3.f90:810).
+    const double r = c.radius;
+    g.volume = ball_volume(r);
+    g.inertia = Vector3d::Constant(0.4 * r * r * g.volume);
+    if (c.type == "SPHEb") g.shift = c.shift;
+    g.centre_weight = g.volume;
+  } else if (c.type == "PLANx") {
+    // mod_a_BDARY_PLANx.f90:82-86; localframe and its coo1..3 :96-128.
+    const Vector3d& a = c.half_axes;
+    g.volume = 8.0 * a.x() * a.y() * a.z();
+    g.inertia = Vector3d(g.volume * (a.y() * a.y() + a.z() * a.z()) / 3.0,
+                         g.volume * (a.x() * a.x() + a.z() * a.z()) / 3.0,
+                         g.volume * (a.y() * a.y() + a.x() * a.x()) / 3.0);
+    g.frame = c.frame;
+    g.shift = c.shift;
+    g.centre_weight = g.volume;
+  } else if (c.type == "PT3Dx") {
+    // A ball of radius avrd, 1 when avrd = 0 (mod_RBDY3.f90:902-909); given I-line values are kept
+    // where non-zero (mod_RBDY3.f90:812-826, mod_a_BDARY_PT3Dx.f90:67-72); weight 0 in the centre
+    // (mod_RBDY3.f90:1044).
+    const double r = avrd == 0.0 ? 1.0 : avrd;
+    g.volume = ball_volume(r);
+    for (int k = 0; k < 3; ++k)
+      g.inertia[k] = given_inertia[k] != 0.0 ? given_inertia[k] : 0.4 * r * r * g.volume;
+    g.shift = c.shift;
+    g.centre_weight = 0.0;
+  } else {
+    g.frame = c.frame;
+    g.shift = c.shift;
+    g.modelled = false;
+  }
+  return g;
+}
+
+// Our sign convention for an eigenvector: its largest component (first one on ties) positive.
+Vector3d oriented(const Vector3d& v) {
+  int imax = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs(v[i]) > std::abs(v[imax])) imax = i;
+  return v[imax] < 0.0 ? Vector3d(-v) : v;
+}
+
+}  // namespace
+
+PrincipalInertia lmgc_diagonalise33(Matrix3d m) {
+  // shared/mod_algebra.f90:364-388: zero the negligible terms row by row, count the zero
+  // off-diagonal ones.
+  int zeros = 0;
+  for (int j = 0; j < 3; ++j) {
+    const double djj = std::abs(m(j, j));
+    for (int k = 0; k < 3; ++k) {
+      if (djj > 1.0e-10) {
+        if (std::abs(m(j, k)) < 1.0e-14 * djj) m(j, k) = 0.0;
+      } else if (std::abs(m(j, k)) < 1.0e-17) {
+        m(j, k) = 0.0;
+      }
+      if (j != k && m(j, k) == 0.0) ++zeros;
+    }
+  }
+  PrincipalInertia p;
+  if (zeros == 6) {  // :392-403: already diagonal, kept in place
+    p.moments = m.diagonal();
+    p.frame.setIdentity();
+    return p;
+  }
+  // :411-449: dsyevd('V','L') — lower triangle, ascending eigenvalues, unit eigenvectors in
+  // columns; e1, e2 normalised (moments scaled by their squared norms), e3 = e1 × e2.
+  // SelfAdjointEigenSolver also reads the lower triangle only and sorts ascending.
+  Eigen::SelfAdjointEigenSolver<Matrix3d> solver(m);
+  if (solver.info() != Eigen::Success)
+    throw std::runtime_error("diagonalise33: diagonalisation not possible");
+  Matrix3d f = solver.eigenvectors();
+  Vector3d ip = solver.eigenvalues();
+  for (int j = 0; j < 2; ++j) {
+    const double norm = f.col(j).squaredNorm();
+    f.col(j) = oriented(f.col(j) / std::sqrt(norm));
+    ip[j] *= norm;
+  }
+  ip[2] *= f.col(2).squaredNorm();
+  const Vector3d e3 = f.col(0).cross(f.col(1));
+  f.col(2) = e3;
+  p.moments = ip;
+  p.frame = f;
+  return p;
+}
+
+RigidBody3DProperties rigid_3d_properties(double density, double avrd, const Vector3d& given_inertia,
+                                          const std::vector<Rigid3DContactorShape>& contactors) {
+  if (contactors.empty())
+    throw std::invalid_argument("rigid_3d_properties: RBDY3 without contactor (LMGC90 cannot size it)");
+
+  std::vector<ContactorGeometry> parts;
+  parts.reserve(contactors.size());
+  RigidBody3DProperties out;
+  for (const auto& c : contactors) {
+    parts.push_back(contactor_geometry(c, avrd, given_inertia));
+    if (!parts.back().modelled) ++out.ignored_contactors;
+  }
+
+  if (parts.size() == 1) {
+    // mod_RBDY3.f90:970-1028.
+    const ContactorGeometry& g = parts.front();
+    if (avrd == 0.0) {
+      out.avrd = std::pow(0.75 * g.volume / lmgc_pi, one_third);  // :974-977
+      out.volume = g.volume;
+    } else {
+      out.avrd = avrd;
+      out.volume = 4.0 * lmgc_pi * std::pow(avrd, 3.0) * one_third;  // :979-980
+    }
+    out.centre_shift = g.shift;         // :996-998
+    out.geometric_inertia = g.inertia;  // :1012-1014 (I-line overwritten by the reader)
+    out.frame = g.frame;                // :1019-1022
+    out.contactor_shifts.assign(1, Vector3d::Zero());
+    out.contactor_frames.assign(1, Matrix3d::Identity());  // :1025
+  } else {
+    // mod_RBDY3.f90:1032-1052: centre of inertia and total volume.
+    Vector3d og = Vector3d::Zero();
+    double vt = 0.0;
+    for (const auto& g : parts) {
+      og += g.centre_weight * g.shift;
+      vt += g.centre_weight;
+    }
+    if (vt == 0.0)
+      throw std::invalid_argument("rigid_3d_properties: several contactors of total volume 0 (LMGC90 stops)");
+    og /= vt;
+    out.volume = vt;                                                           // :1054
+    out.avrd = avrd == 0.0 ? std::pow(0.75 * vt / lmgc_pi, one_third) : avrd;  // :1059-1064
+    out.centre_shift = og;                                                     // :1078
+    for (const auto& g : parts) {
+      out.contactor_shifts.push_back(g.shift - og);  // :1068-1071
+      out.contactor_frames.push_back(g.frame);
+    }
+
+    if (given_inertia != Vector3d::Zero()) {
+      // :1089-1113: the I-line is the principal inertia; identity frame as a placeholder (DOF.INI
+      // expected), shifts left in the input axes.
+      out.geometric_inertia = given_inertia;
+      out.frame.setIdentity();
+      out.frame_is_placeholder = true;
+    } else {
+      // :1117-1153: Huygens about the centre of inertia.
+      Matrix3d it = Matrix3d::Zero();
+      for (std::size_t i = 0; i < parts.size(); ++i) {
+        const ContactorGeometry& g = parts[i];
+        const Matrix3d& e = g.frame;
+        it += e * (g.inertia.asDiagonal() * e.transpose());
+        const Vector3d& s = out.contactor_shifts[i];
+        for (int k = 0; k < 3; ++k) {
+          Vector3d d = s;
+          d[k] = 0.0;
+          it(k, k) += g.volume * d.dot(d);
+        }
+        it(0, 1) -= g.volume * s.x() * s.y();
+        it(1, 0) -= g.volume * s.x() * s.y();
+        it(0, 2) -= g.volume * s.x() * s.z();
+        it(2, 0) -= g.volume * s.x() * s.z();
+        it(1, 2) -= g.volume * s.z() * s.y();
+        it(2, 1) -= g.volume * s.z() * s.y();
+      }
+      const PrincipalInertia p = lmgc_diagonalise33(it);  // :1156
+      out.geometric_inertia = p.moments;                  // :1165-1167
+      out.frame = p.frame;                                // :1169-1172
+      for (std::size_t i = 0; i < parts.size(); ++i) {
+        out.contactor_shifts[i] = p.frame.transpose() * out.contactor_shifts[i];  // :1175-1181
+        if (contactors[i].type == "PLANx")
+          out.contactor_frames[i] = p.frame.transpose() * parts[i].frame;  // :1219-1224
+      }
+    }
+  }
+
+  out.mass = density * out.volume;                // comp_mass_RBDY3 :3756
+  out.inertia = density * out.geometric_inertia;  // :3761-3763
+  return out;
+}
+
+}  // namespace lmgc::solver
