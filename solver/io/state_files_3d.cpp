@@ -1,0 +1,212 @@
+#include "solver/io/state_files_3d.hpp"
+
+#include <algorithm>
+#include <map>
+#include <string>
+#include <string_view>
+#include <tuple>
+
+#include "grammar/tact_behav/law_catalogue.hpp"
+#include "grammar/vloc_rloc/interaction_catalogue.hpp"
+
+namespace lmgc::solver {
+
+grammar::DofFile dof_file_3d(const Scene3D& scene, const RunState3D& state) {
+  grammar::DofFile file;
+  file.step = grammar::Integer{state.step};
+  file.time = grammar::Real{state.time};
+  grammar::DofSection section;
+  section.closed = true;
+  const RigidBodies3D& b = scene.bodies;
+  section.bodies.reserve(b.size());
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    grammar::DofBody body;
+    body.body_type = grammar::Word{"RBDY3"};
+    body.number = grammar::Integer{static_cast<std::int64_t>(i + 1)};
+    grammar::DofNode node;
+    node.node_type = grammar::Word{"NO6xx"};
+    node.number = grammar::Integer{1};
+    for (int d = 0; d < 6; ++d) {
+      node.x.push_back(grammar::Real{b.displacement[i](d)});
+      node.v.push_back(grammar::Real{b.velocity[i](d)});
+    }
+    // a, b, g: the principal axes (columns of the frame) in global coordinates.
+    for (int axis = 0; axis < 3; ++axis)
+      for (int d = 0; d < 3; ++d) node.frame.push_back(grammar::Real{b.frame[i](d, axis)});
+    body.nodes.push_back(std::move(node));
+    section.bodies.push_back(std::move(body));
+  }
+  file.sections.push_back(std::move(section));
+  // The MAILx module writes its dashed line even when it has no body (state-and-outputs.md §1.3).
+  file.sections.push_back(grammar::DofSection{{}, true});
+  return file;
+}
+
+namespace {
+
+std::string_view family_name(PairFamily3D f) {
+  return f == PairFamily3D::SPPLx ? "SPPLx" : "SPSPx";
+}
+
+// The contactor type LMGC90's contact modules write: spheres of clusters (SPHEb) belong to the
+// SPHER module and are written SPHER (1_ClusterSP_2_PL reference files).
+std::string_view written_type(const Contactor3D& c) {
+  return c.shape == ContactorShape3D::sphere ? std::string_view("SPHER") : std::string_view("PLANx");
+}
+
+// Index (t, n, s) storage of the local component a label letter names.
+int local_index(char letter) {
+  return letter == 't' ? 0 : letter == 'n' ? 1 : 2;
+}
+
+// The value written under a Vloc_Rloc label of a 3D module (interaction_catalogue.cpp labels).
+double labelled_value(std::string_view label, const Interaction3D& c, double h) {
+  if (label.size() < 4) return 0.0;
+  if (label.starts_with("rl")) return c.r(local_index(label[2])) / h;
+  if (label.starts_with("vl")) return c.u(local_index(label[2]));
+  // gTT =, gapTT, gap =: the end-of-step gap set by the NLGS post-processing.
+  if (label.starts_with("g")) return c.gap_begin + h * c.u(1);
+  if (label.starts_with("coo")) return c.point(std::clamp(label[3] - '1', 0, 2));
+  if (label[1] == '(') return c.frame(local_index(label[0]), std::clamp(label[2] - '1', 0, 2));
+  return 0.0;
+}
+
+// The '#' line naming a law's 3D internal variables: names at their columns, 285 characters.
+std::string internal_comment(const grammar::LawKind& kind) {
+  std::string line(285, ' ');
+  line[0] = '#';
+  for (const auto& slot : kind.internals_3d.slots)
+    if (slot.column >= 1 && slot.column - 1 + slot.text.size() <= line.size())
+      line.replace(slot.column - 1, slot.text.size(), slot.text);
+  return line;
+}
+
+}  // namespace
+
+grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& state) {
+  using grammar::Integer;
+  using grammar::Real;
+  using grammar::Word;
+  grammar::VlocRlocFile file;
+  file.step = Integer{state.step};
+  file.time = Real{state.time};
+  const double h = state.h;
+  // Serial index of each sphere among the scene's spheres (SPHER and SPHEb: LMGC90's SPHER list),
+  // the iantac of SPSPx.
+  std::vector<std::int64_t> sphere_serial(scene.contactors.size(), 0);
+  std::int64_t spheres = 0;
+  for (std::size_t k = 0; k < scene.contactors.size(); ++k)
+    if (scene.contactors[k].shape == ContactorShape3D::sphere) sphere_serial[k] = ++spheres;
+  // LMGC90's 3D module order (state-and-outputs.md §1.1): ... SPPLx, SPPRx, SPSPx.
+  constexpr PairFamily3D kWriteOrder[] = {PairFamily3D::SPPLx, PairFamily3D::SPSPx};
+  for (PairFamily3D family : kWriteOrder) {
+    std::vector<std::size_t> members;
+    for (std::size_t k = 0; k < state.contacts.size(); ++k)
+      if (state.contacts[k].family == family) members.push_back(k);
+    if (members.empty()) continue;
+    const grammar::InteractionKind* kind = grammar::find_interaction_kind(family_name(family));
+    // Written by candidate contactor, then in detection order (LMGC90's adjacency rank).
+    std::vector<std::size_t> order(members.size());
+    for (std::size_t m = 0; m < members.size(); ++m) order[m] = m;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return state.contacts[members[a]].candidate < state.contacts[members[b]].candidate;
+    });
+    for (std::size_t m : order) {
+      const Interaction3D& c = state.contacts[members[m]];
+      const Contactor3D& cd = scene.contactors[static_cast<std::size_t>(c.candidate)];
+      const Contactor3D& an = scene.contactors[static_cast<std::size_t>(c.antagonist)];
+      const NamedLaw& law = scene.laws[static_cast<std::size_t>(c.law)];
+      grammar::VlocRlocInteraction out;
+      out.type = Word{std::string(kind->type)};
+      out.number = Integer{static_cast<std::int64_t>(m + 1)};
+      out.title = std::string(kind->title);
+      // Data line: the CDVER column is blank (9X) in both modules; SPSPx ends with iantac.
+      out.words = {
+          Word{"RBDY3"}, Word{std::string(written_type(cd))}, Word{law.nickname},
+          Word{"RBDY3"}, Word{std::string(written_type(an))}, Word{std::string(status_name(c.status))}};
+      out.integers = {Integer{cd.body + 1}, Integer{cd.rank}, Integer{an.body + 1}, Integer{an.rank}};
+      if (family == PairFamily3D::SPSPx)
+        out.integers.push_back(Integer{sphere_serial[static_cast<std::size_t>(c.antagonist)]});
+      for (const grammar::VectorLineKind& line : kind->vectors) {
+        grammar::VlocRlocVector v;
+        for (int k = 0; k < line.count; ++k) {
+          v.labels.emplace_back(line.labels[k]);
+          v.values.push_back(Real{labelled_value(line.labels[k], c, h)});
+        }
+        out.vectors.push_back(std::move(v));
+      }
+      const grammar::LawKind* law_kind = grammar::find_law_kind(law_keyword(law.law));
+      const int internals = law_kind ? law_kind->internals_3d.count : 0;
+      if (internals > 0) {
+        std::vector<Real> values;
+        for (int k = 0; k < internals; ++k)
+          values.push_back(Real{static_cast<std::size_t>(k) < c.internal.size()
+                                    ? c.internal[static_cast<std::size_t>(k)]
+                                    : 0.0});
+        out.internal_comment = internal_comment(*law_kind);
+        out.internal_lines.push_back(std::move(values));
+      }
+      file.interactions.push_back(std::move(out));
+    }
+  }
+  return file;
+}
+
+std::vector<Interaction3D> warm_start_3d(const grammar::VlocRlocFile& file, const Scene3D& scene, double h) {
+  // Contactor index by (body number, contactor rank).
+  std::map<std::pair<std::int64_t, std::int64_t>, std::int32_t> by_rank;
+  for (std::size_t k = 0; k < scene.contactors.size(); ++k)
+    by_rank[{scene.contactors[k].body + 1, scene.contactors[k].rank}] = static_cast<std::int32_t>(k);
+  std::vector<Interaction3D> previous;
+  for (const auto& b : file.interactions) {
+    PairFamily3D family;
+    if (b.type.value == "SPSPx")
+      family = PairFamily3D::SPSPx;
+    else if (b.type.value == "SPPLx")
+      family = PairFamily3D::SPPLx;
+    else
+      continue;
+    const auto& n = b.integers;
+    if (n.size() < 4) continue;
+    const auto cd = by_rank.find({n[0].value, n[1].value});
+    const auto an = by_rank.find({n[2].value, n[3].value});
+    if (cd == by_rank.end() || an == by_rank.end()) continue;
+    const Contactor3D& candidate = scene.contactors[static_cast<std::size_t>(cd->second)];
+    const Contactor3D& antagonist = scene.contactors[static_cast<std::size_t>(an->second)];
+    const ContactorShape3D antagonist_shape =
+        family == PairFamily3D::SPPLx ? ContactorShape3D::plane : ContactorShape3D::sphere;
+    if (candidate.shape != ContactorShape3D::sphere || antagonist.shape != antagonist_shape) continue;
+    Interaction3D c;
+    c.family = family;
+    c.candidate = cd->second;
+    c.antagonist = an->second;
+    c.candidate_body = candidate.body;
+    c.antagonist_body = antagonist.body;
+    // The law named on the data line (A5 words: cdbdy, cdtac, behav, anbdy, antac, sttus).
+    if (b.words.size() >= 3)
+      for (std::size_t l = 0; l < scene.laws.size(); ++l)
+        if (scene.laws[l].nickname == b.words[2].value) c.law = static_cast<std::int32_t>(l);
+    for (const auto& line : b.vectors)
+      for (std::size_t k = 0; k < line.values.size() && k < line.labels.size(); ++k) {
+        const std::string_view label = line.labels[k];
+        if (label.size() < 3) continue;
+        if (label.starts_with("rl"))
+          c.r(local_index(label[2])) = line.values[k].value * h;
+        else if (label.starts_with("vl"))
+          c.u(local_index(label[2])) = line.values[k].value;
+      }
+    if (!b.words.empty()) status_from_name(b.words.back().value, c.status);
+    c.status_begin = c.status;
+    std::size_t k = 0;
+    for (const auto& line : b.internal_lines)
+      for (const auto& v : line)
+        if (k < c.internal.size()) c.internal[k++] = v.value;
+    previous.push_back(c);
+  }
+  std::sort(previous.begin(), previous.end(), [](const Interaction3D& a, const Interaction3D& b) {
+    return std::tie(a.family, a.candidate, a.antagonist) < std::tie(b.family, b.candidate, b.antagonist);
+  });
+  return previous;
+}
+
+}  // namespace lmgc::solver
