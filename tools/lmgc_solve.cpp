@@ -1,6 +1,6 @@
-// lmgc-solve: runs an LMGC90 case (rigid 2D for now) and writes what LMGC90 writes: OUTBOX echo
-// and state files, DISPLAY, POSTPRO, plus a per-step run report with the achieved residual.
-// Exit: 0 success, 1 invalid data, 2 usage, 3 not converged under --strict, 130 interrupted.
+// lmgc-solve: runs an LMGC90 case (rigid 2D; rigid 3D with spheres and planes) and writes what LMGC90 writes:
+// OUTBOX echo and state files, DISPLAY, POSTPRO, plus a per-step run report with the achieved residual. Exit:
+// 0 success, 1 invalid data, 2 usage, 3 not converged under --strict, 130 interrupted.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -58,6 +58,8 @@ int main(int argc, char** argv) {
   app.add_option("--xmax-boundary", options.x_max, "... right of this");
   app.add_option("--xperiod", options.x_period, "periodic in x with this period (SetPeriodicCondition)");
   app.add_flag("-q,--quiet", options.quiet, "no progress line");
+  app.add_flag("--new-rotation-scheme", options.new_rotation_scheme,
+               "RBDY3: update the principal frame by the Cayley map (RBDY3_NewRotationScheme)");
   app.add_flag("--strict", options.strict, "exit 3 when a step stopped at the iteration cap");
   app.set_version_flag("--version", "lmgc-solve 0.1.0");
   app.footer(
@@ -86,7 +88,12 @@ int main(int argc, char** argv) {
   if (files) validate::check_case(*files, sink);
   solver::Scene2D scene;
   solver::RunOutputs2D outputs;
-  bool ready = files && !sink.has_errors() && solver::prepare_run_2d(*files, scene, outputs, sink);
+  solver::Scene3D scene_3d;
+  solver::RunOutputs3D outputs_3d;
+  const bool three_d = files && solver::is_rigid_3d_case(*files);
+  bool ready = files && !sink.has_errors() &&
+               (three_d ? solver::prepare_run_3d(*files, scene_3d, outputs_3d, sink)
+                        : solver::prepare_run_2d(*files, scene, outputs, sink));
   if (ready) {
     // COMMAND.DAT's parameters first, then the flags given on the command line on top of them.
     solver::RunOptions from_file;
@@ -124,7 +131,7 @@ int main(int argc, char** argv) {
     return files ? kExitData : kExitUsage;
   }
   // The echo files, as LMGC90 writes them when it reads the case.
-  for (const auto& output : solver::echo_files_2d(*files)) {
+  for (const auto& output : three_d ? solver::echo_files_3d(*files) : solver::echo_files_2d(*files)) {
     std::string error;
     if (!grammar::write_file_whole(std::filesystem::path(case_dir) / output.relative_path, output.content,
                                    error)) {
@@ -133,7 +140,9 @@ int main(int argc, char** argv) {
     }
   }
   solver::install_interrupt_handler();
-  const solver::RunSummary summary = solver::run_2d(scene, options, outputs);
+  if (options.new_rotation_scheme) scene_3d.rotation = solver::FrameUpdate::cayley;
+  const solver::RunSummary summary =
+      three_d ? solver::run_3d(scene_3d, options, outputs_3d) : solver::run_2d(scene, options, outputs);
   if (!summary.error.empty()) {
     std::cerr << "lmgc-solve: " << summary.error << "\n";
     return kExitData;

@@ -316,6 +316,8 @@ CommandRunParameters command_run_parameters(const CommandFile& file, DiagnosticS
       first_real(c, 0, p.x_period);
     } else if (k == "YPERIODIC CONDITION") {
       first_real(c, 0, p.y_period);
+    } else if (k == "NEW ROTATION SCHEME") {
+      p.new_rotation_scheme = true;
     }
   });
   return p;

@@ -74,8 +74,9 @@ struct CommandRunParameters {
   bool quick_scramble = false;
   double y_min = 0.0;
   bool has_y_min = false;
-  double x_period = 0.0;  // PERIODIC CONDITION (2D) / XPERIODIC CONDITION (3D); 0 = none
-  double y_period = 0.0;  // YPERIODIC CONDITION (3D)
+  double x_period = 0.0;             // PERIODIC CONDITION (2D) / XPERIODIC CONDITION (3D); 0 = none
+  double y_period = 0.0;             // YPERIODIC CONDITION (3D)
+  bool new_rotation_scheme = false;  // NEW ROTATION SCHEME (RBDY3: Cayley update of the frame)
 };
 CommandRunParameters command_run_parameters(const CommandFile& file, DiagnosticSink& sink);
 

@@ -4,8 +4,10 @@
 #include "grammar/command/expand.hpp"
 #include "grammar/vloc_rloc/writer.hpp"
 #include "solver/bodies/rigid_2d_properties.hpp"
+#include "solver/bodies/rigid_3d_properties.hpp"
 #include "solver/io/state_files_2d.hpp"
 #include "solver/model/build_scene_2d.hpp"
+#include "solver/model/build_scene_3d.hpp"
 
 namespace lmgc::solver {
 
@@ -81,6 +83,45 @@ bool prepare_run_2d(const validate::CaseFiles& files, Scene2D& scene, RunOutputs
   return true;
 }
 
+bool is_rigid_3d_case(const validate::CaseFiles& files) {
+  if (!files.bodies || files.bodies->bodies.empty()) return false;
+  for (const grammar::Body& body : files.bodies->bodies)
+    if (body.type != grammar::BodyType::rbdy3) return false;
+  return true;
+}
+
+bool prepare_run_3d(const validate::CaseFiles& files, Scene3D& scene, RunOutputs3D& outputs,
+                    grammar::DiagnosticSink& sink) {
+  if (!files.bodies || !files.bulk_behav) return false;
+  static const grammar::TactBehavFile kNoLaws;
+  SceneInput3D input;
+  input.bodies = &*files.bodies;
+  input.tact_behav = files.tact_behav ? &*files.tact_behav : &kNoLaws;
+  input.drv_dof = files.drv_dof ? &*files.drv_dof : nullptr;
+  input.dof_ini = files.dof_ini ? &*files.dof_ini : nullptr;
+  input.evolutions = &files.evolutions;
+  for (const grammar::BulkLaw& law : files.bulk_behav->laws) {
+    double density = 0.0;
+    if (!law.density_field && grammar::bulk_density(*files.bulk_behav, law.nickname.value, density))
+      input.densities.emplace(law.nickname.value, density);
+  }
+  if (files.bulk_behav->has_gravity)
+    input.gravity = Eigen::Vector3d(files.bulk_behav->gravity[0].value, files.bulk_behav->gravity[1].value,
+                                    files.bulk_behav->gravity[2].value);
+  input.bodies_path = datbox_path(files, "BODIES.DAT");
+  input.tact_behav_path = datbox_path(files, "TACT_BEHAV.DAT");
+  input.drv_dof_path = datbox_path(files, "DRV_DOF.DAT");
+  if (!build_scene_3d(input, scene, sink)) return false;
+  if (files.command) {
+    grammar::DiagnosticSink ignored(100);  // apply_command_parameters reports them
+    if (grammar::command_run_parameters(*files.command, ignored).new_rotation_scheme)
+      scene.rotation = FrameUpdate::cayley;
+  }
+  outputs.case_dir = files.case_dir;
+  if (files.vloc_rloc_ini) outputs.warm_start = &*files.vloc_rloc_ini;
+  return true;
+}
+
 void apply_command_parameters(const validate::CaseFiles& files, RunOptions& options,
                               grammar::DiagnosticSink& sink) {
   if (!files.command) return;
@@ -107,6 +148,56 @@ std::vector<validate::OutputFile> echo_files_2d(const validate::CaseFiles& files
   grammar::BodiesFile bodies = *files.bodies;
   for (grammar::Body& body : bodies.bodies)
     if (body.type == grammar::BodyType::rbdy2) normalise_rigid_body_2d(body);
+  for (validate::OutputFile& file : out)
+    if (file.relative_path == "OUTBOX/BODIES.OUT") file.content = grammar::write_bodies(bodies);
+  return out;
+}
+
+std::vector<validate::OutputFile> echo_files_3d(const validate::CaseFiles& files) {
+  std::vector<validate::OutputFile> out = validate::echo_files(files);
+  if (!files.bodies) return out;
+  // BODIES.OUT after LMGC90's RBDY3 pre-computations (mod_RBDY3): the node moved to the centre of
+  // inertia, avrd and the per-density principal inertia filled in, SPHEb offsets from the centre.
+  grammar::BodiesFile bodies = *files.bodies;
+  for (grammar::Body& body : bodies.bodies) {
+    if (body.type != grammar::BodyType::rbdy3 || !body.rigid_bulk || body.nodes.empty()) continue;
+    std::vector<Rigid3DContactorShape> shapes;
+    std::vector<grammar::Contactor*> spheres_with_offset;
+    for (grammar::Contactor& t : body.contactors) {
+      const auto value = [&](std::size_t i) { return i < t.values.size() ? t.values[i].value : 0.0; };
+      Rigid3DContactorShape shape;
+      shape.type = t.type.value;
+      if (shape.type == "SPHER" || shape.type == "SPHEb") {
+        shape.radius = value(0);
+        if (shape.type == "SPHEb") shape.shift = Eigen::Vector3d(value(1), value(2), value(3));
+      } else if (shape.type == "PLANx") {
+        shape.half_axes = Eigen::Vector3d(value(0), value(1), value(2));
+      }
+      shapes.push_back(shape);
+      spheres_with_offset.push_back(shape.type == "SPHEb" && t.values.size() >= 4 ? &t : nullptr);
+    }
+    grammar::RigidBulk& bulk = *body.rigid_bulk;
+    RigidBody3DProperties p;
+    try {
+      p = rigid_3d_properties(
+          1.0, bulk.avrd.value,
+          Eigen::Vector3d(bulk.principal_inertia[0].value, bulk.principal_inertia[1].value,
+                          bulk.principal_inertia[2].value),
+          shapes);
+    } catch (const std::invalid_argument&) {
+      continue;  // reported when the scene is built
+    }
+    bulk.avrd.value = p.avrd;
+    for (int k = 0; k < 3; ++k)
+      bulk.principal_inertia[static_cast<std::size_t>(k)].value = p.geometric_inertia(k);
+    auto& node = body.nodes.front().coordinates;
+    for (std::size_t k = 0; k < 3 && k < node.size(); ++k)
+      node[k].value += p.centre_shift(static_cast<int>(k));
+    for (std::size_t k = 0; k < spheres_with_offset.size(); ++k)
+      if (spheres_with_offset[k])
+        for (int d = 0; d < 3; ++d)
+          spheres_with_offset[k]->values[static_cast<std::size_t>(d + 1)].value = p.contactor_shifts[k](d);
+  }
   for (validate::OutputFile& file : out)
     if (file.relative_path == "OUTBOX/BODIES.OUT") file.content = grammar::write_bodies(bodies);
   return out;

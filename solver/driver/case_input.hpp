@@ -6,6 +6,7 @@
 
 #include "grammar/common/diagnostic.hpp"
 #include "solver/driver/run_2d.hpp"
+#include "solver/driver/run_3d.hpp"
 #include "solver/driver/run_options.hpp"
 #include "validate/case_files.hpp"
 
@@ -17,6 +18,13 @@ namespace lmgc::solver {
 bool prepare_run_2d(const validate::CaseFiles& files, Scene2D& scene, RunOutputs2D& outputs,
                     grammar::DiagnosticSink& sink);
 
+// True when every body of the case is RBDY3: lmgc-solve runs it with the rigid 3D pipeline.
+bool is_rigid_3d_case(const validate::CaseFiles& files);
+
+// The rigid 3D counterpart of prepare_run_2d (L4001, L4002 for what the 3D solver lacks).
+bool prepare_run_3d(const validate::CaseFiles& files, Scene3D& scene, RunOutputs3D& outputs,
+                    grammar::DiagnosticSink& sink);
+
 // The run parameters COMMAND.DAT sets, laid over `options` (flags given on the command line are
 // applied afterwards by the caller, so they win).
 void apply_command_parameters(const validate::CaseFiles& files, RunOptions& options,
@@ -25,5 +33,8 @@ void apply_command_parameters(const validate::CaseFiles& files, RunOptions& opti
 // The echo files of a rigid 2D run: as validate::echo_files, with BODIES.OUT after LMGC90's
 // RBDY2 pre-computations (avrd, gyrd, centre of inertia), as LMGC90 writes it.
 std::vector<validate::OutputFile> echo_files_2d(const validate::CaseFiles& files);
+
+// The echo files of a rigid 3D run, BODIES.OUT after LMGC90's RBDY3 pre-computations.
+std::vector<validate::OutputFile> echo_files_3d(const validate::CaseFiles& files);
 
 }  // namespace lmgc::solver

@@ -9,15 +9,16 @@
 namespace lmgc::solver {
 
 struct RunOptions {
-  double dt = 1e-3;        // time step [s]
-  double theta = 0.5;      // θ of the Moreau–Jean scheme
-  long steps = 1000;       // number of steps
-  NlgsOptions nlgs;        // solver type, norm, tol, relax, gs_it1, gs_it2
-  double rloc_tol = 0.0;   // warm-start matching tolerance (RecupRloc(tol)); 0 = by contactors
-  long write_every = 0;    // DOF/Vloc_Rloc .OUT.n every this many steps (0 = never)
-  long display_every = 0;  // DISPLAY files every this many steps (0 = never)
-  bool quiet = false;      // no progress line
-  bool strict = false;     // exit 3 when a step did not converge within gs_it1 × gs_it2
+  double dt = 1e-3;                  // time step [s]
+  double theta = 0.5;                // θ of the Moreau–Jean scheme
+  long steps = 1000;                 // number of steps
+  NlgsOptions nlgs;                  // solver type, norm, tol, relax, gs_it1, gs_it2
+  double rloc_tol = 0.0;             // warm-start matching tolerance (RecupRloc(tol)); 0 = by contactors
+  long write_every = 0;              // DOF/Vloc_Rloc .OUT.n every this many steps (0 = never)
+  long display_every = 0;            // DISPLAY files every this many steps (0 = never)
+  bool quiet = false;                // no progress line
+  bool strict = false;               // exit 3 when a step did not converge within gs_it1 × gs_it2
+  bool new_rotation_scheme = false;  // RBDY3: Cayley frame update (RBDY3_NewRotationScheme)
   // Bounds of LMGC90's RBDY2 "out of bounds" (SetYminBoundary, ...).
   double y_min = -std::numeric_limits<double>::infinity();
   double y_max = std::numeric_limits<double>::infinity();

@@ -154,6 +154,10 @@ void increment_step(Scene3D& scene, RunState3D& state) {
     b.velocity[i] = b.velocity_begin[i];
     b.impulse[i].setZero();
   }
+  // Driven velocities hold at t_begin too (LMGC90 imposes them over DOF.INI's values).
+  const double t_begin = state.time - state.h;
+  for (const DrivenDof2D& d : scene.driven)
+    if (!d.is_force) b.velocity_begin[static_cast<std::size_t>(d.body)](d.dof) = d.value(t_begin);
 }
 
 void compute_external_forces(Scene3D& scene, const RunState3D& state) {

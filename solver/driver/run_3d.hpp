@@ -1,0 +1,20 @@
+#pragma once
+// The run loop of a rigid 3D case: steps, OUTBOX state files (DOF, Vloc_Rloc .OUT.n and .LAST), the
+// run report, progress on a terminal, clean stop on Ctrl-C. spec: state-and-outputs.md §1, §2.2.
+#include <filesystem>
+
+#include "grammar/vloc_rloc/ast.hpp"
+#include "solver/driver/run_2d.hpp"  // RunSummary, g_stop_requested
+#include "solver/driver/run_options.hpp"
+#include "solver/integrator/step_3d.hpp"
+
+namespace lmgc::solver {
+
+struct RunOutputs3D {
+  std::filesystem::path case_dir;
+  const grammar::VlocRlocFile* warm_start = nullptr;  // Vloc_Rloc.INI
+};
+
+RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D& outputs);
+
+}  // namespace lmgc::solver

@@ -1,0 +1,237 @@
+#include "solver/model/build_scene_3d.hpp"
+
+#include <stdexcept>
+
+#include "grammar/tact_behav/see_table.hpp"
+#include "solver/bodies/rigid_3d_properties.hpp"
+#include "solver/model/build_scene_2d.hpp"  // contact_law_of: the law table is shared
+
+namespace lmgc::solver {
+
+namespace {
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+bool provided_in_3d(const ContactLaw& law) {
+  return std::holds_alternative<IqsClb>(law) || std::holds_alternative<IqsDsClb>(law) ||
+         std::holds_alternative<GapSgrClb>(law) || std::holds_alternative<GapSgrDsClb>(law) ||
+         std::holds_alternative<RstClb>(law) || std::holds_alternative<RstDsClb>(law) ||
+         std::holds_alternative<VelSgrClb>(law);
+}
+}  // namespace
+
+bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticSink& sink) {
+  bool ok = true;
+  scene = Scene3D{};
+  scene.gravity = in.gravity;
+  std::vector<std::int32_t> body_of_rank;  // RBDY3 rank (1-based) -> body index
+  RigidBodies3D& b = scene.bodies;
+  for (const grammar::Body& body : in.bodies->bodies) {
+    if (body.type != grammar::BodyType::rbdy3 || !body.rigid_bulk || body.nodes.empty()) continue;
+    const auto index = static_cast<std::int32_t>(b.size());
+    body_of_rank.push_back(index);
+    b.resize(b.size() + 1);
+    const grammar::RigidBulk& bulk = *body.rigid_bulk;
+    const auto& x = body.nodes.front().coordinates;
+    const auto coordinate = [&](std::size_t i) { return i < x.size() ? x[i].value : 0.0; };
+    const Vector3d node(coordinate(0), coordinate(1), coordinate(2));
+
+    std::vector<Rigid3DContactorShape> shapes;
+    std::vector<Contactor3D> contactors;
+    std::int32_t rank = 0;
+    for (const grammar::Contactor& t : body.contactors) {
+      const auto value = [&](std::size_t i) { return i < t.values.size() ? t.values[i].value : 0.0; };
+      Contactor3D c;
+      c.body = index;
+      c.rank = ++rank;
+      c.type = t.type.value;
+      c.color = t.color.value;
+      Rigid3DContactorShape shape;
+      shape.type = c.type;
+      if (c.type == "SPHER" || c.type == "SPHEb") {
+        c.shape = ContactorShape3D::sphere;
+        c.radius = value(0);
+        if (c.type == "SPHEb") c.shift = Vector3d(value(1), value(2), value(3));
+        c.bounding_radius = c.radius;
+        shape.radius = c.radius;
+        shape.shift = c.shift;
+      } else if (c.type == "PLANx") {
+        c.shape = ContactorShape3D::plane;
+        c.half_axes = Vector3d(value(0), value(1), value(2));
+        if (!t.frame.empty()) {
+          const grammar::LocalFrame& f = t.frame.front();
+          for (int k = 0; k < 3; ++k) {
+            c.local_frame(k, 0) = f.alpha[static_cast<std::size_t>(k)].value;
+            c.local_frame(k, 1) = f.beta[static_cast<std::size_t>(k)].value;
+            c.local_frame(k, 2) = f.gamma[static_cast<std::size_t>(k)].value;
+            c.shift(k) = f.shift[static_cast<std::size_t>(k)].value;
+          }
+        }
+        c.bounding_radius = c.half_axes.norm();
+        shape.half_axes = c.half_axes;
+        shape.shift = c.shift;
+        shape.frame = c.local_frame;
+      } else {
+        sink.report("L4001", grammar::Location{in.bodies_path, t.type.span},
+                    "contactor '" + c.type + "' is not handled by the rigid 3D solver yet");
+        ok = false;
+        continue;
+      }
+      shapes.push_back(shape);
+      contactors.push_back(c);
+    }
+
+    const auto density = in.densities.find(bulk.behav.value);
+    if (density == in.densities.end()) {
+      sink.report("L2001", grammar::Location{in.bodies_path, bulk.behav.span},
+                  "bulk behaviour '" + bulk.behav.value + "' is not defined in BULK_BEHAV.DAT");
+      ok = false;
+    }
+    const Vector3d given_inertia(bulk.principal_inertia[0].value, bulk.principal_inertia[1].value,
+                                 bulk.principal_inertia[2].value);
+    RigidBody3DProperties p;
+    try {
+      p = rigid_3d_properties(density == in.densities.end() ? 0.0 : density->second, bulk.avrd.value,
+                              given_inertia, shapes);
+    } catch (const std::invalid_argument& error) {
+      sink.report("L4001", grammar::Location{in.bodies_path, body.number.span},
+                  std::string("RBDY3 body without mass: ") + error.what());
+      ok = false;
+      continue;
+    }
+    const auto i = static_cast<std::size_t>(index);
+    b.reference[i] = node + p.centre_shift;
+    b.mass[i] = p.mass;
+    b.inertia[i] = p.inertia;
+    b.frame_initial[i] = b.frame_detection[i] = b.frame[i] = p.frame;
+    // Offsets from the centre of inertia and embedded frames, in the principal axes (mod_RBDY3).
+    for (std::size_t k = 0; k < contactors.size(); ++k) {
+      Contactor3D& c = contactors[k];
+      c.shift = p.contactor_shifts[k];
+      if (c.shape == ContactorShape3D::plane) c.local_frame = p.contactor_frames[k];
+      scene.contactors.push_back(c);
+    }
+  }
+
+  // Contact laws and visibility rows (RBDY3 against RBDY3).
+  for (const grammar::TactLaw& card : in.tact_behav->laws) {
+    ContactLaw law;
+    if (!contact_law_of(card, law)) law = IqsClb{0.0};
+    scene.laws.push_back({card.nickname.value, law});
+  }
+  for (const grammar::SeeEntry& see : grammar::lmgc90_see_order(in.tact_behav->sees)) {
+    if (see.candidate_body.value != "RBDY3" || see.antagonist_body.value != "RBDY3") continue;
+    Visibility3D v;
+    v.candidate_type = see.candidate_contactor.value == "SPHEb" ? "SPHER" : see.candidate_contactor.value;
+    v.candidate_color = see.candidate_colour.value;
+    v.antagonist_type = see.antagonist_contactor.value == "SPHEb" ? "SPHER" : see.antagonist_contactor.value;
+    v.antagonist_color = see.antagonist_colour.value;
+    v.alert = see.alert.value;
+    if (v.candidate_type != "SPHER" || (v.antagonist_type != "SPHER" && v.antagonist_type != "PLANx")) {
+      sink.report("L4001", grammar::Location{in.tact_behav_path, see.candidate_contactor.span},
+                  "pair " + v.candidate_type + "/" + v.antagonist_type +
+                      " is not detected by the rigid 3D solver yet");
+      ok = false;
+      continue;
+    }
+    v.family = v.antagonist_type == "PLANx" ? PairFamily3D::SPPLx : PairFamily3D::SPSPx;
+    bool found = false;
+    for (std::size_t k = 0; k < in.tact_behav->laws.size(); ++k) {
+      const grammar::TactLaw& card = in.tact_behav->laws[k];
+      if (card.nickname.value != see.law_nickname.value) continue;
+      found = true;
+      v.law = static_cast<std::int32_t>(k);
+      ContactLaw law;
+      if (!contact_law_of(card, law) || !provided_in_3d(law)) {
+        sink.report("L4002", grammar::Location{in.tact_behav_path, card.keyword.span},
+                    "contact law '" + card.keyword.value + "' is not solved by the rigid 3D solver yet");
+        ok = false;
+      }
+      break;
+    }
+    if (!found) {
+      sink.report("L2002", grammar::Location{in.tact_behav_path, see.law_nickname.span},
+                  "law '" + see.law_nickname.value + "' used by this visibility row is not defined");
+      ok = false;
+    }
+    scene.visibility.push_back(v);
+  }
+
+  // Driven dofs (datbox-inputs.md §5): 6 dofs, rotations in body axes.
+  if (in.drv_dof) {
+    for (const grammar::DrvDofBody& body : in.drv_dof->bodies) {
+      if (body.body_type.value != "RBDY3") continue;
+      const std::int64_t rank = body.rank.value;
+      if (rank < 1 || rank > static_cast<std::int64_t>(body_of_rank.size())) {
+        sink.report("L2003", grammar::Location{in.drv_dof_path, body.rank.span},
+                    "RBDY3 body " + std::to_string(rank) + " does not exist");
+        ok = false;
+        continue;
+      }
+      for (const grammar::DrvDofNode& node : body.nodes)
+        for (const grammar::DrivenDof& dof : node.dofs) {
+          DrivenDof2D d;
+          d.body = body_of_rank[static_cast<std::size_t>(rank - 1)];
+          d.dof = static_cast<std::int32_t>(dof.dof.value) - 1;
+          d.is_force = dof.kind.value == "force";
+          if (d.dof < 0 || d.dof > 5) continue;
+          if (dof.uses_evolution) {
+            if (in.evolutions) {
+              auto it = in.evolutions->find(dof.evolution_file.value);
+              if (it != in.evolutions->end())
+                for (const auto& point : it->second.points)
+                  d.evolution.push_back({point.time.value, point.value.value});
+            }
+          } else {
+            for (std::size_t k = 0; k < 6; ++k) d.coefficients[k] = dof.parameters[k].value;
+          }
+          if (!d.is_force)
+            b.driven_mask[static_cast<std::size_t>(d.body)] |= static_cast<std::uint8_t>(1u << d.dof);
+          scene.driven.push_back(d);
+        }
+    }
+  }
+
+  // Initial state (DOF.INI): X, V and the principal frame by body rank.
+  if (in.dof_ini) {
+    for (const auto& section : in.dof_ini->sections)
+      for (const grammar::DofBody& body : section.bodies) {
+        if (body.body_type.value != "RBDY3" || body.nodes.empty()) continue;
+        const std::int64_t rank = body.number.value;
+        if (rank < 1 || rank > static_cast<std::int64_t>(body_of_rank.size())) continue;
+        const auto i = static_cast<std::size_t>(body_of_rank[static_cast<std::size_t>(rank - 1)]);
+        const grammar::DofNode& node = body.nodes.front();
+        for (std::size_t d = 0; d < 6; ++d) {
+          if (d < 3 && d < node.x.size())
+            b.displacement_begin[i](static_cast<Eigen::Index>(d)) = node.x[d].value;
+          if (d < node.v.size()) b.velocity_begin[i](static_cast<Eigen::Index>(d)) = node.v[d].value;
+        }
+        if (node.frame.size() >= 9) {
+          Matrix3d frame;
+          for (int column = 0; column < 3; ++column)
+            for (int k = 0; k < 3; ++k)
+              frame(k, column) = node.frame[static_cast<std::size_t>(3 * column + k)].value;
+          b.frame_initial[i] = b.frame_detection[i] = b.frame[i] = frame;
+        }
+        b.displacement[i] = b.displacement_begin[i];
+        b.velocity[i] = b.velocity_begin[i];
+      }
+  }
+
+  // Inverse masses (0 on driven dofs) and the plan.
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    Vector6d inverse;
+    inverse << Vector3d::Constant(b.mass[i] > 0.0 ? 1.0 / b.mass[i] : 0.0),
+        Vector3d(b.inertia[i](0) > 0.0 ? 1.0 / b.inertia[i](0) : 0.0,
+                 b.inertia[i](1) > 0.0 ? 1.0 / b.inertia[i](1) : 0.0,
+                 b.inertia[i](2) > 0.0 ? 1.0 / b.inertia[i](2) : 0.0);
+    for (int d = 0; d < 6; ++d)
+      if (b.driven_mask[i] & (1u << d)) inverse(d) = 0.0;
+    b.inverse_mass[i] = inverse;
+  }
+  scene.plan = {};
+  for (const Visibility3D& v : scene.visibility) scene.plan.families[static_cast<int>(v.family)] = true;
+  return ok;
+}
+
+}  // namespace lmgc::solver

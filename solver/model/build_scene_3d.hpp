@@ -1,0 +1,31 @@
+#pragma once
+// Builds a rigid 3D Scene from the checked ASTs of a case (BODIES, TACT_BEHAV, DRV_DOF, DOF.INI,
+// evolution files) and the bulk data it needs (densities, gravity). spec: numerics.md §1.2.
+#include <map>
+#include <string>
+
+#include "grammar/bodies/ast.hpp"
+#include "grammar/common/diagnostic.hpp"
+#include "grammar/dof/ast.hpp"
+#include "grammar/drv_dof/ast.hpp"
+#include "grammar/tact_behav/ast.hpp"
+#include "solver/model/scene_3d.hpp"
+
+namespace lmgc::solver {
+
+struct SceneInput3D {
+  const grammar::BodiesFile* bodies = nullptr;
+  const grammar::TactBehavFile* tact_behav = nullptr;
+  const grammar::DrvDofFile* drv_dof = nullptr;  // may be null
+  const grammar::DofFile* dof_ini = nullptr;     // may be null
+  const std::map<std::string, grammar::EvolutionFile>* evolutions = nullptr;
+  std::map<std::string, double> densities;  // bulk behaviour nickname -> Umas [kg/m³]
+  Eigen::Vector3d gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
+  std::string bodies_path, tact_behav_path, drv_dof_path;
+};
+
+// Returns false (with diagnostics) when the case uses something the rigid 3D solver does not
+// provide yet (a contactor other than SPHER/SPHEb/PLANx, a law it does not solve).
+bool build_scene_3d(const SceneInput3D& input, Scene3D& scene, grammar::DiagnosticSink& sink);
+
+}  // namespace lmgc::solver
