@@ -5,6 +5,8 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 
 #include "grammar/common/output_file.hpp"
@@ -16,6 +18,22 @@
 
 namespace {
 constexpr int kExitOk = 0;
+
+// Whether BODIES.DAT holds RBDY3 bodies only (a cheap look before the case is loaded).
+bool rigid_3d_folder(const std::string& case_dir) {
+  std::ifstream in(std::filesystem::path(case_dir) / "DATBOX" / "BODIES.DAT");
+  std::string line;
+  bool any = false;
+  while (std::getline(in, line)) {
+    const auto first = line.find_first_not_of(' ');
+    if (first == std::string::npos) continue;
+    const bool body_line = line.compare(first, 4, "RBDY") == 0 || line.compare(first, 5, "MAILx") == 0;
+    if (!body_line) continue;
+    if (line.compare(first, 5, "RBDY3") != 0) return false;
+    any = true;
+  }
+  return any;
+}
 constexpr int kExitData = 1;
 constexpr int kExitUsage = 2;
 constexpr int kExitNotConverged = 3;
@@ -78,9 +96,20 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitUsage;
   }
-  if (!solver::parse_storage(storage, options.nlgs.storage) || !solver::parse_norm(norm, options.nlgs.norm)) {
+  // An unknown norm is a usage error, except for rigid 3D cases: LMGC90's 3D NLGS ignores a norm it
+  // does not know and keeps Quad (mod_nlgs_3D set_nlgs_parameter has no default branch); the
+  // RIGID_3D example 1_ClusterSP_2_PL relies on it with 'MaxM '.
+  const bool norm_known = solver::parse_norm(norm, options.nlgs.norm);
+  if (!solver::parse_storage(storage, options.nlgs.storage) ||
+      (!norm_known && !(app.count("CASE_DIR") && rigid_3d_folder(case_dir)))) {
     std::cerr << "lmgc-solve: unknown --solver or --norm value\n";
     return kExitUsage;
+  }
+  if (!norm_known) {
+    options.nlgs.norm = solver::NlgsNorm::quad;
+    if (!options.quiet)
+      std::cerr << "lmgc-solve: warning: unknown norm '" << norm
+                << "': the 3D NLGS keeps 'Quad ' as LMGC90 does\n";
   }
 
   grammar::DiagnosticSink sink(5000);
@@ -113,6 +142,7 @@ int main(int argc, char** argv) {
     if (!given("--display-every")) options.display_every = from_file.display_every;
     if (!given("--ymin-boundary")) options.y_min = from_file.y_min;
     if (!given("--xperiod")) options.x_period = from_file.x_period;
+    if (!given("--new-rotation-scheme")) options.new_rotation_scheme = from_file.new_rotation_scheme;
   }
   // Diagnostics: errors always, warnings and notes unless --quiet (the run goes on with them).
   const bool color = std::getenv("NO_COLOR") == nullptr && isatty(STDERR_FILENO);

@@ -112,11 +112,6 @@ bool prepare_run_3d(const validate::CaseFiles& files, Scene3D& scene, RunOutputs
   input.tact_behav_path = datbox_path(files, "TACT_BEHAV.DAT");
   input.drv_dof_path = datbox_path(files, "DRV_DOF.DAT");
   if (!build_scene_3d(input, scene, sink)) return false;
-  if (files.command) {
-    grammar::DiagnosticSink ignored(100);  // apply_command_parameters reports them
-    if (grammar::command_run_parameters(*files.command, ignored).new_rotation_scheme)
-      scene.rotation = FrameUpdate::cayley;
-  }
   outputs.case_dir = files.case_dir;
   if (files.vloc_rloc_ini) outputs.warm_start = &*files.vloc_rloc_ini;
   return true;
@@ -140,6 +135,7 @@ void apply_command_parameters(const validate::CaseFiles& files, RunOptions& opti
   options.nlgs.quick_scramble = p.quick_scramble;
   if (p.has_y_min) options.y_min = p.y_min;
   if (p.x_period > 0.0) options.x_period = p.x_period;
+  options.new_rotation_scheme = p.new_rotation_scheme;
 }
 
 std::vector<validate::OutputFile> echo_files_2d(const validate::CaseFiles& files) {

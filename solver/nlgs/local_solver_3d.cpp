@@ -180,9 +180,14 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
   if (q(0) >= 0.0) return s;
 
   // Sticking: u = 0, r = -W⁻¹ q, valid when it lies inside the cone.
-  Eigen::FullPivLU<Eigen::Matrix3d> lu(W);
-  if (lu.isInvertible()) {
-    const Eigen::Vector3d r_stick = -lu.solve(q);
+  // Fixed-size 3×3 inverse by cofactors: this runs once per contact and sweep.
+  Eigen::Matrix3d W_inverse;
+  bool invertible = false;
+  W.computeInverseWithCheck(
+      W_inverse, invertible,
+      1e-14 * W.cwiseAbs().maxCoeff() * W.cwiseAbs().maxCoeff() * W.cwiseAbs().maxCoeff());
+  if (invertible) {
+    const Eigen::Vector3d r_stick = -W_inverse * q;
     if (r_stick(0) > 0.0 && r_stick.tail<2>().norm() <= mu * r_stick(0)) {
       s.r = r_stick;
       s.state = LocalCase3D::stick;
@@ -204,8 +209,10 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
   double merit = phi.squaredNorm();
   int iteration = 0;
   for (; iteration < kMaxNewtonIterations && best_residual > tolerance; ++iteration) {
-    Eigen::PartialPivLU<Eigen::Matrix3d> step_lu(J);
-    Eigen::Vector3d step = -step_lu.solve(phi);
+    Eigen::Matrix3d J_inverse;
+    bool J_invertible = false;
+    J.computeInverseWithCheck(J_inverse, J_invertible, 1e-300);
+    Eigen::Vector3d step = J_invertible ? Eigen::Vector3d(-J_inverse * phi) : Eigen::Vector3d(-phi);
     if (!step.allFinite()) step = -phi;
     double t = 1.0;
     Eigen::Vector3d trial;

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <regex>
+#include <sstream>
 #include <string>
 
 #include "tests/support/run_tool.hpp"
@@ -67,6 +68,13 @@ inline ExampleRun run_example(const std::filesystem::path& example, long steps) 
     if (p.count(name)) args += std::string(" ") + flag + " " + p.at(name);
   if (p.count("norm")) args += " --norm '" + p.at("norm") + "'";
   if (p.count("solver_type")) args += " --solver " + p.at("solver_type");
+  // RBDY3 scripts may switch to the Cayley frame update.
+  {
+    std::istringstream script(read_file(example / "command.py"));
+    std::string line;
+    while (std::getline(script, line))
+      if (line.rfind("chipy.RBDY3_NewRotationScheme()", 0) == 0) args += " --new-rotation-scheme";
+  }
   // BouncingBallsDK's script calls RBDY2_SetYminBoundary(-0.).
   if (example.filename() == "BouncingBallsDK") args += " --ymin-boundary 0";
   result.run = run_tool("lmgc-solve", args);
@@ -74,13 +82,16 @@ inline ExampleRun run_example(const std::filesystem::path& example, long steps) 
 }
 
 // LMGC90's RIGID_2D examples that have a reference run.
-inline std::vector<std::filesystem::path> rigid_2d_examples() {
+inline std::vector<std::filesystem::path> rigid_examples(const std::string& family) {
   std::vector<std::filesystem::path> cases;
   for (const auto& c : example_cases())
-    if (c.parent_path().filename() == "RIGID_2D" &&
-        std::filesystem::exists(c / "reference_lmgc90" / "RUN.md"))
+    if (c.parent_path().filename() == family && std::filesystem::exists(c / "reference_lmgc90" / "RUN.md"))
       cases.push_back(c);
   return cases;
+}
+
+inline std::vector<std::filesystem::path> rigid_2d_examples() {
+  return rigid_examples("RIGID_2D");
 }
 
 }  // namespace lmgc::test
