@@ -315,21 +315,33 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   result.free_velocity_norm = std::sqrt(q_squared);
 
   const double local_tolerance = 1e-12 * std::max(result.free_velocity_norm, 1e-300);
-  // One local solve of contact c with the others frozen; returns the new auxiliary reaction.
-  const auto local_solve = [&](const Interaction3D& c, Vector3d& q_local) {
+  // Each block in the local solver's order and its inverse, once per step.
+  std::vector<Matrix3d> W_normal_first(contacts.size()), W_inverse(contacts.size());
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    W_normal_first[k] = to_normal_first(contacts[k].W);
+    bool invertible = false;
+    const double scale = W_normal_first[k].cwiseAbs().maxCoeff();
+    W_normal_first[k].computeInverseWithCheck(W_inverse[k], invertible, 1e-14 * scale * scale * scale);
+    if (!invertible) W_inverse[k].setConstant(std::nan(""));
+  }
+  // One local solve of contact k with the others frozen; returns the new auxiliary reaction.
+  const auto local_solve = [&](std::size_t k, Vector3d& q_local) {
+    const Interaction3D& c = contacts[k];
     q_local = local_velocity(c, V) - c.W * c.r + c.covfree;
-    const LocalSolution3D s = solve_signorini_coulomb_3d(to_normal_first(c.W), to_normal_first(q_local), c.mu,
-                                                         to_normal_first(c.r), local_tolerance);
+    const LocalSolution3D s =
+        solve_signorini_coulomb_3d(W_normal_first[k], &W_inverse[k], to_normal_first(q_local), c.mu,
+                                   to_normal_first(c.r), local_tolerance);
     return from_normal_first(s.r);
   };
   const double tol = options.tolerance;
   const int max_checks = options.gs_it2;
   for (int check = 0; check < max_checks; ++check) {
     for (int sweep = 0; sweep < options.gs_it1; ++sweep) {
-      for (Interaction3D& c : contacts) {
+      for (std::size_t k = 0; k < contacts.size(); ++k) {
+        Interaction3D& c = contacts[k];
         if (c.inactive) continue;
         Vector3d q_local;
-        Vector3d r_new = local_solve(c, q_local);
+        Vector3d r_new = local_solve(k, q_local);
         if (options.relax != 1.0) r_new = options.relax * r_new + (1.0 - options.relax) * c.r;
         inject(c, r_new - c.r, b, V);
         c.r = r_new;
@@ -340,10 +352,11 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
     double sum_dvdv = 0, max_dvdv = 0, sum_dvdvrr = 0, max_dvdvrr = 0, sum_dvor = 0, sum_wrr = 0,
            sum_wrwr = 0;
     double active = 0.0;
-    for (const Interaction3D& c : contacts) {
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+      const Interaction3D& c = contacts[k];
       if (c.inactive) continue;
       Vector3d q_local;
-      const Vector3d r_check = local_solve(c, q_local);
+      const Vector3d r_check = local_solve(k, q_local);
       const Vector3d mean_r = 0.5 * (c.r + r_check);
       const Vector3d dv = c.W * (c.r - r_check);
       const double dvdv = dv.squaredNorm();

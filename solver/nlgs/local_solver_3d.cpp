@@ -171,6 +171,12 @@ Eigen::Vector3d natural_map_3d(const Eigen::Vector3d& r, const Eigen::Vector3d& 
 
 LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen::Vector3d& q, double mu,
                                            const Eigen::Vector3d& r_start, double tolerance) {
+  return solve_signorini_coulomb_3d(W, nullptr, q, mu, r_start, tolerance);
+}
+
+LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen::Matrix3d* W_inverse_given,
+                                           const Eigen::Vector3d& q, double mu,
+                                           const Eigen::Vector3d& r_start, double tolerance) {
   LocalSolution3D s;
   if (!q.allFinite() || !W.allFinite()) {
     s.failed = true;
@@ -179,13 +185,17 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
   // Take-off: r = 0 solves the problem whenever the free velocity separates.
   if (q(0) >= 0.0) return s;
 
-  // Sticking: u = 0, r = -W⁻¹ q, valid when it lies inside the cone.
-  // Fixed-size 3×3 inverse by cofactors: this runs once per contact and sweep.
+  // Sticking: u = 0, r = -W⁻¹ q, valid when it lies inside the cone. The inverse is the caller's
+  // when given (once per contact and step), else by cofactors here.
   Eigen::Matrix3d W_inverse;
   bool invertible = false;
-  W.computeInverseWithCheck(
-      W_inverse, invertible,
-      1e-14 * W.cwiseAbs().maxCoeff() * W.cwiseAbs().maxCoeff() * W.cwiseAbs().maxCoeff());
+  if (W_inverse_given) {
+    W_inverse = *W_inverse_given;
+    invertible = W_inverse.allFinite();
+  } else {
+    const double scale = W.cwiseAbs().maxCoeff();
+    W.computeInverseWithCheck(W_inverse, invertible, 1e-14 * scale * scale * scale);
+  }
   if (invertible) {
     const Eigen::Vector3d r_stick = -W_inverse * q;
     if (r_stick(0) > 0.0 && r_stick.tail<2>().norm() <= mu * r_stick(0)) {

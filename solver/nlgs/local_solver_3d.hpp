@@ -29,6 +29,12 @@ struct LocalSolution3D {
 LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen::Vector3d& q, double mu,
                                            const Eigen::Vector3d& r_start, double tolerance);
 
+// The same, with W⁻¹ computed by the caller (NaN entries when W is singular): the scene NLGS
+// inverts each block once per step instead of once per sweep.
+LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen::Matrix3d* W_inverse,
+                                           const Eigen::Vector3d& q, double mu,
+                                           const Eigen::Vector3d& r_start, double tolerance);
+
 // Projection onto the Coulomb cone K_mu = { |x_T| <= mu x_n } (fc3d/FORMAT.md §3).
 Eigen::Vector3d project_on_coulomb_cone(const Eigen::Vector3d& x, double mu);
 

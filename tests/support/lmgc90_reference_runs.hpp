@@ -47,11 +47,13 @@ struct ExampleRun {
 
 // Copies the example's DATBOX to a scratch folder and runs lmgc-solve for `steps` steps with its
 // script's parameters (COMMAND.DAT is removed: LMGC90's reference run used command.py).
-inline ExampleRun run_example(const std::filesystem::path& example, long steps) {
+// `tag` keeps the scratch folders of tests that run the same example apart (ctest runs tests in
+// parallel).
+inline ExampleRun run_example(const std::filesystem::path& example, long steps, const std::string& tag = "") {
   namespace fs = std::filesystem;
   ExampleRun result;
   const auto p = script_parameters(example);
-  result.case_dir = scratch_dir("solve_" + example.filename().string());
+  result.case_dir = scratch_dir("solve_" + tag + example.filename().string());
   fs::copy(example / "DATBOX", result.case_dir / "DATBOX", fs::copy_options::recursive);
   fs::remove(result.case_dir / "DATBOX" / "COMMAND.DAT");
   result.steps = p.count("nb_steps") ? std::min(steps, std::stol(p.at("nb_steps"))) : steps;

@@ -76,7 +76,7 @@ TEST(LmgcSolveExamples, BouncingBallsAndClusterFollowLmgc90To1e8OverTheFirst200S
   for (const char* name : {"BouncingBallsDK", "clusterDKPL_GroundJC"}) {
     SCOPED_TRACE(name);
     const fs::path example = examples_dir() / "RIGID_2D" / name;
-    const ExampleRun r = run_example(example, 200);
+    const ExampleRun r = run_example(example, 200, "compare_");
     ASSERT_EQ(r.run.exit_code, 0);
     int compared = 0;
     for (int n = 1;; ++n) {

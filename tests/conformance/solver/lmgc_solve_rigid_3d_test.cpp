@@ -83,7 +83,7 @@ TEST(LmgcSolveRigid3D, ClusterOnTwoPlanesFollowsLmgc90) {
   LMGC_REQUIRE_SHARED();
   const fs::path example = examples_dir() / "RIGID_3D" / "1_ClusterSP_2_PL";
   const fs::path reference = example / "reference_lmgc90" / "OUTBOX";
-  const ExampleRun r = run_example(example, 300);
+  const ExampleRun r = run_example(example, 300, "compare_");
   ASSERT_EQ(r.run.exit_code, 0);
   const fs::path outbox = r.case_dir / "OUTBOX";
   EXPECT_EQ(read_file(outbox / "BODIES.OUT"), read_file(reference / "BODIES.OUT"));

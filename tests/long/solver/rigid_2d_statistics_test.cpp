@@ -63,7 +63,7 @@ TEST(Rigid2DStatistics, GranularExamplesAgreeWithLmgc90Within5PercentAtTheirLast
        {"1024DK_BoxJC", "200DK_BoxJC_MD", "500PL_PerioBoxJC", "siloDK_hoperJC", "BridgePL_GroundJC"}) {
     SCOPED_TRACE(name);
     const fs::path example = examples_dir() / "RIGID_2D" / name;
-    const ExampleRun r = run_example(example, reference_steps_run(example));
+    const ExampleRun r = run_example(example, reference_steps_run(example), "long_");
     ASSERT_EQ(r.run.exit_code, 0);
     grammar::DiagnosticSink sink;
     const auto files = validate::load_case(r.case_dir, sink);
