@@ -5,6 +5,7 @@
 #include "grammar/vloc_rloc/writer.hpp"
 #include "solver/bodies/rigid_2d_properties.hpp"
 #include "solver/bodies/rigid_3d_properties.hpp"
+#include "solver/io/postpro_3d.hpp"
 #include "solver/io/state_files_2d.hpp"
 #include "solver/model/build_scene_2d.hpp"
 #include "solver/model/build_scene_3d.hpp"
@@ -17,14 +18,15 @@ std::string datbox_path(const validate::CaseFiles& files, const char* name) {
   return (files.case_dir / "DATBOX" / name).string();
 }
 
-// The POSTPRO.DAT commands the 2D post-processor provides; the others are noted and skipped.
+// The POSTPRO.DAT commands the 2D post-processor provides (with three_d: those the 3D one provides);
+// the others are noted and skipped.
 std::vector<PostproCommand2D> postpro_commands_2d(const validate::CaseFiles& files,
-                                                  grammar::DiagnosticSink& sink) {
+                                                  grammar::DiagnosticSink& sink, bool three_d = false) {
   std::vector<PostproCommand2D> commands;
   if (!files.postpro) return commands;
   for (const grammar::PostproCommand& card : files.postpro->commands) {
     PostproCommand2D command;
-    if (!postpro_kind_of(card.name.value, command.kind)) {
+    if (!postpro_kind_of(card.name.value, command.kind) || (three_d && !Postpro3D::provides(command.kind))) {
       sink.report(
           "L4004", grammar::Location{datbox_path(files, "POSTPRO.DAT"), card.name.span},
           "POSTPRO command '" + card.name.value + "' is not computed by lmgc-solve yet; it is skipped");
@@ -113,6 +115,7 @@ bool prepare_run_3d(const validate::CaseFiles& files, Scene3D& scene, RunOutputs
   input.drv_dof_path = datbox_path(files, "DRV_DOF.DAT");
   if (!build_scene_3d(input, scene, sink)) return false;
   outputs.case_dir = files.case_dir;
+  outputs.postpro = postpro_commands_2d(files, sink, /*three_d=*/true);
   if (files.vloc_rloc_ini) outputs.warm_start = &*files.vloc_rloc_ini;
   return true;
 }

@@ -26,6 +26,10 @@ RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D&
   state.theta = options.theta;
   if (outputs.warm_start) state.previous = warm_start_3d(*outputs.warm_start, scene, options.dt);
 
+  Postpro3D postpro;
+  if (!outputs.postpro.empty() && !postpro.open(outputs.case_dir / "POSTPRO", outputs.postpro, summary.error))
+    return summary;
+
   std::ofstream report(outbox / "run_report.csv", std::ios::trunc);
   report << "step,time,contacts,active,iterations,converged,mean_dvor,quad_dv,quad_dvr,"
             "residual_natural_map_over_q,kinetic_energy,step_seconds,nlgs_seconds\n";
@@ -53,6 +57,7 @@ RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D&
                           result.norms.quad_dvr, result.residual_relative, kinetic_energy(scene.bodies),
                           step_seconds, result.seconds);
     report.flush();
+    if (!outputs.postpro.empty()) postpro.write(scene, state, result);
     if (options.write_every > 0 && state.step % options.write_every == 0)
       if (!write_state("OUT." + std::to_string(++written))) break;
     if (progress) {
@@ -70,6 +75,7 @@ RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D&
   if (progress) std::fprintf(stderr, "\n");
   summary.final_time = state.time;
   if (summary.error.empty()) write_state("LAST");
+  postpro.close();
   return summary;
 }
 

@@ -2,16 +2,19 @@
 // The run loop of a rigid 3D case: steps, OUTBOX state files (DOF, Vloc_Rloc .OUT.n and .LAST), the
 // run report, progress on a terminal, clean stop on Ctrl-C. spec: state-and-outputs.md §1, §2.2.
 #include <filesystem>
+#include <vector>
 
 #include "grammar/vloc_rloc/ast.hpp"
 #include "solver/driver/run_2d.hpp"  // RunSummary, g_stop_requested
 #include "solver/driver/run_options.hpp"
 #include "solver/integrator/step_3d.hpp"
+#include "solver/io/postpro_3d.hpp"
 
 namespace lmgc::solver {
 
 struct RunOutputs3D {
-  std::filesystem::path case_dir;
+  std::filesystem::path case_dir;                     // OUTBOX/ and POSTPRO/ are created here
+  std::vector<PostproCommand2D> postpro;              // from POSTPRO.DAT (those Postpro3D provides)
   const grammar::VlocRlocFile* warm_start = nullptr;  // Vloc_Rloc.INI
 };
 

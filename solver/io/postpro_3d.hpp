@@ -1,0 +1,40 @@
+#pragma once
+// POSTPRO time series of a rigid 3D run, in LMGC90's file names and line formats: BODY TRACKING and
+// SOLVER INFORMATIONS; the other commands of POSTPRO.DAT are skipped (no file is written for them).
+// spec: state-and-outputs.md §4 (mod_postpro_3D.f90).
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "solver/integrator/step_3d.hpp"
+#include "solver/io/postpro_2d.hpp"  // PostproCommand2D, PostproKind2D: the same commands in 3D
+
+namespace lmgc::solver {
+
+class Postpro3D {
+ public:
+  // Creates POSTPRO/ and truncates every file the provided commands write (and POSTPRO.OUT).
+  bool open(const std::filesystem::path& postpro_dir, std::vector<PostproCommand2D> commands,
+            std::string& error);
+  // One line per active command, after the step (end-of-step state and the step's solver result).
+  void write(const Scene3D& scene, const RunState3D& state, const NlgsResult& solver);
+  void close();
+
+  // True when the 3D post-processor writes this command (the others are skipped).
+  static bool provides(PostproKind2D kind);
+
+ private:
+  struct Stream {
+    std::size_t command;
+    std::int64_t body = 0;
+    std::unique_ptr<std::ofstream> file;
+  };
+  std::vector<PostproCommand2D> commands_;
+  std::vector<Stream> streams_;
+  NlgsNorms last_norms_;  // kept when a step has no contact (as LMGC90 does)
+};
+
+}  // namespace lmgc::solver
