@@ -51,8 +51,10 @@ Vector3d local_velocity(const Interaction3D& c, const std::vector<Vector6d>& V) 
          c.lever_antagonist * va.tail<3>();
 }
 
-// V += M⁻¹ H r for an impulse r (t, n, s) of one contact.
-void inject(const Interaction3D& c, const Vector3d& r, RigidBodies3D& b, std::vector<Vector6d>& V) {
+// V += M⁻¹ H r for an impulse r (t, n, s) of one contact; also adds H r to `impulse` when given
+// (the sweeps leave it out: Ireac is summed once from the final reactions).
+void inject(const Interaction3D& c, const Vector3d& r, RigidBodies3D& b, std::vector<Vector6d>& V,
+            std::vector<Vector6d>* impulse = nullptr) {
   const Vector3d force = c.frame.transpose() * r;
   const auto cd = static_cast<std::size_t>(c.candidate_body),
              an = static_cast<std::size_t>(c.antagonist_body);
@@ -61,8 +63,10 @@ void inject(const Interaction3D& c, const Vector3d& r, RigidBodies3D& b, std::ve
   impulse_an << -force, -(c.lever_antagonist.transpose() * r);
   V[cd] += b.inverse_mass[cd].cwiseProduct(impulse_cd);
   V[an] += b.inverse_mass[an].cwiseProduct(impulse_an);
-  b.impulse[cd] += impulse_cd;
-  b.impulse[an] += impulse_an;
+  if (impulse) {
+    (*impulse)[cd] += impulse_cd;
+    (*impulse)[an] += impulse_an;
+  }
 }
 
 // Delassus block Hᵀ M⁻¹ H of one contact (rigid bodies: exact, numerics.md §3).
@@ -403,6 +407,11 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
     if (result.converged) break;
   }
   if (contacts.empty()) result.converged = true;
+
+  // Ireac of every body from the final reactions.
+  std::vector<Vector6d> unused(V.size(), Vector6d::Zero());
+  for (const Interaction3D& c : contacts)
+    if (!c.inactive) inject(c, c.r, b, unused, &b.impulse);
 
   // End of the solve: relative velocities, statuses, and the natural-map residual of the local
   // problems (fc3d/FORMAT.md §3) in the auxiliary variables u + covfree.

@@ -199,8 +199,11 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
   if (invertible) {
     const Eigen::Vector3d r_stick = -W_inverse * q;
     if (r_stick(0) > 0.0 && r_stick.tail<2>().norm() <= mu * r_stick(0)) {
+      // Inside the cone with u = W r + q = 0: exact up to the round-off of the inverse, checked
+      // only when this function inverted W itself (a caller's inverse is trusted).
       s.r = r_stick;
       s.state = LocalCase3D::stick;
+      if (W_inverse_given) return s;
       s.residual = natural_map_3d(s.r, W * s.r + q, mu).norm();
       if (s.residual <= tolerance) return s;
     }
