@@ -23,7 +23,8 @@ LocalSolution2D solve_signorini_coulomb_2d(const Eigen::Matrix2d& W, const Eigen
   const double cb = dft - mu * dfn;
   if (cf < 0.0) {
     if (forward <= 1e-18) {
-      s.failed = true;
+      s.failed = !solve_signorini_coulomb_2d_any_case(wtt, 0.5 * (wtn + wnt), wnn, qt, qn, mu, s.r(0), s.r(1),
+                                                      s.status);
       return s;
     }
     s.r(1) = -qn / forward;
@@ -31,7 +32,8 @@ LocalSolution2D solve_signorini_coulomb_2d(const Eigen::Matrix2d& W, const Eigen
     s.status = ContactStatus::slifw;
   } else if (cb > 0.0) {
     if (backward <= 1e-18) {
-      s.failed = true;
+      s.failed = !solve_signorini_coulomb_2d_any_case(wtt, 0.5 * (wtn + wnt), wnn, qt, qn, mu, s.r(0), s.r(1),
+                                                      s.status);
       return s;
     }
     s.r(1) = -qn / backward;
@@ -45,6 +47,40 @@ LocalSolution2D solve_signorini_coulomb_2d(const Eigen::Matrix2d& W, const Eigen
     s.failed = true;  // NaN in the data, or a singular block
   }
   return s;
+}
+
+bool solve_signorini_coulomb_2d_any_case(double wtt, double wtn, double wnn, double qt, double qn, double mu,
+                                         double& rt, double& rn, ContactStatus& status) {
+  rt = rn = 0.0;
+  if (qn >= 0.0) {
+    status = ContactStatus::noctc;
+    return true;
+  }
+  const double slack = 1e-12 * (std::fabs(qt) + std::fabs(qn));
+  // Forward slide (u_t >= 0, r_t = -μ r_n), then backward (u_t <= 0, r_t = +μ r_n).
+  for (const double sign : {-1.0, 1.0}) {
+    const double denominator = wnn + sign * mu * wtn;
+    if (!(denominator > 1e-18)) continue;
+    const double n = -qn / denominator, t = sign * mu * n;
+    const double ut = wtt * t + wtn * n + qt;
+    if (n >= 0.0 && -sign * ut >= -slack) {
+      rt = t;
+      rn = n;
+      status = sign < 0.0 ? ContactStatus::slifw : ContactStatus::slibw;
+      return true;
+    }
+  }
+  const double det = wtt * wnn - wtn * wtn;
+  if (det != 0.0 && std::isfinite(det)) {
+    const double n = -(-wtn * qt + wtt * qn) / det, t = -(wnn * qt - wtn * qn) / det;
+    if (n >= 0.0 && std::fabs(t) <= mu * n * (1.0 + 1e-12)) {
+      rt = t;
+      rn = n;
+      status = ContactStatus::stick;
+      return true;
+    }
+  }
+  return false;
 }
 
 double natural_map_residual_squared_2d(const Eigen::Vector2d& r, const Eigen::Vector2d& u, double mu) {

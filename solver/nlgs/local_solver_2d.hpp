@@ -17,6 +17,14 @@ struct LocalSolution2D {
 
 LocalSolution2D solve_signorini_coulomb_2d(const Eigen::Matrix2d& W, const Eigen::Vector2d& q, double mu);
 
+// When the sign test picks a sliding branch whose denominator is not positive (W strongly
+// coupled and μ large), LMGC90 stops with an error although another case solves the problem:
+// this tries forward slide, backward slide and stick, each checked for consistency (r_n >= 0,
+// the sliding direction matching the sign of u_t, |r_t| <= μ r_n), and returns the first that
+// holds. False when none does (NaN data). W symmetric: wtn = wnt.
+bool solve_signorini_coulomb_2d_any_case(double wtt, double wtn, double wnn, double qt, double qn, double mu,
+                                         double& rt, double& rn, ContactStatus& status);
+
 // The same enumeration on scalars, inlined in the NLGS sweep (W symmetric: wtn = wnt).
 // Returns false on a degenerate block or NaN (r left at 0).
 inline bool solve_signorini_coulomb_2d(double wtt, double wtn, double wnn, double qt, double qn, double mu,
@@ -33,13 +41,15 @@ inline bool solve_signorini_coulomb_2d(double wtt, double wtn, double wnn, doubl
   const double cb = dft - mu * dfn;
   if (cf < 0.0) {
     const double forward = wnn - mu * wtn;
-    if (forward <= 1e-18) return false;
+    if (forward <= 1e-18)
+      return solve_signorini_coulomb_2d_any_case(wtt, wtn, wnn, qt, qn, mu, rt, rn, status);
     rn = -qn / forward;
     rt = -mu * rn;
     status = ContactStatus::slifw;
   } else if (cb > 0.0) {
     const double backward = wnn + mu * wtn;
-    if (backward <= 1e-18) return false;
+    if (backward <= 1e-18)
+      return solve_signorini_coulomb_2d_any_case(wtt, wtn, wnn, qt, qn, mu, rt, rn, status);
     rn = -qn / backward;
     rt = mu * rn;
     status = ContactStatus::slibw;

@@ -121,3 +121,28 @@ RC_GTEST_PROP(Nlgs2D, ConvergedStepSatisfiesEveryContactLaw, ()) {
 
 }  // namespace
 }  // namespace lmgc::solver
+
+namespace lmgc::solver {
+namespace {
+
+// RapidCheck counterexample (sanitizer run of stop 9): the sign test picks the forward slide,
+// whose denominator Wnn - μ Wnt is negative; the problem is solved by the backward slide.
+TEST(SignoriniCoulomb2D, ForwardBranchWithNegativeDenominatorFallsBackToTheConsistentCase) {
+  Matrix2d W;
+  W << 5.18966, 0.837049, 0.837049, 0.278671;
+  const Vector2d q(-5.0, -0.3385);
+  const double mu = 0.45707;
+  const LocalSolution2D s = solve_signorini_coulomb_2d(W, q, mu);
+  ASSERT_FALSE(s.failed);
+  EXPECT_EQ(s.status, ContactStatus::slibw);
+  const Vector2d u = W * s.r + q;
+  EXPECT_LE(std::sqrt(natural_map_residual_squared_2d(s.r, u, mu)), 1e-12);
+  double rt, rn;
+  ContactStatus status;
+  ASSERT_TRUE(solve_signorini_coulomb_2d(W(0, 0), W(0, 1), W(1, 1), q(0), q(1), mu, rt, rn, status));
+  EXPECT_NEAR(rt, s.r(0), 1e-14);
+  EXPECT_NEAR(rn, s.r(1), 1e-14);
+}
+
+}  // namespace
+}  // namespace lmgc::solver
