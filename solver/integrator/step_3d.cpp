@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <numeric>
+#include <random>
 #include <span>
 
 #include "solver/detection/pair_geometry_3d.hpp"
@@ -339,9 +341,15 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   };
   const double tol = options.tolerance;
   const int max_checks = options.gs_it2;
+  // Sweep order: detection order, or reshuffled before each block of gs_it1 sweeps with quick
+  // scramble (nlgs_3D_SetWithQuickScramble), from a fixed seed so that runs repeat.
+  std::vector<std::size_t> order(contacts.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::mt19937 random(12345u);
   for (int check = 0; check < max_checks; ++check) {
+    if (options.quick_scramble) std::shuffle(order.begin(), order.end(), random);
     for (int sweep = 0; sweep < options.gs_it1; ++sweep) {
-      for (std::size_t k = 0; k < contacts.size(); ++k) {
+      for (const std::size_t k : order) {
         Interaction3D& c = contacts[k];
         if (c.inactive) continue;
         Vector3d q_local;
