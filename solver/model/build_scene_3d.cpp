@@ -39,6 +39,7 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
     std::vector<Rigid3DContactorShape> shapes;
     std::vector<Contactor3D> contactors;
     std::int32_t rank = 0;
+    bool unsupported = false;  // reported once, at the contactor; the body is not sized then
     for (const grammar::Contactor& t : body.contactors) {
       const auto value = [&](std::size_t i) { return i < t.values.size() ? t.values[i].value : 0.0; };
       Contactor3D c;
@@ -75,12 +76,14 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
         sink.report("L4001", grammar::Location{in.bodies_path, t.type.span},
                     "contactor '" + c.type + "' is not handled by the rigid 3D solver yet");
         ok = false;
+        unsupported = true;
         continue;
       }
       shapes.push_back(shape);
       contactors.push_back(c);
     }
 
+    if (unsupported) continue;
     const auto density = in.densities.find(bulk.behav.value);
     if (density == in.densities.end()) {
       sink.report("L2001", grammar::Location{in.bodies_path, bulk.behav.span},
