@@ -10,6 +10,7 @@
 #include "grammar/common/output_file.hpp"
 #include "grammar/dof/writer.hpp"
 #include "grammar/vloc_rloc/writer.hpp"
+#include "solver/io/display_3d.hpp"
 #include "solver/io/state_files_3d.hpp"
 
 namespace lmgc::solver {
@@ -29,6 +30,7 @@ RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D&
   Postpro3D postpro;
   if (!outputs.postpro.empty() && !postpro.open(outputs.case_dir / "POSTPRO", outputs.postpro, summary.error))
     return summary;
+  DisplayWriter3D display(outputs.case_dir / "DISPLAY");
 
   std::ofstream report(outbox / "run_report.csv", std::ios::trunc);
   report << "step,time,contacts,active,iterations,converged,mean_dvor,quad_dv,quad_dvr,"
@@ -60,6 +62,8 @@ RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D&
     if (!outputs.postpro.empty()) postpro.write(scene, state, result);
     if (options.write_every > 0 && state.step % options.write_every == 0)
       if (!write_state("OUT." + std::to_string(++written))) break;
+    if (options.display_every > 0 && state.step % options.display_every == 0)
+      if (!display.write(scene, state, summary.error)) break;
     if (progress) {
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       const double eta = elapsed / static_cast<double>(k + 1) * static_cast<double>(options.steps - k - 1);
