@@ -112,7 +112,7 @@ std::string bodies_vtu_3d(const Scene3D& scene) {
   return out;
 }
 
-std::string contacts_vtu_3d(const Scene3D& scene, const RunState3D& state) {
+std::string contacts_vtu_3d([[maybe_unused]] const Scene3D& scene, const RunState3D& state) {
   const auto& contacts = state.contacts;
   const std::size_t n = contacts.size();
   const double h = state.h;
@@ -144,7 +144,6 @@ std::string contacts_vtu_3d(const Scene3D& scene, const RunState3D& state) {
   data_array(out, "Int32", "anbdy", 1, n,
              [&](std::size_t i, int) { return contacts[i].antagonist_body + 1; });
   out += "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
-  (void)scene;
   return out;
 }
 
