@@ -361,9 +361,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
       ++result.iterations;
     }
     // Check pass (numerics.md §4.1): one more local solve per contact, r left unchanged.
-    double sum_dvdv = 0, max_dvdv = 0, sum_dvdvrr = 0, max_dvdvrr = 0, sum_dvor = 0, sum_wrr = 0,
-           sum_wrwr = 0;
-    double active = 0.0;
+    NlgsCheckSums sums;
     for (std::size_t k = 0; k < contacts.size(); ++k) {
       const Interaction3D& c = contacts[k];
       if (c.inactive) continue;
@@ -374,44 +372,22 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
       const double dvdv = dv.squaredNorm();
       const double rr = mean_r.squaredNorm();
       if (rr == 0.0) continue;
-      active += 1.0;
-      sum_dvdv += dvdv;
-      max_dvdv = std::max(max_dvdv, dvdv);
-      sum_dvdvrr += dvdv * rr;
-      max_dvdvrr = std::max(max_dvdvrr, dvdv * rr);
-      sum_dvor += mean_r.dot(dv);
+      sums.active += 1.0;
+      sums.dvdv += dvdv;
+      sums.max_dvdv = std::max(sums.max_dvdv, dvdv);
+      sums.dvdvrr += dvdv * rr;
+      sums.max_dvdvrr = std::max(sums.max_dvdvrr, dvdv * rr);
+      sums.dvor += mean_r.dot(dv);
       const Vector3d wr = c.W * c.r, wr_check = c.W * r_check;
-      sum_wrr += 0.5 * (wr.dot(c.r) + wr_check.dot(r_check));
-      sum_wrwr += 0.5 * (wr.squaredNorm() + wr_check.squaredNorm());
+      sums.wrr += 0.5 * (wr.dot(c.r) + wr_check.dot(r_check));
+      sums.wrwr += 0.5 * (wr.squaredNorm() + wr_check.squaredNorm());
     }
-    NlgsNorms& q = result.norms;
-    if (active >= 1.0 && sum_wrr > 1e-18 && sum_wrwr > 1e-18) {
-      q.quad_wr = std::sqrt(sum_wrwr / active);
-      const double mean_wrr = sum_wrr / active;
-      q.quad_dv = std::sqrt(sum_dvdv / active) / (q.quad_wr * tol);
-      q.maxm_dv = std::sqrt(max_dvdv) / (q.quad_wr * tol);
-      q.quad_dvr = std::sqrt(sum_dvdvrr / active) / (mean_wrr * tol);
-      q.maxm_dvr = std::sqrt(max_dvdvrr) / (mean_wrr * tol);
-      q.mean_dvor = sum_dvor / (sum_wrr * tol);
-    } else {
-      q = NlgsNorms{0.111e-11, 0.111e-11, 0.111e-11, 0.111e-11, 0.111e-11, 0.0};
-    }
-    if (!std::isfinite(q.mean_dvor) || !std::isfinite(q.quad_dv)) {
+    result.norms = nlgs_norms(sums, tol);
+    if (!std::isfinite(result.norms.mean_dvor) || !std::isfinite(result.norms.quad_dv)) {
       result.diverged = true;
       break;
     }
-    const bool quad = std::fabs(q.mean_dvor) < 1.0 && q.quad_dv < 1.0 && q.quad_dvr < 1.0;
-    const bool maxm = std::fabs(q.mean_dvor) < 1.0 && q.maxm_dv < 1.0 && q.maxm_dvr < 1.0;
-    switch (options.norm) {
-      case NlgsNorm::maxm:
-        result.converged = maxm;
-        break;
-      case NlgsNorm::qm16:
-        result.converged = quad && q.maxm_dv < 16.666 && q.maxm_dvr < 16.666;
-        break;
-      default:
-        result.converged = quad;
-    }
+    result.converged = nlgs_check_passes(options.norm, result.norms);
     if (result.converged) break;
   }
   if (contacts.empty()) result.converged = true;

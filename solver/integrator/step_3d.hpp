@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "solver/model/scene_3d.hpp"
-#include "solver/nlgs/nlgs_2d.hpp"  // NlgsOptions, NlgsResult: the same for both dimensions
+#include "solver/nlgs/nlgs_check.hpp"
 
 namespace lmgc::solver {
 

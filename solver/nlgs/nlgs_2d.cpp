@@ -124,21 +124,6 @@ Matrix2d delassus_block(const Interaction2D& c, const std::vector<Vector3d>& inv
   status = c.wet && (c.cor_n != 0.0 || c.cor_t != 0.0) ? wet_status(plain) : plain;
 }
 
-bool check_passes(NlgsNorm norm, const NlgsNorms& q) {
-  const bool quad = std::fabs(q.mean_dvor) < 1.0 && std::fabs(q.quad_dv) < 1.0 && std::fabs(q.quad_dvr) < 1.0;
-  const bool maxm = std::fabs(q.mean_dvor) < 1.0 && std::fabs(q.maxm_dv) < 1.0 && std::fabs(q.maxm_dvr) < 1.0;
-  switch (norm) {
-    case NlgsNorm::quad:
-    case NlgsNorm::quad_normal:
-      return quad;
-    case NlgsNorm::maxm:
-      return maxm;
-    case NlgsNorm::qm16:
-      return quad && std::fabs(q.maxm_dv) < 16.666 && std::fabs(q.maxm_dvr) < 16.666;
-  }
-  return quad;
-}
-
 }  // namespace
 
 NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vector<Interaction2D>& contacts,
@@ -258,8 +243,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
 
   // One check pass (numerics.md §4.1): the local solve applied to the current state, no update.
   auto check = [&]() {
-    double sum_dvdv = 0, max_dvdv = 0, sum_dvdvrr = 0, max_dvdvrr = 0, sum_dvor = 0, sum_wrr = 0,
-           sum_wrwr = 0;
+    NlgsCheckSums sums;
     double residual2 = 0;
     std::size_t vanishing = 0;
     result.active = 0;
@@ -286,47 +270,36 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       if (normal_only) {
         // 'QuaN ': normal components only.
         const double dvdv = dvn * dvn, wrr = 0.5 * c.wnn * (r1n * r1n + r2n * r2n);
-        sum_dvdv += dvdv;
-        max_dvdv = std::max(max_dvdv, dvdv);
-        sum_dvdvrr += dvdv * mn * mn;
-        max_dvdvrr = std::max(max_dvdvrr, dvdv * mn * mn);
-        sum_dvor += mn * dvn;
-        sum_wrr += wrr;
-        sum_wrwr += c.wnn * wrr;
+        sums.dvdv += dvdv;
+        sums.max_dvdv = std::max(sums.max_dvdv, dvdv);
+        sums.dvdvrr += dvdv * mn * mn;
+        sums.max_dvdvrr = std::max(sums.max_dvdvrr, dvdv * mn * mn);
+        sums.dvor += mn * dvn;
+        sums.wrr += wrr;
+        sums.wrwr += c.wnn * wrr;
         continue;
       }
       const double dvdv = dvt * dvt + dvn * dvn, rr = mt * mt + mn * mn;
-      sum_dvdv += dvdv;
-      max_dvdv = std::max(max_dvdv, dvdv);
-      sum_dvdvrr += dvdv * rr;
-      max_dvdvrr = std::max(max_dvdvrr, dvdv * rr);
-      sum_dvor += mt * dvt + mn * dvn;
+      sums.dvdv += dvdv;
+      sums.max_dvdv = std::max(sums.max_dvdv, dvdv);
+      sums.dvdvrr += dvdv * rr;
+      sums.max_dvdvrr = std::max(sums.max_dvdvrr, dvdv * rr);
+      sums.dvor += mt * dvt + mn * dvn;
       const double w1t = c.wtt * r1t + c.wtn * r1n, w1n = c.wtn * r1t + c.wnn * r1n;
       const double w2t = c.wtt * r2t + c.wtn * r2n, w2n = c.wtn * r2t + c.wnn * r2n;
-      sum_wrr += 0.5 * (w1t * r1t + w1n * r1n + w2t * r2t + w2n * r2n);
-      sum_wrwr += 0.5 * (w1t * w1t + w1n * w1n + w2t * w2t + w2n * w2n);
+      sums.wrr += 0.5 * (w1t * r1t + w1n * r1n + w2t * r2t + w2n * r2n);
+      sums.wrwr += 0.5 * (w1t * w1t + w1n * w1n + w2t * w2t + w2n * w2n);
     }
     result.residual_absolute = std::sqrt(residual2);
     result.residual_relative = result.free_velocity_norm > 0.0
                                    ? result.residual_absolute / result.free_velocity_norm
                                    : result.residual_absolute;
-    const double active = static_cast<double>(count - vanishing);
+    sums.active = static_cast<double>(count - vanishing);
     NlgsNorms& q = result.norms;
-    const double tol = options.tolerance;
-    if (active >= 1.0 && sum_wrr > 1e-18 && sum_wrwr > 1e-18) {
-      q.quad_wr = std::sqrt(sum_wrwr / active);
-      const double mean_wrr = sum_wrr / active;
-      q.quad_dv = std::sqrt(sum_dvdv / active) / (q.quad_wr * tol);
-      q.maxm_dv = std::sqrt(max_dvdv) / (q.quad_wr * tol);
-      q.quad_dvr = std::sqrt(sum_dvdvrr / active) / (mean_wrr * tol);
-      q.maxm_dvr = std::sqrt(max_dvdvrr) / (mean_wrr * tol);
-      q.mean_dvor = sum_dvor / (sum_wrr * tol);
-    } else {
-      q = NlgsNorms{0.111e-11, 0.111e-11, 0.111e-11, 0.111e-11, 0.111e-11, 0.0};
-    }
+    q = nlgs_norms(sums, options.tolerance);
     if (!std::isfinite(q.mean_dvor) || !std::isfinite(q.quad_dv) || !std::isfinite(residual2))
       result.diverged = true;
-    bool passed = check_passes(options.norm, q);
+    bool passed = nlgs_check_passes(options.norm, q);
     if (options.residual_target > 0.0) passed = passed || result.residual_relative <= options.residual_target;
     return passed;
   };

@@ -1,0 +1,61 @@
+#pragma once
+// What both NLGS (2D and 3D) share: the options, LMGC90's convergence check of a sweep
+// (numerics.md §4.1: sums over the contacts → normalised norms → the test of the chosen norm),
+// and the result of a solve.
+#include <cstddef>
+
+namespace lmgc::solver {
+
+enum class NlgsNorm { quad, quad_normal, maxm, qm16 };  // 'Quad ', 'QuaN ', 'Maxm ', 'QM/16'
+enum class NlgsStorage { exchange_local_global, stored_delassus_loops };
+
+struct NlgsOptions {
+  NlgsStorage storage = NlgsStorage::stored_delassus_loops;
+  NlgsNorm norm = NlgsNorm::quad;
+  double tolerance = 1.666e-4;
+  double relax = 1.0;
+  int gs_it1 = 50;   // sweeps between two convergence checks
+  int gs_it2 = 500;  // maximum number of checks
+  bool quick_scramble = false;
+  // Extra stopping rule of ours: stop when the natural-map residual ÷ ‖q‖ is below this (0 = off).
+  double residual_target = 0.0;
+};
+
+// LMGC90's check quantities (numerics.md §4.1), normalised by the tolerance.
+struct NlgsNorms {
+  double mean_dvor = 0.0;  // MeanDVoR
+  double quad_dv = 0.0;    // QuadDV
+  double quad_dvr = 0.0;   // QuadDVR
+  double maxm_dv = 0.0;    // MaxmDV
+  double maxm_dvr = 0.0;   // MaxmDVR
+  double quad_wr = 0.0;    // QuadWR
+};
+
+struct NlgsResult {
+  int iterations = 0;  // sweeps done
+  bool converged = false;
+  bool diverged = false;  // NaN
+  NlgsNorms norms;
+  // Solver-independent error: natural-map residual of the local problems (fc3d/FORMAT.md §3),
+  // absolute and divided by ‖q‖ (q = free local velocities of all interactions).
+  double residual_absolute = 0.0;
+  double residual_relative = 0.0;
+  double free_velocity_norm = 0.0;
+  std::size_t active = 0;  // interactions with a non-zero reaction
+  double seconds = 0.0;    // wall time of the solve (set by the solve_contacts stage)
+};
+
+// The sums of one check pass over the contacts (numerics.md §4.1); `active` counts the contacts
+// whose mean reaction R̄ is not zero.
+struct NlgsCheckSums {
+  double dvdv = 0, max_dvdv = 0, dvdvrr = 0, max_dvdvrr = 0, dvor = 0, wrr = 0, wrwr = 0;
+  double active = 0;
+};
+
+// LMGC90's norms from the sums, divided by the tolerance (0.111e-11 each when nothing is active).
+NlgsNorms nlgs_norms(const NlgsCheckSums& sums, double tolerance);
+
+// The test of `norm` on the normalised norms: 'Quad '/'QuaN ', 'Maxm ' or 'QM/16'.
+bool nlgs_check_passes(NlgsNorm norm, const NlgsNorms& norms);
+
+}  // namespace lmgc::solver
