@@ -5,6 +5,7 @@
 #include "grammar/tact_behav/law_catalogue.hpp"
 #include "grammar/tact_behav/see_table.hpp"
 #include "solver/bodies/rigid_2d_properties.hpp"
+#include "solver/model/driven_dofs.hpp"
 #include "solver/model/scene_builder_2d.hpp"
 
 namespace lmgc::solver {
@@ -206,58 +207,21 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
     scene.visibility.push_back(v);
   }
 
-  // Driven dofs (datbox-inputs.md §5).
-  if (in.drv_dof) {
-    for (const grammar::DrvDofBody& body : in.drv_dof->bodies) {
-      if (body.body_type.value != "RBDY2") continue;
-      const std::int64_t rank = body.rank.value;
-      if (rank < 1 || rank > static_cast<std::int64_t>(body_of_rank.size())) {
-        sink.report("L2003", grammar::Location{in.drv_dof_path, body.rank.span},
-                    "RBDY2 body " + std::to_string(rank) + " does not exist");
-        ok = false;
-        continue;
+  // Driven dofs (datbox-inputs.md §5) and the initial state (DOF.INI): X and V by body rank.
+  if (in.drv_dof && !read_driven_dofs(*in.drv_dof, "RBDY2", body_of_rank, 3, in.evolutions, in.drv_dof_path,
+                                      scene.driven, sink))
+    ok = false;
+  if (in.dof_ini)
+    for (const auto& [i, node] : initial_dof_nodes(*in.dof_ini, "RBDY2", body_of_rank)) {
+      for (std::size_t d = 0; d < 3; ++d) {
+        if (d < node->x.size())
+          scene.bodies.displacement_begin[i](static_cast<Eigen::Index>(d)) = node->x[d].value;
+        if (d < node->v.size())
+          scene.bodies.velocity_begin[i](static_cast<Eigen::Index>(d)) = node->v[d].value;
       }
-      for (const grammar::DrvDofNode& node : body.nodes)
-        for (const grammar::DrivenDof& dof : node.dofs) {
-          DrivenDof2D d;
-          d.body = body_of_rank[static_cast<std::size_t>(rank - 1)];
-          d.dof = static_cast<std::int32_t>(dof.dof.value) - 1;
-          d.is_force = dof.kind.value == "force";
-          if (d.dof < 0 || d.dof > 2) continue;
-          if (dof.uses_evolution) {
-            if (in.evolutions) {
-              auto it = in.evolutions->find(dof.evolution_file.value);
-              if (it != in.evolutions->end())
-                for (const auto& point : it->second.points)
-                  d.evolution.push_back({point.time.value, point.value.value});
-            }
-          } else {
-            for (std::size_t k = 0; k < 6; ++k) d.coefficients[k] = dof.parameters[k].value;
-          }
-          scene.driven.push_back(d);
-        }
+      scene.bodies.displacement[i] = scene.bodies.displacement_begin[i];
+      scene.bodies.velocity[i] = scene.bodies.velocity_begin[i];
     }
-  }
-
-  // Initial state (DOF.INI): X and V by body rank.
-  if (in.dof_ini) {
-    for (const auto& section : in.dof_ini->sections)
-      for (const grammar::DofBody& body : section.bodies) {
-        if (body.body_type.value != "RBDY2" || body.nodes.empty()) continue;
-        const std::int64_t rank = body.number.value;
-        if (rank < 1 || rank > static_cast<std::int64_t>(body_of_rank.size())) continue;
-        const auto i = static_cast<std::size_t>(body_of_rank[static_cast<std::size_t>(rank - 1)]);
-        const grammar::DofNode& node = body.nodes.front();
-        for (std::size_t d = 0; d < 3; ++d) {
-          if (d < node.x.size())
-            scene.bodies.displacement_begin[i](static_cast<Eigen::Index>(d)) = node.x[d].value;
-          if (d < node.v.size())
-            scene.bodies.velocity_begin[i](static_cast<Eigen::Index>(d)) = node.v[d].value;
-        }
-        scene.bodies.displacement[i] = scene.bodies.displacement_begin[i];
-        scene.bodies.velocity[i] = scene.bodies.velocity_begin[i];
-      }
-  }
   finalise_scene(scene);
   return ok;
 }

@@ -5,6 +5,7 @@
 #include "grammar/tact_behav/see_table.hpp"
 #include "solver/bodies/rigid_3d_properties.hpp"
 #include "solver/model/build_scene_2d.hpp"  // contact_law_of: the law table is shared
+#include "solver/model/driven_dofs.hpp"
 
 namespace lmgc::solver {
 
@@ -161,65 +162,31 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
   }
 
   // Driven dofs (datbox-inputs.md §5): 6 dofs, rotations in body axes.
-  if (in.drv_dof) {
-    for (const grammar::DrvDofBody& body : in.drv_dof->bodies) {
-      if (body.body_type.value != "RBDY3") continue;
-      const std::int64_t rank = body.rank.value;
-      if (rank < 1 || rank > static_cast<std::int64_t>(body_of_rank.size())) {
-        sink.report("L2003", grammar::Location{in.drv_dof_path, body.rank.span},
-                    "RBDY3 body " + std::to_string(rank) + " does not exist");
-        ok = false;
-        continue;
-      }
-      for (const grammar::DrvDofNode& node : body.nodes)
-        for (const grammar::DrivenDof& dof : node.dofs) {
-          DrivenDof2D d;
-          d.body = body_of_rank[static_cast<std::size_t>(rank - 1)];
-          d.dof = static_cast<std::int32_t>(dof.dof.value) - 1;
-          d.is_force = dof.kind.value == "force";
-          if (d.dof < 0 || d.dof > 5) continue;
-          if (dof.uses_evolution) {
-            if (in.evolutions) {
-              auto it = in.evolutions->find(dof.evolution_file.value);
-              if (it != in.evolutions->end())
-                for (const auto& point : it->second.points)
-                  d.evolution.push_back({point.time.value, point.value.value});
-            }
-          } else {
-            for (std::size_t k = 0; k < 6; ++k) d.coefficients[k] = dof.parameters[k].value;
-          }
-          if (!d.is_force)
-            b.driven_mask[static_cast<std::size_t>(d.body)] |= static_cast<std::uint8_t>(1u << d.dof);
-          scene.driven.push_back(d);
-        }
-    }
-  }
+  if (in.drv_dof && !read_driven_dofs(*in.drv_dof, "RBDY3", body_of_rank, 6, in.evolutions, in.drv_dof_path,
+                                      scene.driven, sink))
+    ok = false;
+  for (const DrivenDof2D& d : scene.driven)
+    if (!d.is_force)
+      b.driven_mask[static_cast<std::size_t>(d.body)] |= static_cast<std::uint8_t>(1u << d.dof);
 
   // Initial state (DOF.INI): X, V and the principal frame by body rank.
-  if (in.dof_ini) {
-    for (const auto& section : in.dof_ini->sections)
-      for (const grammar::DofBody& body : section.bodies) {
-        if (body.body_type.value != "RBDY3" || body.nodes.empty()) continue;
-        const std::int64_t rank = body.number.value;
-        if (rank < 1 || rank > static_cast<std::int64_t>(body_of_rank.size())) continue;
-        const auto i = static_cast<std::size_t>(body_of_rank[static_cast<std::size_t>(rank - 1)]);
-        const grammar::DofNode& node = body.nodes.front();
-        for (std::size_t d = 0; d < 6; ++d) {
-          if (d < 3 && d < node.x.size())
-            b.displacement_begin[i](static_cast<Eigen::Index>(d)) = node.x[d].value;
-          if (d < node.v.size()) b.velocity_begin[i](static_cast<Eigen::Index>(d)) = node.v[d].value;
-        }
-        if (node.frame.size() >= 9) {
-          Matrix3d frame;
-          for (int column = 0; column < 3; ++column)
-            for (int k = 0; k < 3; ++k)
-              frame(k, column) = node.frame[static_cast<std::size_t>(3 * column + k)].value;
-          b.frame_initial[i] = b.frame_detection[i] = b.frame[i] = frame;
-        }
-        b.displacement[i] = b.displacement_begin[i];
-        b.velocity[i] = b.velocity_begin[i];
+  if (in.dof_ini)
+    for (const auto& [i, node] : initial_dof_nodes(*in.dof_ini, "RBDY3", body_of_rank)) {
+      for (std::size_t d = 0; d < 6; ++d) {
+        if (d < 3 && d < node->x.size())
+          b.displacement_begin[i](static_cast<Eigen::Index>(d)) = node->x[d].value;
+        if (d < node->v.size()) b.velocity_begin[i](static_cast<Eigen::Index>(d)) = node->v[d].value;
       }
-  }
+      if (node->frame.size() >= 9) {
+        Matrix3d frame;
+        for (int column = 0; column < 3; ++column)
+          for (int k = 0; k < 3; ++k)
+            frame(k, column) = node->frame[static_cast<std::size_t>(3 * column + k)].value;
+        b.frame_initial[i] = b.frame_detection[i] = b.frame[i] = frame;
+      }
+      b.displacement[i] = b.displacement_begin[i];
+      b.velocity[i] = b.velocity_begin[i];
+    }
 
   // Inverse masses (0 on driven dofs) and the plan.
   for (std::size_t i = 0; i < b.size(); ++i) {
