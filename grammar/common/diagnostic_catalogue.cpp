@@ -236,8 +236,8 @@ constexpr std::array kCatalogue = {
                    "A '$seety' row uses a contact law that the solver does not solve yet; lmgc-solve "
                    "stops before running rather than silently using another law."},
     DiagnosticKind{"L4003", error, "case kind not handled by the solver",
-                   "lmgc-solve runs rigid 2D cases (RBDY2 bodies only) for now; a case with RBDY3 or MAILx "
-                   "bodies is checked by lmgc-check but not run."},
+                   "lmgc-solve runs cases of RBDY2 bodies only or of RBDY3 bodies only for now; a case with "
+                   "MAILx bodies, or mixing body types, is checked by lmgc-check but not run."},
     DiagnosticKind{
         "L4004", warning, "post-processing command not computed",
         "A POSTPRO.DAT command that lmgc-solve does not compute yet for this kind of case; the run "

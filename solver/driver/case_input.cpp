@@ -46,19 +46,11 @@ std::vector<PostproCommand2D> postpro_commands_2d(const validate::CaseFiles& fil
   return commands;
 }
 
-}  // namespace
-
-bool prepare_run_2d(const validate::CaseFiles& files, Scene2D& scene, RunOutputs2D& outputs,
-                    grammar::DiagnosticSink& sink) {
-  if (!files.bodies || !files.bulk_behav) return false;
-  for (const grammar::Body& body : files.bodies->bodies)
-    if (body.type != grammar::BodyType::rbdy2) {
-      sink.report("L4003", grammar::Location{datbox_path(files, "BODIES.DAT"), body.type_span},
-                  "lmgc-solve runs rigid 2D cases (RBDY2 bodies) for now; this body is not RBDY2");
-      return false;
-    }
+// The parts of a scene input both dimensions read the same way: the ASTs, the densities of the
+// bulk behaviours, the paths for diagnostics (gravity is left to the caller).
+template <class SceneInput>
+void fill_scene_input(const validate::CaseFiles& files, SceneInput& input) {
   static const grammar::TactBehavFile kNoLaws;
-  SceneInput2D input;
   input.bodies = &*files.bodies;
   input.tact_behav = files.tact_behav ? &*files.tact_behav : &kNoLaws;
   input.drv_dof = files.drv_dof ? &*files.drv_dof : nullptr;
@@ -69,11 +61,27 @@ bool prepare_run_2d(const validate::CaseFiles& files, Scene2D& scene, RunOutputs
     if (!law.density_field && grammar::bulk_density(*files.bulk_behav, law.nickname.value, density))
       input.densities.emplace(law.nickname.value, density);
   }
-  if (files.bulk_behav->has_gravity)
-    input.gravity = Eigen::Vector2d(files.bulk_behav->gravity[0].value, files.bulk_behav->gravity[1].value);
   input.bodies_path = datbox_path(files, "BODIES.DAT");
   input.tact_behav_path = datbox_path(files, "TACT_BEHAV.DAT");
   input.drv_dof_path = datbox_path(files, "DRV_DOF.DAT");
+}
+
+}  // namespace
+
+bool prepare_run_2d(const validate::CaseFiles& files, Scene2D& scene, RunOutputs2D& outputs,
+                    grammar::DiagnosticSink& sink) {
+  if (!files.bodies || !files.bulk_behav) return false;
+  for (const grammar::Body& body : files.bodies->bodies)
+    if (body.type != grammar::BodyType::rbdy2) {
+      sink.report("L4003", grammar::Location{datbox_path(files, "BODIES.DAT"), body.type_span},
+                  "lmgc-solve runs cases of RBDY2 bodies only or of RBDY3 bodies only for now; this body is "
+                  "not RBDY2");
+      return false;
+    }
+  SceneInput2D input;
+  fill_scene_input(files, input);
+  if (files.bulk_behav->has_gravity)
+    input.gravity = Eigen::Vector2d(files.bulk_behav->gravity[0].value, files.bulk_behav->gravity[1].value);
   if (!build_scene_2d(input, scene, sink)) return false;
 
   outputs.case_dir = files.case_dir;
@@ -95,24 +103,11 @@ bool is_rigid_3d_case(const validate::CaseFiles& files) {
 bool prepare_run_3d(const validate::CaseFiles& files, Scene3D& scene, RunOutputs3D& outputs,
                     grammar::DiagnosticSink& sink) {
   if (!files.bodies || !files.bulk_behav) return false;
-  static const grammar::TactBehavFile kNoLaws;
   SceneInput3D input;
-  input.bodies = &*files.bodies;
-  input.tact_behav = files.tact_behav ? &*files.tact_behav : &kNoLaws;
-  input.drv_dof = files.drv_dof ? &*files.drv_dof : nullptr;
-  input.dof_ini = files.dof_ini ? &*files.dof_ini : nullptr;
-  input.evolutions = &files.evolutions;
-  for (const grammar::BulkLaw& law : files.bulk_behav->laws) {
-    double density = 0.0;
-    if (!law.density_field && grammar::bulk_density(*files.bulk_behav, law.nickname.value, density))
-      input.densities.emplace(law.nickname.value, density);
-  }
+  fill_scene_input(files, input);
   if (files.bulk_behav->has_gravity)
     input.gravity = Eigen::Vector3d(files.bulk_behav->gravity[0].value, files.bulk_behav->gravity[1].value,
                                     files.bulk_behav->gravity[2].value);
-  input.bodies_path = datbox_path(files, "BODIES.DAT");
-  input.tact_behav_path = datbox_path(files, "TACT_BEHAV.DAT");
-  input.drv_dof_path = datbox_path(files, "DRV_DOF.DAT");
   if (!build_scene_3d(input, scene, sink)) return false;
   outputs.case_dir = files.case_dir;
   outputs.postpro = postpro_commands_2d(files, sink, /*three_d=*/true);
