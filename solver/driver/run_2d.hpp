@@ -9,19 +9,11 @@
 
 #include "grammar/vloc_rloc/ast.hpp"
 #include "solver/driver/run_options.hpp"
+#include "solver/driver/step_log.hpp"
 #include "solver/integrator/step_2d.hpp"
 #include "solver/io/postpro_2d.hpp"
 
 namespace lmgc::solver {
-
-struct RunSummary {
-  long steps_done = 0;
-  long steps_not_converged = 0;
-  double worst_residual = 0.0;  // largest natural-map residual ÷ ‖q‖ of the run
-  double final_time = 0.0;
-  bool interrupted = false;
-  std::string error;  // an output could not be written
-};
 
 struct RunOutputs2D {
   std::filesystem::path case_dir;         // OUTBOX/, DISPLAY/, POSTPRO/ are created here
