@@ -2,12 +2,14 @@
 // Running lmgc-solve on an LMGC90 example the way LMGC90's reference run was made: the literal
 // parameters of its command.py as reference_lmgc90/RUN.md records them.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <regex>
 #include <sstream>
 #include <string>
 
+#include "grammar/dof/parser.hpp"
 #include "tests/support/run_tool.hpp"
 #include "tests/support/shared_data.hpp"
 
@@ -84,6 +86,29 @@ inline ExampleRun run_example(const std::filesystem::path& example, long steps, 
 }
 
 // LMGC90's RIGID_2D examples that have a reference run.
+inline grammar::DofFile read_dof(const std::filesystem::path& path) {
+  grammar::DiagnosticSink sink;
+  return grammar::parse_dof(grammar::SourceText(path.string(), read_file(path)), sink);
+}
+
+// Largest |X_ours - X_lmgc| over every body, relative to the largest |X_lmgc| (infinite when the
+// files do not hold the same bodies).
+inline double relative_position_difference(const grammar::DofFile& ours, const grammar::DofFile& lmgc) {
+  std::vector<double> a, b;
+  for (const auto* file : {&ours, &lmgc})
+    for (const auto& section : file->sections)
+      for (const auto& body : section.bodies)
+        for (const auto& node : body.nodes)
+          for (const auto& x : node.x) (file == &ours ? a : b).push_back(x.value);
+  if (a.size() != b.size() || b.empty()) return INFINITY;
+  double difference = 0.0, scale = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    difference = std::max(difference, std::abs(a[k] - b[k]));
+    scale = std::max(scale, std::abs(b[k]));
+  }
+  return difference / std::max(scale, 1e-300);
+}
+
 inline std::vector<std::filesystem::path> rigid_examples(const std::string& family) {
   std::vector<std::filesystem::path> cases;
   for (const auto& c : example_cases())

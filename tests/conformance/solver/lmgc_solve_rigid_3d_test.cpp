@@ -21,32 +21,10 @@ constexpr long kScale = 10;
 constexpr long kScale = 1;
 #endif
 
-grammar::DofFile read_dof(const fs::path& path) {
-  grammar::DiagnosticSink sink;
-  return grammar::parse_dof(grammar::SourceText(path.string(), read_file(path)), sink);
-}
-
 std::size_t interaction_count(const fs::path& path) {
   grammar::DiagnosticSink sink;
   return grammar::parse_vloc_rloc(grammar::SourceText(path.string(), read_file(path)), sink)
       .interactions.size();
-}
-
-// Largest |X_ours - X_lmgc| over every body, relative to the largest |X_lmgc|.
-double relative_position_difference(const grammar::DofFile& ours, const grammar::DofFile& lmgc) {
-  std::vector<double> a, b;
-  for (const auto* file : {&ours, &lmgc})
-    for (const auto& section : file->sections)
-      for (const auto& body : section.bodies)
-        for (const auto& node : body.nodes)
-          for (const auto& x : node.x) (file == &ours ? a : b).push_back(x.value);
-  if (a.size() != b.size() || b.empty()) return INFINITY;
-  double difference = 0.0, scale = 0.0;
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    difference = std::max(difference, std::abs(a[k] - b[k]));
-    scale = std::max(scale, std::abs(b[k]));
-  }
-  return difference / std::max(scale, 1e-300);
 }
 
 bool uses_polyhedra(const fs::path& example) {
