@@ -1078,4 +1078,14 @@ std::string law_keyword_hint(std::string_view keyword) {
   return {};
 }
 
+std::string internal_variables_comment(const InternalLayout& layout) {
+  if (layout.count <= 0) return {};
+  std::string line(285, ' ');
+  line[0] = '#';
+  for (const auto& slot : layout.slots)
+    if (slot.column >= 1 && slot.column - 1 + slot.text.size() <= line.size())
+      line.replace(slot.column - 1, slot.text.size(), slot.text);
+  return line;
+}
+
 }  // namespace lmgc::grammar

@@ -35,6 +35,10 @@ struct InternalLayout {
   std::span<const InternalSlot> slots;
 };
 
+// The '#' line of a Vloc_Rloc file naming a law's internal variables: each name at its column,
+// 285 characters (empty when the law has none).
+std::string internal_variables_comment(const InternalLayout& layout);
+
 struct LawKind {
   int id = 0;                                    // LMGC90's integer law id (mod_parameters order, 1..94)
   std::string_view keyword;                      // as read from columns 9-38, case-sensitive

@@ -58,18 +58,6 @@ std::string_view family_name(PairFamily2D f) {
   return "DKDKx";
 }
 
-// The '#' line naming a law's internal variables: names at their columns, 285 characters.
-std::string internal_comment(std::string_view keyword) {
-  const grammar::LawKind* kind = grammar::find_law_kind(keyword);
-  if (!kind || kind->internals_2d.count <= 0) return {};
-  std::string line(285, ' ');
-  line[0] = '#';
-  for (const auto& slot : kind->internals_2d.slots)
-    if (slot.column >= 1 && slot.column - 1 + slot.text.size() <= line.size())
-      line.replace(slot.column - 1, slot.text.size(), slot.text);
-  return line;
-}
-
 }  // namespace
 
 grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& state) {
@@ -173,8 +161,9 @@ grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& 
                                          ? 5
                                          : values.size();
         if (kind->internals == grammar::InternalLayout2D::one_line_with_comment)
-          out.internal_comment =
-              internal_comment(law_keyword(scene.laws[static_cast<std::size_t>(c.law)].law));
+          if (const grammar::LawKind* kind =
+                  grammar::find_law_kind(law_keyword(scene.laws[static_cast<std::size_t>(c.law)].law)))
+            out.internal_comment = grammar::internal_variables_comment(kind->internals_2d);
         for (std::size_t k = 0; k < values.size(); k += per_line)
           out.internal_lines.emplace_back(
               values.begin() + static_cast<std::ptrdiff_t>(k),

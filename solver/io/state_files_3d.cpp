@@ -71,16 +71,6 @@ double labelled_value(std::string_view label, const Interaction3D& c, double h) 
   return 0.0;
 }
 
-// The '#' line naming a law's 3D internal variables: names at their columns, 285 characters.
-std::string internal_comment(const grammar::LawKind& kind) {
-  std::string line(285, ' ');
-  line[0] = '#';
-  for (const auto& slot : kind.internals_3d.slots)
-    if (slot.column >= 1 && slot.column - 1 + slot.text.size() <= line.size())
-      line.replace(slot.column - 1, slot.text.size(), slot.text);
-  return line;
-}
-
 }  // namespace
 
 grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& state) {
@@ -143,7 +133,7 @@ grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& 
           values.push_back(Real{static_cast<std::size_t>(k) < c.internal.size()
                                     ? c.internal[static_cast<std::size_t>(k)]
                                     : 0.0});
-        out.internal_comment = internal_comment(*law_kind);
+        out.internal_comment = grammar::internal_variables_comment(law_kind->internals_3d);
         out.internal_lines.push_back(std::move(values));
       }
       file.interactions.push_back(std::move(out));
