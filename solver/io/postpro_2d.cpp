@@ -119,17 +119,8 @@ void Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsR
     std::ofstream& out = *s.file;
     switch (c.kind) {
       case PostproKind2D::solver_informations: {
-        std::string text;
-        grammar::append_fortran_es(text, t, 15, 8);
-        text += ' ';
-        grammar::append_fortran_i(text, state.contacts.empty() ? 0 : solver.iterations, 8);
-        for (double v : {last_norms_.mean_dvor, last_norms_.quad_dv, last_norms_.quad_dvr}) {
-          text += ' ';
-          grammar::append_fortran_es(text, v, 14, 7);
-        }
-        text += ' ';
-        grammar::append_fortran_i(text, static_cast<std::int64_t>(state.contacts.size()), 8);
-        out << text << '\n';
+        out << solver_informations_line(t, state.contacts.empty() ? 0 : solver.iterations, last_norms_,
+                                        state.contacts.size());
         out.flush();
         break;
       }
@@ -248,6 +239,22 @@ void Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsR
 
 void Postpro2D::close() {
   streams_.clear();
+}
+
+std::string solver_informations_line(double time, int iterations, const NlgsNorms& norms,
+                                     std::size_t contacts) {
+  std::string text;
+  grammar::append_fortran_es(text, time, 15, 8);
+  text += ' ';
+  grammar::append_fortran_i(text, iterations, 8);
+  for (double v : {norms.mean_dvor, norms.quad_dv, norms.quad_dvr}) {
+    text += ' ';
+    grammar::append_fortran_es(text, v, 14, 7);
+  }
+  text += ' ';
+  grammar::append_fortran_i(text, static_cast<std::int64_t>(contacts), 8);
+  text += '\n';
+  return text;
 }
 
 }  // namespace lmgc::solver

@@ -54,4 +54,9 @@ class Postpro2D {
   NlgsNorms last_norms_;        // kept when a step has no contact (as LMGC90 does)
 };
 
+// One SOLVER_INFORMATIONS.DAT row, (ES15.8,1X,I8,3(1X,ES14.7),1X,I8): time, iterations (0 without
+// contacts), MeanDVoR, QuadDV, QuadDVR of the last solve with contacts, number of contacts.
+std::string solver_informations_line(double time, int iterations, const NlgsNorms& norms,
+                                     std::size_t contacts);
+
 }  // namespace lmgc::solver

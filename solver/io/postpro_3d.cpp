@@ -66,18 +66,8 @@ void Postpro3D::write(const Scene3D& scene, const RunState3D& state, const NlgsR
     std::ofstream& out = *s.file;
     switch (c.kind) {
       case PostproKind2D::solver_informations: {
-        // (ES15.8,1X,I8,3(1X,ES14.7),1X,I8): iterations, MeanDVoR, QuadDV, QuadDVR, nb contacts.
-        std::string text;
-        grammar::append_fortran_es(text, t, 15, 8);
-        text += ' ';
-        grammar::append_fortran_i(text, state.contacts.empty() ? 0 : solver.iterations, 8);
-        for (double v : {last_norms_.mean_dvor, last_norms_.quad_dv, last_norms_.quad_dvr}) {
-          text += ' ';
-          grammar::append_fortran_es(text, v, 14, 7);
-        }
-        text += ' ';
-        grammar::append_fortran_i(text, static_cast<std::int64_t>(state.contacts.size()), 8);
-        out << text << '\n';
+        out << solver_informations_line(t, state.contacts.empty() ? 0 : solver.iterations, last_norms_,
+                                        state.contacts.size());
         out.flush();
         break;
       }
