@@ -143,6 +143,10 @@ int main(int argc, char** argv) {
     if (!given("--ymin-boundary")) options.y_min = from_file.y_min;
     if (!given("--xperiod")) options.x_period = from_file.x_period;
     if (!given("--new-rotation-scheme")) options.new_rotation_scheme = from_file.new_rotation_scheme;
+    if (three_d && options.x_period > 0.0) {
+      std::cerr << "lmgc-solve: --xperiod: periodic conditions are not provided for 3D cases yet\n";
+      return kExitUsage;
+    }
   }
   // Diagnostics: errors always, warnings and notes unless --quiet (the run goes on with them).
   const bool color = std::getenv("NO_COLOR") == nullptr && isatty(STDERR_FILENO);

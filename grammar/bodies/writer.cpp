@@ -89,7 +89,9 @@ void append_vertices(std::string& out, const ContactorKind& kind,
     append_continuation(out, kind.offset_labels.data(), v.data(), kind.dimension);
 }
 
-// Face lines: 27 blanks then 3 × (2X,A5,I7,7X) (format 132 of the POLYR writer).
+// Face lines: 27 blanks then 3 × (2X,A5,I7,7X) (format 132 of the POLYR writer); the final 7X
+// writes nothing — gfortran emits no trailing blanks for X at the end of a record (reference
+// BODIES.OUT of Beam_ClusterPR and 100_PR_PerioBox).
 void append_faces(std::string& out, const std::vector<std::array<Integer, 3>>& faces) {
   static constexpr std::string_view kLabels[] = {"ver1=", "ver2=", "ver3="};
   for (const auto& f : faces) {
@@ -98,7 +100,7 @@ void append_faces(std::string& out, const std::vector<std::array<Integer, 3>>& f
       append_blanks(out, 2);
       out += kLabels[k];
       append_fortran_i(out, f[static_cast<std::size_t>(k)].value, 7);
-      append_blanks(out, 7);
+      if (k < 2) append_blanks(out, 7);
     }
     out += '\n';
   }

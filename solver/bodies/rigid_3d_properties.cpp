@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "solver/bodies/polyhedron.hpp"
+
 namespace lmgc::solver {
 namespace {
 
@@ -22,6 +24,8 @@ struct ContactorGeometry {
   Vector3d shift = Vector3d::Zero();
   double centre_weight = 0.0;  // volume in the centre of inertia / total volume (0 for PT3Dx)
   bool modelled = true;
+  std::vector<Vector3d> vertices;  // POLYR, about its centroid in `frame`
+  std::vector<std::array<std::int32_t, 3>> faces;
 };
 
 double ball_volume(double r) {
@@ -49,6 +53,24 @@ ContactorGeometry contactor_geometry(const Rigid3DContactorShape& c, double avrd
     g.frame = c.frame;
     g.shift = c.shift;
     g.centre_weight = g.volume;
+  } else if (c.type == "POLYR") {
+    Polyhedron p;
+    p.vertices = c.vertices;
+    p.faces = c.faces;
+    orient_faces(p.vertices, p.faces);
+    const PolyhedronMass m = polyhedron_mass(p);
+    g.volume = m.volume;
+    g.shift = m.centroid;
+    g.centre_weight = g.volume;
+    if (given_inertia != Vector3d::Zero()) {
+      g.inertia = given_inertia;
+    } else {
+      const PrincipalInertia principal = lmgc_diagonalise33(m.inertia);
+      g.inertia = principal.moments;
+      g.frame = principal.frame;
+    }
+    for (const Vector3d& v : p.vertices) g.vertices.push_back(g.frame.transpose() * (v - m.centroid));
+    g.faces = p.faces;
   } else if (c.type == "PT3Dx") {
     // A ball of radius avrd, 1 when avrd = 0 (mod_RBDY3.f90:902-909); given I-line values are kept
     // where non-zero (mod_RBDY3.f90:812-826, mod_a_BDARY_PT3Dx.f90:67-72); weight 0 in the centre
@@ -147,6 +169,8 @@ RigidBody3DProperties rigid_3d_properties(double density, double avrd, const Vec
     out.frame = g.frame;                // :1019-1022
     out.contactor_shifts.assign(1, Vector3d::Zero());
     out.contactor_frames.assign(1, Matrix3d::Identity());  // :1025
+    out.contactor_vertices.assign(1, g.vertices);
+    out.contactor_faces.assign(1, g.faces);
   } else {
     // mod_RBDY3.f90:1032-1052: centre of inertia and total volume.
     Vector3d og = Vector3d::Zero();
@@ -164,6 +188,7 @@ RigidBody3DProperties rigid_3d_properties(double density, double avrd, const Vec
     for (const auto& g : parts) {
       out.contactor_shifts.push_back(g.shift - og);  // :1068-1071
       out.contactor_frames.push_back(g.frame);
+      out.contactor_faces.push_back(g.faces);
     }
 
     if (given_inertia != Vector3d::Zero()) {
@@ -197,9 +222,17 @@ RigidBody3DProperties rigid_3d_properties(double density, double avrd, const Vec
       out.frame = p.frame;                                // :1169-1172
       for (std::size_t i = 0; i < parts.size(); ++i) {
         out.contactor_shifts[i] = p.frame.transpose() * out.contactor_shifts[i];  // :1175-1181
-        if (contactors[i].type == "PLANx")
+        if (contactors[i].type == "PLANx" || contactors[i].type == "POLYR")
           out.contactor_frames[i] = p.frame.transpose() * parts[i].frame;  // :1219-1224
       }
+    }
+    // POLYR vertices in the body frame (about their contactor's centroid); the embedded frame of a
+    // POLYR is then the identity.
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      std::vector<Vector3d> vertices;
+      for (const Vector3d& v : parts[i].vertices) vertices.push_back(out.contactor_frames[i] * v);
+      out.contactor_vertices.push_back(std::move(vertices));
+      if (contactors[i].type == "POLYR") out.contactor_frames[i].setIdentity();
     }
   }
 

@@ -14,6 +14,10 @@
 //      PLANx: V = 8 a1 a2 a3, I1 = V(a2²+a3²)/3, I2 = V(a1²+a3²)/3, I3 = V(a1²+a2²)/3 in its embedded
 //        frame (`localframe` α β γ columns, identity by default), shift = the localframe coo1..3
 //        (mod_a_BDARY_PLANx.f90:82-86, :96-128).
+//      POLYR: the exact volume integrals of its closed surface (faces reoriented first), about its
+//        centroid, diagonalised by diagonalise33 unless the I-line gives the moments; shift = the
+//        centroid, frame = the principal frame, vertices re-expressed in it about the centroid
+//        (mod_a_BDARY_POLYR.f90:59-156, mod_DiscreteGeometry compute_mechanical_properties_surface_T3).
 //      PT3Dx: a ball of radius avrd (1 when avrd = 0): V = 4/3 π ρ³, I = 2/5 ρ² V (given I-line values
 //        kept where non-zero); it weighs 0 in the centre of inertia and the total volume of a cluster
 //        but its V and I enter the cluster's inertia tensor (:902-917, :1044, :1144;
@@ -37,7 +41,9 @@
 //  - π is LMGC90's PI_g, a default-real (single precision) literal: 3.1415927410125732
 //    (shared/mod_overall.f90:358).
 #include <Eigen/Core>
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -57,6 +63,8 @@ struct Rigid3DContactorShape {
                                                         // PT3Dx coo1..3: offset from the BODIES.DAT node
   Eigen::Vector3d half_axes = Eigen::Vector3d::Zero();  // PLANx axe1..3
   Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();  // PLANx localframe (columns α, β, γ)
+  std::vector<Eigen::Vector3d> vertices;                // POLYR: from the BODIES.DAT node, input axes
+  std::vector<std::array<std::int32_t, 3>> faces;       // POLYR: 0-based vertex ids
 };
 
 struct RigidBody3DProperties {
@@ -69,6 +77,10 @@ struct RigidBody3DProperties {
   Eigen::Vector3d geometric_inertia = Eigen::Vector3d::Zero();  // inertia / Umas (BODIES.OUT I-line)
   std::vector<Eigen::Vector3d> contactor_shifts;  // per contactor: offset from the centre, body frame
   std::vector<Eigen::Matrix3d> contactor_frames;  // per contactor: embedded frame in the body frame
+  // POLYR: vertices about the contactor's own centroid in the body frame, and its faces after
+  // LMGC90's reorientation (empty for the other types).
+  std::vector<std::vector<Eigen::Vector3d>> contactor_vertices;
+  std::vector<std::vector<std::array<std::int32_t, 3>>> contactor_faces;
   bool frame_is_placeholder = false;   // I-line given with several contactors: identity, DOF.INI expected
   std::size_t ignored_contactors = 0;  // contactors of a type not modelled here
 };

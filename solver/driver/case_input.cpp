@@ -108,7 +108,20 @@ bool prepare_run_3d(const validate::CaseFiles& files, Scene3D& scene, RunOutputs
   if (files.bulk_behav->has_gravity)
     input.gravity = Eigen::Vector3d(files.bulk_behav->gravity[0].value, files.bulk_behav->gravity[1].value,
                                     files.bulk_behav->gravity[2].value);
-  if (!build_scene_3d(input, scene, sink)) return false;
+  bool ok = build_scene_3d(input, scene, sink);
+  // Periodic conditions and the source point act on RBDY3 detection and stepping; running without
+  // them would compute another scene, so the case is refused until they are provided.
+  if (files.command)
+    for (const grammar::CommandLine& line : files.command->lines)
+      if (line.kind == grammar::CommandLineKind::keyword &&
+          (line.keyword == "PERIODIC CONDITION" || line.keyword == "XPERIODIC CONDITION" ||
+           line.keyword == "YPERIODIC CONDITION" || line.keyword == "INIT SOURCE POINT" ||
+           line.keyword == "FD INIT SOURCE POINT")) {
+        sink.report("L4001", grammar::Location{datbox_path(files, "COMMAND.DAT"), line.text.span},
+                    "'" + line.keyword + "' is not provided by the rigid 3D solver yet");
+        ok = false;
+      }
+  if (!ok) return false;
   outputs.case_dir = files.case_dir;
   outputs.postpro = postpro_commands_2d(files, sink, /*three_d=*/true);
   if (files.vloc_rloc_ini) outputs.warm_start = &*files.vloc_rloc_ini;
@@ -151,25 +164,13 @@ std::vector<validate::OutputFile> echo_files_3d(const validate::CaseFiles& files
   std::vector<validate::OutputFile> out = validate::echo_files(files);
   if (!files.bodies) return out;
   // BODIES.OUT after LMGC90's RBDY3 pre-computations (mod_RBDY3): the node moved to the centre of
-  // inertia, avrd and the per-density principal inertia filled in, SPHEb offsets from the centre.
+  // inertia, avrd and the per-density principal inertia filled in, SPHEb offsets from the centre,
+  // POLYR vertices in the principal frame.
   grammar::BodiesFile bodies = *files.bodies;
   for (grammar::Body& body : bodies.bodies) {
     if (body.type != grammar::BodyType::rbdy3 || !body.rigid_bulk || body.nodes.empty()) continue;
     std::vector<Rigid3DContactorShape> shapes;
-    std::vector<grammar::Contactor*> spheres_with_offset;
-    for (grammar::Contactor& t : body.contactors) {
-      const auto value = [&](std::size_t i) { return i < t.values.size() ? t.values[i].value : 0.0; };
-      Rigid3DContactorShape shape;
-      shape.type = t.type.value;
-      if (shape.type == "SPHER" || shape.type == "SPHEb") {
-        shape.radius = value(0);
-        if (shape.type == "SPHEb") shape.shift = Eigen::Vector3d(value(1), value(2), value(3));
-      } else if (shape.type == "PLANx") {
-        shape.half_axes = Eigen::Vector3d(value(0), value(1), value(2));
-      }
-      shapes.push_back(shape);
-      spheres_with_offset.push_back(shape.type == "SPHEb" && t.values.size() >= 4 ? &t : nullptr);
-    }
+    for (const grammar::Contactor& t : body.contactors) shapes.push_back(rigid_3d_shape(t));
     grammar::RigidBulk& bulk = *body.rigid_bulk;
     RigidBody3DProperties p;
     try {
@@ -187,10 +188,23 @@ std::vector<validate::OutputFile> echo_files_3d(const validate::CaseFiles& files
     auto& node = body.nodes.front().coordinates;
     for (std::size_t k = 0; k < 3 && k < node.size(); ++k)
       node[k].value += p.centre_shift(static_cast<int>(k));
-    for (std::size_t k = 0; k < spheres_with_offset.size(); ++k)
-      if (spheres_with_offset[k])
+    for (std::size_t k = 0; k < body.contactors.size(); ++k) {
+      grammar::Contactor& t = body.contactors[k];
+      if (t.type.value == "SPHEb" && t.values.size() >= 4)
         for (int d = 0; d < 3; ++d)
-          spheres_with_offset[k]->values[static_cast<std::size_t>(d + 1)].value = p.contactor_shifts[k](d);
+          t.values[static_cast<std::size_t>(d + 1)].value = p.contactor_shifts[k](d);
+      // POLYR: vertices about the centre of inertia in the principal frame, faces reoriented
+      // (write_BDARY_POLYR writes shift + local vertex).
+      if (t.type.value == "POLYR" && p.contactor_vertices[k].size() == t.vertices.size() &&
+          p.contactor_faces[k].size() == t.faces.size()) {
+        for (std::size_t v = 0; v < t.vertices.size(); ++v)
+          for (int d = 0; d < 3; ++d)
+            t.vertices[v][static_cast<std::size_t>(d)].value =
+                p.contactor_shifts[k](d) + p.contactor_vertices[k][v](d);
+        for (std::size_t f = 0; f < t.faces.size(); ++f)
+          for (std::size_t d = 0; d < 3; ++d) t.faces[f][d].value = p.contactor_faces[k][f][d] + 1;
+      }
+    }
   }
   for (validate::OutputFile& file : out)
     if (file.relative_path == "OUTBOX/BODIES.OUT") file.content = grammar::write_bodies(bodies);

@@ -4,12 +4,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <random>
 #include <span>
 
 #include "solver/detection/pair_geometry_3d.hpp"
+#include "solver/detection/polyhedron_contact.hpp"
 #include "solver/nlgs/local_solver_3d.hpp"
 #include "spatial/multilevel_grid.hpp"
 
@@ -26,6 +28,14 @@ struct Overloaded : Ts... {
 };
 template <class... Ts>
 Overloaded(Ts...) -> Overloaded<Ts...>;
+
+// Cap of Cundall's common-plane search (mod_PRPRx's default `cundall_iter`; the search usually
+// ends earlier, when its tilt angle falls below 0.0017 rad).
+constexpr int kCundallIterations = 100;
+
+// recup_rloc_PRPRx: a PRPRx point takes the previous step's reaction of the point of the same pair
+// closer than 1e-3 (squared 1e-6, `tol_recup_rloc`), both seen from the candidate body.
+constexpr double kRecupSquaredDistance = 1e-6;
 
 // SPHEb is a sphere of a cluster: TACT_BEHAV.DAT rows name it SPHER.
 std::string_view seen_as(const std::string& type) {
@@ -226,26 +236,44 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     }
     return -1;
   };
+  // POLYR vertices and face normals at the detection configuration, one flat array each.
+  std::vector<PlacedPolyhedron> placed_polyhedron(n);
+  std::vector<Vector3d> polyhedron_vertices, polyhedron_normals;
+  std::vector<std::size_t> vertex_offset(n + 1, 0), normal_offset(n + 1, 0);
+  double smallest_polyhedron = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Contactor3D& c = scene.contactors[k];
+    vertex_offset[k + 1] = vertex_offset[k];
+    normal_offset[k + 1] = normal_offset[k];
+    if (c.shape != ContactorShape3D::polyhedron) continue;
+    const Polyhedron& shape = scene.polyhedra[static_cast<std::size_t>(c.polyhedron)];
+    const Matrix3d& frame = b.frame_detection[static_cast<std::size_t>(c.body)];
+    for (const Vector3d& v : shape.vertices) polyhedron_vertices.push_back(centre[k] + frame * v);
+    for (const Vector3d& normal : shape.face_normals) polyhedron_normals.push_back(frame * normal);
+    vertex_offset[k + 1] += shape.vertices.size();
+    normal_offset[k + 1] += shape.face_normals.size();
+    smallest_polyhedron = std::min(smallest_polyhedron, shape.radius);
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const Contactor3D& c = scene.contactors[k];
+    if (c.shape != ContactorShape3D::polyhedron) continue;
+    PlacedPolyhedron& p = placed_polyhedron[k];
+    p.shape = &scene.polyhedra[static_cast<std::size_t>(c.polyhedron)];
+    p.vertices = std::span<const Vector3d>(polyhedron_vertices)
+                     .subspan(vertex_offset[k], vertex_offset[k + 1] - vertex_offset[k]);
+    p.normals = std::span<const Vector3d>(polyhedron_normals)
+                    .subspan(normal_offset[k], normal_offset[k + 1] - normal_offset[k]);
+    p.centre = centre[k];
+    p.radius = c.bounding_radius;
+  }
+
   std::vector<Interaction3D> found;
-  const auto fine = [&](std::size_t i, std::size_t j) {
+  // One interaction per contact point: local frame rows (t, n, s), lever rows, Delassus block.
+  const auto add_point = [&](std::size_t i, std::size_t j, int row, const Vector3d& t, const Vector3d& normal,
+                             const Vector3d& s, const Vector3d& point, double gap, int vertex) {
     const Contactor3D& cd = scene.contactors[i];
     const Contactor3D& an = scene.contactors[j];
-    if (cd.body == an.body || cd.shape == ContactorShape3D::plane) return false;
-    const int row = row_of(cd, an);
-    if (row < 0) return false;
     const Visibility3D& v = scene.visibility[static_cast<std::size_t>(row)];
-    ContactGeometry3D g;
-    bool hit = false;
-    if (an.shape == ContactorShape3D::sphere) {
-      hit = detect_sphere_sphere(centre[i], cd.radius, centre[j], an.radius, v.alert, g);
-    } else {
-      // LMGC90's PLANx frame is (T, S, N) = (e1, -e2, e3) of the body axes times the contactor's
-      // frame (mod_SPPLx).
-      Matrix3d axes = b.frame_detection[static_cast<std::size_t>(an.body)] * an.local_frame;
-      axes.col(1) = -axes.col(1);
-      hit = detect_sphere_plane(centre[i], cd.radius, centre[j], axes, an.half_axes, v.alert, g);
-    }
-    if (!hit) return true;
     Interaction3D c;
     c.family = v.family;
     c.candidate = static_cast<std::int32_t>(i);
@@ -254,22 +282,61 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     c.antagonist_body = an.body;
     c.law = v.law;
     c.visibility = row;
-    c.frame.row(0) = g.tangent.transpose();
-    c.frame.row(1) = g.normal.transpose();
-    c.frame.row(2) = g.second_tangent.transpose();
-    c.point = g.point;
-    c.gap_begin = g.gap;
+    c.vertex = vertex;
+    c.frame.row(0) = t.transpose();
+    c.frame.row(1) = normal.transpose();
+    c.frame.row(2) = s.transpose();
+    c.point = point;
+    c.gap_begin = gap;
     for (int side = 0; side < 2; ++side) {
       const auto body = static_cast<std::size_t>(side == 0 ? cd.body : an.body);
-      const Vector3d lever = g.point - body_centre[body];
+      const Vector3d lever = point - body_centre[body];
       Matrix3d& G = side == 0 ? c.lever_candidate : c.lever_antagonist;
       for (int k = 0; k < 3; ++k)
         G.row(k) =
             (b.frame_detection[body].transpose() * lever.cross(c.frame.row(k).transpose())).transpose();
     }
+    c.candidate_point = b.frame_detection[static_cast<std::size_t>(cd.body)].transpose() *
+                        (point - body_centre[static_cast<std::size_t>(cd.body)]);
     c.velocity_begin = local_velocity(c, b.velocity_begin);
     c.W = delassus_block(c, b);
     found.push_back(c);
+  };
+  const auto fine = [&](std::size_t i, std::size_t j) {
+    const Contactor3D& cd = scene.contactors[i];
+    const Contactor3D& an = scene.contactors[j];
+    if (cd.body == an.body || cd.shape == ContactorShape3D::plane) return false;
+    const int row = row_of(cd, an);
+    if (row < 0) return false;
+    const Visibility3D& v = scene.visibility[static_cast<std::size_t>(row)];
+    // LMGC90's PLANx frame is (T, S, N) = (e1, -e2, e3) of the body axes times the contactor's
+    // frame (mod_SPPLx, mod_PRPLx).
+    const auto plane_axes = [&] {
+      Matrix3d axes = b.frame_detection[static_cast<std::size_t>(an.body)] * an.local_frame;
+      axes.col(1) = -axes.col(1);
+      return axes;
+    };
+    if (v.family == PairFamily3D::SPSPx || v.family == PairFamily3D::SPPLx) {
+      ContactGeometry3D g;
+      const bool hit =
+          v.family == PairFamily3D::SPSPx
+              ? detect_sphere_sphere(centre[i], cd.radius, centre[j], an.radius, v.alert, g)
+              : detect_sphere_plane(centre[i], cd.radius, centre[j], plane_axes(), an.half_axes, v.alert, g);
+      if (hit) add_point(i, j, row, g.tangent, g.normal, g.second_tangent, g.point, g.gap, 0);
+      return true;
+    }
+    PolyhedronContact g;
+    const bool hit =
+        v.family == PairFamily3D::PRPLx
+            ? detect_polyhedron_plane(placed_polyhedron[i], centre[j], plane_axes(), an.half_axes, v.alert, g)
+            : detect_polyhedron_polyhedron(placed_polyhedron[i], placed_polyhedron[j], v.alert,
+                                           smallest_polyhedron, kCundallIterations, g);
+    if (hit)
+      for (int k = 0; k < g.count; ++k) {
+        const auto m = static_cast<std::size_t>(k);
+        add_point(i, j, row, g.tangent, g.normal, g.second_tangent, g.points[m], g.gaps[m],
+                  v.family == PairFamily3D::PRPLx ? g.vertices[m] + 1 : 0);
+      }
     return true;
   };
   spatial::MultilevelGrid grid;
@@ -279,25 +346,33 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     if (!fine(std::min(i, j), std::max(i, j))) fine(std::max(i, j), std::min(i, j));
   });
   // LMGC90 writes and sweeps interactions family by family, then by candidate.
-  std::sort(found.begin(), found.end(), [](const Interaction3D& x, const Interaction3D& y) {
+  std::stable_sort(found.begin(), found.end(), [](const Interaction3D& x, const Interaction3D& y) {
     return std::tie(x.family, x.candidate, x.antagonist) < std::tie(y.family, y.candidate, y.antagonist);
   });
   state.contacts = std::move(found);
 }
 
 void recup_rloc(RunState3D& state) {
-  std::map<std::pair<std::int32_t, std::int32_t>, const Interaction3D*> previous;
-  for (const Interaction3D& p : state.previous) previous[{p.candidate, p.antagonist}] = &p;
+  // Key: the contactor pair and, for PRPLx, the candidate vertex; PRPRx points of a pair are then
+  // told apart by position (numerics.md §4, recup_rloc_PRPRx / recup_rloc_PRPLx).
+  std::multimap<std::tuple<std::int32_t, std::int32_t, std::int32_t>, const Interaction3D*> previous;
+  for (const Interaction3D& p : state.previous)
+    previous.emplace(std::tuple(p.candidate, p.antagonist, p.vertex), &p);
   for (Interaction3D& c : state.contacts) {
-    const auto it = previous.find({c.candidate, c.antagonist});
-    if (it == previous.end()) {
+    const Interaction3D* match = nullptr;
+    const auto [first, last] = previous.equal_range(std::tuple(c.candidate, c.antagonist, c.vertex));
+    for (auto it = first; it != last && !match; ++it)
+      if (c.family != PairFamily3D::PRPRx ||
+          (it->second->candidate_point - c.candidate_point).squaredNorm() < kRecupSquaredDistance)
+        match = it->second;
+    if (!match) {
       c.r.setZero();
       c.status_begin = ContactStatus::nknow;
       continue;
     }
-    c.r = it->second->r;
-    c.status_begin = it->second->status;
-    c.internal = it->second->internal;
+    c.r = match->r;
+    c.status_begin = match->status;
+    c.internal = match->internal;
   }
 }
 

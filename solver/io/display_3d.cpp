@@ -11,6 +11,7 @@ using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
 constexpr int kVtkVertex = 1;
+constexpr int kVtkTriangle = 5;
 constexpr int kVtkHexahedron = 12;
 
 // The drawn points of every contactor at the end of the step, and which contactor owns each.
@@ -32,6 +33,18 @@ BodyPoints body_points(const Scene3D& scene) {
       out.points.push_back(centre);
       out.owner.push_back(k);
       out.types.push_back(kVtkVertex);
+    } else if (c.shape == ContactorShape3D::polyhedron) {
+      // One triangle cell per face (its own three points: the connectivity is sequential).
+      const Polyhedron& shape = scene.polyhedra[static_cast<std::size_t>(c.polyhedron)];
+      for (const auto& face : shape.faces) {
+        for (std::int32_t v : face) {
+          out.points.push_back(centre + b.frame[i] * shape.vertices[static_cast<std::size_t>(v)]);
+          out.owner.push_back(k);
+        }
+        out.types.push_back(kVtkTriangle);
+        out.offsets.push_back(out.points.size());
+      }
+      continue;
     } else {
       // Box of half-axes (axe1, axe2, axe3) along the plane's world axes; VTK_HEXAHEDRON order:
       // the face at -axe3 counter-clockwise about +axe3, then the face at +axe3.

@@ -44,14 +44,39 @@ grammar::DofFile dof_file_3d(const Scene3D& scene, const RunState3D& state) {
 
 namespace {
 
+constexpr std::string_view kFamilyNames[kPairFamily3DCount] = {"SPSPx", "SPPLx", "PRPRx", "PRPLx"};
+
 std::string_view family_name(PairFamily3D f) {
-  return f == PairFamily3D::SPPLx ? "SPPLx" : "SPSPx";
+  return kFamilyNames[static_cast<int>(f)];
+}
+
+// The family a Vloc_Rloc block type names; false for the others.
+bool family_of_name(std::string_view name, PairFamily3D& family) {
+  for (int k = 0; k < kPairFamily3DCount; ++k)
+    if (kFamilyNames[k] == name) {
+      family = static_cast<PairFamily3D>(k);
+      return true;
+    }
+  return false;
+}
+
+// PRPRx and PRPLx carry the CDVER integer after the candidate's rank.
+bool has_vertex_column(PairFamily3D f) {
+  return f == PairFamily3D::PRPRx || f == PairFamily3D::PRPLx;
 }
 
 // The contactor type LMGC90's contact modules write: spheres of clusters (SPHEb) belong to the
 // SPHER module and are written SPHER (1_ClusterSP_2_PL reference files).
 std::string_view written_type(const Contactor3D& c) {
-  return c.shape == ContactorShape3D::sphere ? std::string_view("SPHER") : std::string_view("PLANx");
+  switch (c.shape) {
+    case ContactorShape3D::sphere:
+      return "SPHER";
+    case ContactorShape3D::plane:
+      return "PLANx";
+    case ContactorShape3D::polyhedron:
+      return "POLYR";
+  }
+  return "PLANx";
 }
 
 // Index (t, n, s) storage of the local component a label letter names.
@@ -87,8 +112,9 @@ grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& 
   std::int64_t spheres = 0;
   for (std::size_t k = 0; k < scene.contactors.size(); ++k)
     if (scene.contactors[k].shape == ContactorShape3D::sphere) sphere_serial[k] = ++spheres;
-  // LMGC90's 3D module order (state-and-outputs.md §1.1): ... SPPLx, SPPRx, SPSPx.
-  constexpr PairFamily3D kWriteOrder[] = {PairFamily3D::SPPLx, PairFamily3D::SPSPx};
+  // LMGC90's 3D module order (state-and-outputs.md §1.1): ... PRPLx, PRPRx, ... SPPLx, SPPRx, SPSPx.
+  constexpr PairFamily3D kWriteOrder[] = {PairFamily3D::PRPLx, PairFamily3D::PRPRx, PairFamily3D::SPPLx,
+                                          PairFamily3D::SPSPx};
   for (PairFamily3D family : kWriteOrder) {
     std::vector<std::size_t> members;
     for (std::size_t k = 0; k < state.contacts.size(); ++k)
@@ -110,11 +136,15 @@ grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& 
       out.type = Word{std::string(kind->type)};
       out.number = Integer{static_cast<std::int64_t>(m + 1)};
       out.title = std::string(kind->title);
-      // Data line: the CDVER column is blank (9X) in both modules; SPSPx ends with iantac.
+      // Data line: the CDVER column is blank (9X) for spheres, an integer for polyhedra (the
+      // PRPLx vertex, 0 for PRPRx); SPSPx ends with iantac.
       out.words = {
           Word{"RBDY3"}, Word{std::string(written_type(cd))}, Word{law.nickname},
           Word{"RBDY3"}, Word{std::string(written_type(an))}, Word{std::string(status_name(c.status))}};
-      out.integers = {Integer{cd.body + 1}, Integer{cd.rank}, Integer{an.body + 1}, Integer{an.rank}};
+      out.integers = {Integer{cd.body + 1}, Integer{cd.rank}};
+      if (has_vertex_column(family)) out.integers.push_back(Integer{c.vertex});
+      out.integers.push_back(Integer{an.body + 1});
+      out.integers.push_back(Integer{an.rank});
       if (family == PairFamily3D::SPSPx)
         out.integers.push_back(Integer{sphere_serial[static_cast<std::size_t>(c.antagonist)]});
       for (const grammar::VectorLineKind& line : kind->vectors) {
@@ -150,24 +180,23 @@ std::vector<Interaction3D> warm_start_3d(const grammar::VlocRlocFile& file, cons
   std::vector<Interaction3D> previous;
   for (const auto& b : file.interactions) {
     PairFamily3D family;
-    if (b.type.value == "SPSPx")
-      family = PairFamily3D::SPSPx;
-    else if (b.type.value == "SPPLx")
-      family = PairFamily3D::SPPLx;
-    else
-      continue;
+    if (!family_of_name(b.type.value, family)) continue;
     const auto& n = b.integers;
-    if (n.size() < 4) continue;
+    const std::size_t an_at = has_vertex_column(family) ? 3 : 2;
+    if (n.size() < an_at + 2) continue;
     const auto cd = by_rank.find({n[0].value, n[1].value});
-    const auto an = by_rank.find({n[2].value, n[3].value});
+    const auto an = by_rank.find({n[an_at].value, n[an_at + 1].value});
     if (cd == by_rank.end() || an == by_rank.end()) continue;
     const Contactor3D& candidate = scene.contactors[static_cast<std::size_t>(cd->second)];
     const Contactor3D& antagonist = scene.contactors[static_cast<std::size_t>(an->second)];
-    const ContactorShape3D antagonist_shape =
-        family == PairFamily3D::SPPLx ? ContactorShape3D::plane : ContactorShape3D::sphere;
-    if (candidate.shape != ContactorShape3D::sphere || antagonist.shape != antagonist_shape) continue;
+    PairFamily3D expected;
+    if (!pair_family_3d(std::string(written_type(candidate)), std::string(written_type(antagonist)),
+                        expected) ||
+        expected != family)
+      continue;
     Interaction3D c;
     c.family = family;
+    if (has_vertex_column(family)) c.vertex = static_cast<std::int32_t>(n[2].value);
     c.candidate = cd->second;
     c.antagonist = an->second;
     c.candidate_body = candidate.body;
@@ -184,7 +213,14 @@ std::vector<Interaction3D> warm_start_3d(const grammar::VlocRlocFile& file, cons
           c.r(local_index(label[2])) = line.values[k].value * h;
         else if (label.starts_with("vl"))
           c.u(local_index(label[2])) = line.values[k].value;
+        else if (label.starts_with("coo"))
+          c.point(std::clamp(label[3] - '1', 0, 2)) = line.values[k].value;
       }
+    // PRPRx's warm-start key: the point about the candidate's centre in its frame, as read.
+    const auto body = static_cast<std::size_t>(candidate.body);
+    c.candidate_point =
+        scene.bodies.frame_initial[body].transpose() *
+        (c.point - scene.bodies.reference[body] - scene.bodies.displacement_begin[body].head<3>());
     if (!b.words.empty()) status_from_name(b.words.back().value, c.status);
     c.status_begin = c.status;
     std::size_t k = 0;
@@ -193,7 +229,7 @@ std::vector<Interaction3D> warm_start_3d(const grammar::VlocRlocFile& file, cons
         if (k < c.internal.size()) c.internal[k++] = v.value;
     previous.push_back(c);
   }
-  std::sort(previous.begin(), previous.end(), [](const Interaction3D& a, const Interaction3D& b) {
+  std::stable_sort(previous.begin(), previous.end(), [](const Interaction3D& a, const Interaction3D& b) {
     return std::tie(a.family, a.candidate, a.antagonist) < std::tie(b.family, b.candidate, b.antagonist);
   });
   return previous;

@@ -21,6 +21,34 @@ bool provided_in_3d(const ContactLaw& law) {
 }
 }  // namespace
 
+Rigid3DContactorShape rigid_3d_shape(const grammar::Contactor& t) {
+  const auto value = [&](std::size_t i) { return i < t.values.size() ? t.values[i].value : 0.0; };
+  Rigid3DContactorShape shape;
+  shape.type = t.type.value;
+  if (shape.type == "SPHER" || shape.type == "SPHEb") {
+    shape.radius = value(0);
+    if (shape.type == "SPHEb") shape.shift = Vector3d(value(1), value(2), value(3));
+  } else if (shape.type == "PLANx") {
+    shape.half_axes = Vector3d(value(0), value(1), value(2));
+    if (!t.frame.empty()) {
+      const grammar::LocalFrame& f = t.frame.front();
+      for (int k = 0; k < 3; ++k) {
+        shape.frame(k, 0) = f.alpha[static_cast<std::size_t>(k)].value;
+        shape.frame(k, 1) = f.beta[static_cast<std::size_t>(k)].value;
+        shape.frame(k, 2) = f.gamma[static_cast<std::size_t>(k)].value;
+        shape.shift(k) = f.shift[static_cast<std::size_t>(k)].value;
+      }
+    }
+  } else if (shape.type == "POLYR") {
+    for (const auto& v : t.vertices) shape.vertices.emplace_back(v[0].value, v[1].value, v[2].value);
+    for (const auto& f : t.faces)
+      shape.faces.push_back({static_cast<std::int32_t>(f[0].value - 1),
+                             static_cast<std::int32_t>(f[1].value - 1),
+                             static_cast<std::int32_t>(f[2].value - 1)});
+  }
+  return shape;
+}
+
 bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticSink& sink) {
   bool ok = true;
   scene = Scene3D{};
@@ -42,37 +70,25 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
     std::int32_t rank = 0;
     bool unsupported = false;  // reported once, at the contactor; the body is not sized then
     for (const grammar::Contactor& t : body.contactors) {
-      const auto value = [&](std::size_t i) { return i < t.values.size() ? t.values[i].value : 0.0; };
       Contactor3D c;
       c.body = index;
       c.rank = ++rank;
       c.type = t.type.value;
       c.color = t.color.value;
-      Rigid3DContactorShape shape;
-      shape.type = c.type;
+      const Rigid3DContactorShape shape = rigid_3d_shape(t);
       if (c.type == "SPHER" || c.type == "SPHEb") {
         c.shape = ContactorShape3D::sphere;
-        c.radius = value(0);
-        if (c.type == "SPHEb") c.shift = Vector3d(value(1), value(2), value(3));
+        c.radius = shape.radius;
+        c.shift = shape.shift;
         c.bounding_radius = c.radius;
-        shape.radius = c.radius;
-        shape.shift = c.shift;
       } else if (c.type == "PLANx") {
         c.shape = ContactorShape3D::plane;
-        c.half_axes = Vector3d(value(0), value(1), value(2));
-        if (!t.frame.empty()) {
-          const grammar::LocalFrame& f = t.frame.front();
-          for (int k = 0; k < 3; ++k) {
-            c.local_frame(k, 0) = f.alpha[static_cast<std::size_t>(k)].value;
-            c.local_frame(k, 1) = f.beta[static_cast<std::size_t>(k)].value;
-            c.local_frame(k, 2) = f.gamma[static_cast<std::size_t>(k)].value;
-            c.shift(k) = f.shift[static_cast<std::size_t>(k)].value;
-          }
-        }
+        c.half_axes = shape.half_axes;
+        c.local_frame = shape.frame;
+        c.shift = shape.shift;
         c.bounding_radius = c.half_axes.norm();
-        shape.half_axes = c.half_axes;
-        shape.shift = c.shift;
-        shape.frame = c.local_frame;
+      } else if (c.type == "POLYR") {
+        c.shape = ContactorShape3D::polyhedron;
       } else {
         sink.report("L4001", grammar::Location{in.bodies_path, t.type.span},
                     "contactor '" + c.type + "' is not handled by the rigid 3D solver yet");
@@ -113,6 +129,15 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
       Contactor3D& c = contactors[k];
       c.shift = p.contactor_shifts[k];
       if (c.shape == ContactorShape3D::plane) c.local_frame = p.contactor_frames[k];
+      if (c.shape == ContactorShape3D::polyhedron) {
+        Polyhedron shape;
+        shape.vertices = p.contactor_vertices[k];
+        shape.faces = p.contactor_faces[k];
+        finish_polyhedron(shape);
+        c.bounding_radius = shape.radius;
+        c.polyhedron = static_cast<std::int32_t>(scene.polyhedra.size());
+        scene.polyhedra.push_back(std::move(shape));
+      }
       scene.contactors.push_back(c);
     }
   }
@@ -131,14 +156,13 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
     v.antagonist_type = see.antagonist_contactor.value == "SPHEb" ? "SPHER" : see.antagonist_contactor.value;
     v.antagonist_color = see.antagonist_colour.value;
     v.alert = see.alert.value;
-    if (v.candidate_type != "SPHER" || (v.antagonist_type != "SPHER" && v.antagonist_type != "PLANx")) {
+    if (!pair_family_3d(v.candidate_type, v.antagonist_type, v.family)) {
       sink.report("L4001", grammar::Location{in.tact_behav_path, see.candidate_contactor.span},
                   "pair " + v.candidate_type + "/" + v.antagonist_type +
                       " is not detected by the rigid 3D solver yet");
       ok = false;
       continue;
     }
-    v.family = v.antagonist_type == "PLANx" ? PairFamily3D::SPPLx : PairFamily3D::SPSPx;
     bool found = false;
     for (std::size_t k = 0; k < in.tact_behav->laws.size(); ++k) {
       const grammar::TactLaw& card = in.tact_behav->laws[k];

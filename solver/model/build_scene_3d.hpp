@@ -9,6 +9,7 @@
 #include "grammar/dof/ast.hpp"
 #include "grammar/drv_dof/ast.hpp"
 #include "grammar/tact_behav/ast.hpp"
+#include "solver/bodies/rigid_3d_properties.hpp"
 #include "solver/model/scene_3d.hpp"
 
 namespace lmgc::solver {
@@ -24,8 +25,12 @@ struct SceneInput3D {
   std::string bodies_path, tact_behav_path, drv_dof_path;
 };
 
+// The geometry of one RBDY3 contactor as BODIES.DAT gives it (SPHER, SPHEb, PLANx, POLYR; other
+// types keep only their type), for the mass-property computation and the BODIES.OUT echo.
+Rigid3DContactorShape rigid_3d_shape(const grammar::Contactor& contactor);
+
 // Returns false (with diagnostics) when the case uses something the rigid 3D solver does not
-// provide yet (a contactor other than SPHER/SPHEb/PLANx, a law it does not solve).
+// provide yet (a contactor other than SPHER/SPHEb/PLANx/POLYR, a law it does not solve).
 bool build_scene_3d(const SceneInput3D& input, Scene3D& scene, grammar::DiagnosticSink& sink);
 
 }  // namespace lmgc::solver

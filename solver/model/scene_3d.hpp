@@ -8,17 +8,35 @@
 #include <string>
 #include <vector>
 
+#include "solver/bodies/polyhedron.hpp"
 #include "solver/bodies/rigid_bodies_3d.hpp"
 #include "solver/model/contact_status.hpp"
 #include "solver/model/scene_2d.hpp"  // NamedLaw, DrivenDof2D (dimension-free parts)
 
 namespace lmgc::solver {
 
-enum class ContactorShape3D : std::uint8_t { sphere, plane };
+enum class ContactorShape3D : std::uint8_t { sphere, plane, polyhedron };
 
 // 3D interaction families, in LMGC90's sweep order for these contactors.
-enum class PairFamily3D : std::uint8_t { SPSPx, SPPLx };
-inline constexpr int kPairFamily3DCount = 2;
+enum class PairFamily3D : std::uint8_t { SPSPx, SPPLx, PRPRx, PRPLx };
+inline constexpr int kPairFamily3DCount = 4;
+
+// The family of a (candidate, antagonist) contactor type pair as `$seety` names them; false for
+// pairs the rigid 3D solver does not detect.
+inline bool pair_family_3d(const std::string& candidate, const std::string& antagonist,
+                           PairFamily3D& family) {
+  if (candidate == "SPHER" && antagonist == "SPHER")
+    family = PairFamily3D::SPSPx;
+  else if (candidate == "SPHER" && antagonist == "PLANx")
+    family = PairFamily3D::SPPLx;
+  else if (candidate == "POLYR" && antagonist == "POLYR")
+    family = PairFamily3D::PRPRx;
+  else if (candidate == "POLYR" && antagonist == "PLANx")
+    family = PairFamily3D::PRPLx;
+  else
+    return false;
+  return true;
+}
 
 struct Contactor3D {
   ContactorShape3D shape = ContactorShape3D::sphere;
@@ -30,6 +48,7 @@ struct Contactor3D {
   Eigen::Matrix3d local_frame = Eigen::Matrix3d::Identity();  // PLANx axes (T, S, N) in body axes
   double radius = 0.0;                                        // SPHER, SPHEb
   Eigen::Vector3d half_axes = Eigen::Vector3d::Zero();        // PLANx axe1, axe2, axe3
+  std::int32_t polyhedron = -1;                               // POLYR: index into Scene3D::polyhedra
   double bounding_radius = 0.0;
 };
 
@@ -60,6 +79,11 @@ struct Interaction3D {
   ContactStatus status = ContactStatus::nknow;
   ContactStatus status_begin = ContactStatus::nknow;
   std::array<double, 6> internal{};
+  // PRPLx: the candidate vertex (1-based, Vloc_Rloc's CDVER); PRPRx: 0. Warm start key of PRPLx.
+  std::int32_t vertex = 0;
+  // The contact point about the candidate's centre in its frame: PRPRx's warm-start key
+  // (recup_rloc_PRPRx matches points closer than 1e-3).
+  Eigen::Vector3d candidate_point = Eigen::Vector3d::Zero();
 
   Eigen::Matrix3d W = Eigen::Matrix3d::Zero();  // Delassus block (t, n, s)
   Eigen::Vector3d covfree = Eigen::Vector3d::Zero();
@@ -74,6 +98,7 @@ struct ScenePlan3D {
 struct Scene3D {
   RigidBodies3D bodies;
   std::vector<Contactor3D> contactors;
+  std::vector<Polyhedron> polyhedra;  // POLYR shapes, body axes about their contactor's shift point
   std::vector<NamedLaw> laws;
   std::vector<Visibility3D> visibility;
   std::vector<DrivenDof2D> driven;  // dof 0..5

@@ -100,7 +100,7 @@ void SceneBuilder3D::see(const std::string& candidate_type, const std::string& c
   v.alert = alert;
   for (std::size_t k = 0; k < scene_.laws.size(); ++k)
     if (scene_.laws[k].nickname == law) v.law = static_cast<std::int32_t>(k);
-  v.family = antagonist_type == "PLANx" ? PairFamily3D::SPPLx : PairFamily3D::SPSPx;
+  pair_family_3d(candidate_type, antagonist_type, v.family);
   scene_.visibility.push_back(v);
 }
 

@@ -27,14 +27,14 @@ using Eigen::Vector3d;
 constexpr double pi = lmgc_pi;
 
 Rigid3DContactorShape sphere(double r) {
-  return {"SPHER", r, Vector3d::Zero(), Vector3d::Zero(), Matrix3d::Identity()};
+  return {"SPHER", r, Vector3d::Zero(), Vector3d::Zero(), Matrix3d::Identity(), {}, {}};
 }
 Rigid3DContactorShape ball(double r, const Vector3d& shift) {
-  return {"SPHEb", r, shift, Vector3d::Zero(), Matrix3d::Identity()};
+  return {"SPHEb", r, shift, Vector3d::Zero(), Matrix3d::Identity(), {}, {}};
 }
 Rigid3DContactorShape plan(const Vector3d& half_axes, const Matrix3d& frame = Matrix3d::Identity(),
                            const Vector3d& shift = Vector3d::Zero()) {
-  return {"PLANx", 0.0, shift, half_axes, frame};
+  return {"PLANx", 0.0, shift, half_axes, frame, {}, {}};
 }
 
 double ball_volume(double r) {
@@ -238,7 +238,7 @@ TEST(Rigid3DProperties, Pt3dxWeighsNothingInTheCentreButEntersTheInertia) {
   const Vector3d pt(0.0, 0.0, 0.05);
   const auto p =
       rigid_3d_properties(1.0, avrd, Vector3d::Zero(),
-                          {sphere(0.02), {"PT3Dx", 0.0, pt, Vector3d::Zero(), Matrix3d::Identity()}});
+                          {sphere(0.02), {"PT3Dx", 0.0, pt, Vector3d::Zero(), Matrix3d::Identity(), {}, {}}});
   EXPECT_TRUE(p.centre_shift.isZero(0.0));
   EXPECT_NEAR(p.volume, ball_volume(0.02), 1e-18);
   const double vpt = ball_volume(avrd);
@@ -248,8 +248,8 @@ TEST(Rigid3DProperties, Pt3dxWeighsNothingInTheCentreButEntersTheInertia) {
 }
 
 TEST(Rigid3DProperties, UnmodelledContactorsAreCountedAndDegenerateBodiesRejected) {
-  const Rigid3DContactorShape cylinder{"CYLND", 0.01, Vector3d::Zero(), Vector3d::Zero(),
-                                       Matrix3d::Identity()};
+  const Rigid3DContactorShape cylinder{
+      "CYLND", 0.01, Vector3d::Zero(), Vector3d::Zero(), Matrix3d::Identity(), {}, {}};
   const auto p = rigid_3d_properties(1.0, 0.0, Vector3d::Zero(), {sphere(0.01), cylinder});
   EXPECT_EQ(p.ignored_contactors, 1u);
   EXPECT_THROW(rigid_3d_properties(1.0, 0.0, Vector3d::Zero(), {}), std::invalid_argument);
@@ -325,7 +325,7 @@ std::vector<ExampleBody> read_rbdy3(const std::filesystem::path& path) {
     } else if (key == "NO6xx") {
       bodies.back().node = d14x3(l);
     } else if (key == "SPHER" || key == "SPHEb" || key == "PLANx") {
-      Rigid3DContactorShape c{key, 0.0, Vector3d::Zero(), Vector3d::Zero(), Matrix3d::Identity()};
+      Rigid3DContactorShape c{key, 0.0, Vector3d::Zero(), Vector3d::Zero(), Matrix3d::Identity(), {}, {}};
       if (key == "PLANx") {
         c.half_axes = d14x3(l);
         if (i + 1 < lines.size() && lines[i + 1].size() >= 39 &&

@@ -1,0 +1,40 @@
+#pragma once
+// A convex polyhedron contactor (POLYR) as LMGC90 holds it: a closed triangulated surface whose
+// vertices are expressed about a reference point, faces oriented outward.
+// spec: datbox-inputs.md §1.4 (POLYR), state-and-outputs.md (BODIES.OUT rewrites the vertices in
+// the inertia frame); docs/lmgc90-facts/polyhedra.md.
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace lmgc::solver {
+
+struct Polyhedron {
+  std::vector<Eigen::Vector3d> vertices;           // about the body's centre of inertia, body axes
+  std::vector<std::array<std::int32_t, 3>> faces;  // 0-based vertex ids, counter-clockwise seen from outside
+  std::vector<Eigen::Vector3d> face_normals;       // unit outward normals, body axes
+  double radius = 0.0;                             // largest vertex distance from the reference point
+};
+
+// LMGC90's orientation of a triangulated surface (set_orientation_surface_T3, then the global flip
+// of compute_mechanical_properties_surface_T3, mod_DiscreteGeometry): face 1's orientation is spread
+// breadth-first to its neighbours — a neighbour running a shared edge the same way has that edge's
+// two vertices swapped — then, if the enclosed volume is negative, every face has its 2nd and 3rd
+// vertices swapped. Faces naming missing vertices are left as they are.
+void orient_faces(const std::vector<Eigen::Vector3d>& vertices,
+                  std::vector<std::array<std::int32_t, 3>>& faces);
+
+// Unit outward face normals and the bounding radius about the origin of the vertex coordinates.
+void finish_polyhedron(Polyhedron& p);
+
+// Volume integrals of a closed, outward-oriented triangulated surface, per unit density: volume,
+// centroid and the inertia tensor about the centroid (signed tetrahedra from the origin).
+struct PolyhedronMass {
+  double volume = 0.0;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  // about the centroid, per unit density
+};
+PolyhedronMass polyhedron_mass(const Polyhedron& p);
+
+}  // namespace lmgc::solver
