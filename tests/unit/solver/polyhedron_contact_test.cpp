@@ -1,0 +1,164 @@
+// POLYR geometry and detection: exact volume integrals, LMGC90's face orientation, PRPLx vertex
+// contacts and PRPRx common-plane contacts (points, gaps, frame) on boxes whose answers are known.
+#include "solver/detection/polyhedron_contact.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "solver/bodies/polyhedron.hpp"
+
+namespace lmgc::solver {
+namespace {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+// A box of half-sizes h about the origin, faces in an arbitrary (mixed) orientation.
+Polyhedron box(const Vector3d& h) {
+  Polyhedron p;
+  for (int z : {-1, 1})
+    for (int y : {-1, 1})
+      for (int x : {-1, 1}) p.vertices.emplace_back(x * h.x(), y * h.y(), z * h.z());
+  p.faces = {{0, 1, 3}, {0, 3, 2}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+             {2, 3, 7}, {2, 7, 6}, {0, 2, 6}, {0, 6, 4}, {1, 3, 7}, {1, 7, 5}};
+  orient_faces(p.vertices, p.faces);
+  finish_polyhedron(p);
+  return p;
+}
+
+struct Placed {
+  std::vector<Vector3d> vertices, normals;
+  PlacedPolyhedron view;
+};
+Placed place(const Polyhedron& p, const Vector3d& centre, const Matrix3d& frame = Matrix3d::Identity()) {
+  Placed out;
+  for (const Vector3d& v : p.vertices) out.vertices.push_back(centre + frame * v);
+  for (const Vector3d& n : p.face_normals) out.normals.push_back(frame * n);
+  out.view.shape = &p;
+  out.view.vertices = out.vertices;
+  out.view.normals = out.normals;
+  out.view.centre = centre;
+  out.view.radius = p.radius;
+  return out;
+}
+
+TEST(Polyhedron, BoxVolumeCentroidAndInertiaAreExact) {
+  Polyhedron p = box(Vector3d(0.5, 1.0, 1.5));
+  for (Vector3d& v : p.vertices) v += Vector3d(1.0, -2.0, 3.0);
+  const PolyhedronMass m = polyhedron_mass(p);
+  const double V = 1.0 * 2.0 * 3.0;
+  EXPECT_NEAR(m.volume, V, 1e-12);
+  EXPECT_TRUE(m.centroid.isApprox(Vector3d(1.0, -2.0, 3.0), 1e-12));
+  // Box: I_xx = V (b² + c²)/12 with full sides (a, b, c) = (1, 2, 3).
+  EXPECT_NEAR(m.inertia(0, 0), V * (4.0 + 9.0) / 12.0, 1e-12);
+  EXPECT_NEAR(m.inertia(1, 1), V * (1.0 + 9.0) / 12.0, 1e-12);
+  EXPECT_NEAR(m.inertia(2, 2), V * (1.0 + 4.0) / 12.0, 1e-12);
+  EXPECT_NEAR(m.inertia(0, 1), 0.0, 1e-12);
+}
+
+TEST(Polyhedron, OrientationMakesEveryFaceOutwardWhateverTheInputOrder) {
+  Polyhedron p = box(Vector3d(1.0, 1.0, 1.0));
+  // Flip some faces of the input and orient again: all outward, volume positive.
+  for (std::size_t f = 0; f < p.faces.size(); f += 3) std::swap(p.faces[f][0], p.faces[f][1]);
+  orient_faces(p.vertices, p.faces);
+  finish_polyhedron(p);
+  for (std::size_t f = 0; f < p.faces.size(); ++f) {
+    const Vector3d& a = p.vertices[static_cast<std::size_t>(p.faces[f][0])];
+    EXPECT_GT(p.face_normals[f].dot(a), 0.0) << "face " << f;
+  }
+  EXPECT_NEAR(polyhedron_mass(p).volume, 8.0, 1e-12);
+}
+
+TEST(PolyhedronPlane, CubeResting1mmAboveAPlaneHasFourVertexContacts) {
+  const Polyhedron cube = box(Vector3d::Constant(0.5));
+  const Placed c = place(cube, Vector3d(0.0, 0.0, 0.501));
+  Matrix3d plane = Matrix3d::Identity();
+  plane.col(1) = -plane.col(1);  // (T, S, N) = (e1, -e2, e3)
+  PolyhedronContact contact;
+  ASSERT_TRUE(detect_polyhedron_plane(c.view, Vector3d(0.0, 0.0, -0.1), plane, Vector3d(2.0, 2.0, 0.1), 0.01,
+                                      contact));
+  ASSERT_EQ(contact.count, 4);
+  EXPECT_TRUE(contact.normal.isApprox(Vector3d::UnitZ()));
+  EXPECT_TRUE(contact.tangent.cross(contact.normal).isApprox(contact.second_tangent));
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_NEAR(contact.gaps[static_cast<std::size_t>(k)], 0.001, 1e-12);
+    EXPECT_NEAR(contact.points[static_cast<std::size_t>(k)].z(), 0.001, 1e-12);
+    EXPECT_LT(contact.vertices[static_cast<std::size_t>(k)], 4);  // the bottom vertices 0..3
+  }
+  // Lifted beyond the alert distance: nothing.
+  const Placed far = place(cube, Vector3d(0.0, 0.0, 0.52));
+  EXPECT_FALSE(detect_polyhedron_plane(far.view, Vector3d(0.0, 0.0, -0.1), plane, Vector3d(2.0, 2.0, 0.1),
+                                       0.01, contact));
+}
+
+TEST(PolyhedronPolyhedron, StackedCubesTouchAtTheFourCornersOfTheSmallerFace) {
+  const Polyhedron big = box(Vector3d::Constant(0.5)), small = box(Vector3d::Constant(0.25));
+  // Candidate on top, 2 mm above; shifted sideways so its face lies inside the lower one.
+  const Placed top = place(small, Vector3d(0.1, -0.05, 0.5 + 0.25 + 0.002));
+  const Placed bottom = place(big, Vector3d::Zero());
+  PolyhedronContact contact;
+  ASSERT_TRUE(detect_polyhedron_polyhedron(top.view, bottom.view, 0.01, 0.25, 100, contact));
+  EXPECT_TRUE(contact.normal.isApprox(Vector3d::UnitZ(), 1e-9));
+  ASSERT_EQ(contact.count, 4);
+  std::vector<Vector3d> points(contact.points.begin(), contact.points.end());
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_NEAR(contact.gaps[static_cast<std::size_t>(k)], 0.002, 1e-9);
+    const Vector3d& p = points[static_cast<std::size_t>(k)];
+    EXPECT_NEAR(std::abs(p.x() - 0.1), 0.25, 1e-9);
+    EXPECT_NEAR(std::abs(p.y() + 0.05), 0.25, 1e-9);
+    EXPECT_NEAR(p.z(), 0.501, 1e-9);  // midway between the two faces
+  }
+  // Interpenetrating by 3 mm: negative gaps.
+  const Placed sunk = place(small, Vector3d(0.1, -0.05, 0.5 + 0.25 - 0.003));
+  ASSERT_TRUE(detect_polyhedron_polyhedron(sunk.view, bottom.view, 0.01, 0.25, 100, contact));
+  for (int k = 0; k < contact.count; ++k)
+    EXPECT_NEAR(contact.gaps[static_cast<std::size_t>(k)], -0.003, 1e-9);
+  // Apart by more than the alert distance: no contact.
+  const Placed apart = place(small, Vector3d(0.1, -0.05, 0.5 + 0.25 + 0.02));
+  EXPECT_FALSE(detect_polyhedron_polyhedron(apart.view, bottom.view, 0.01, 0.25, 100, contact));
+}
+
+TEST(PolyhedronPolyhedron, TiltedFaceGivesEachPointItsOwnGap) {
+  // The upper cube turned by 0.02 rad about y: its lower face rises along +x, so the points at
+  // x = +0.5 are farther than those at x = -0.5 by sin(0.02) (the common plane follows the lowest
+  // corner).
+  const Polyhedron cube = box(Vector3d::Constant(0.5));
+  const double angle = 0.02;
+  const Matrix3d turn = Eigen::AngleAxisd(-angle, Vector3d::UnitY()).toRotationMatrix();
+  const double lowest = 0.5 * (std::cos(angle) + std::sin(angle));  // centre height above the lowest corner
+  const Placed top = place(cube, Vector3d(0.0, 0.0, 0.5 + lowest + 0.001), turn);
+  const Placed bottom = place(cube, Vector3d::Zero());
+  PolyhedronContact contact;
+  ASSERT_TRUE(detect_polyhedron_polyhedron(top.view, bottom.view, 0.05, 0.5, 100, contact));
+  ASSERT_GE(contact.count, 2);
+  double low = 1.0, high = -1.0;
+  for (int k = 0; k < contact.count; ++k) {
+    low = std::min(low, contact.gaps[static_cast<std::size_t>(k)]);
+    high = std::max(high, contact.gaps[static_cast<std::size_t>(k)]);
+  }
+  EXPECT_NEAR(low, 0.001, 1e-6);
+  EXPECT_GT(high - low, 0.5 * std::sin(angle));
+}
+
+TEST(PolyhedronPolyhedron, CrossedEdgesMeetAtOnePoint) {
+  // Two cubes turned by 45° about x and about y, edge on edge: one contact point at the crossing.
+  const Polyhedron cube = box(Vector3d::Constant(0.5));
+  const Matrix3d about_x = Eigen::AngleAxisd(M_PI / 4.0, Vector3d::UnitX()).toRotationMatrix();
+  const Matrix3d about_y = Eigen::AngleAxisd(M_PI / 4.0, Vector3d::UnitY()).toRotationMatrix();
+  const double reach = 0.5 * std::sqrt(2.0);
+  const Placed top = place(cube, Vector3d(0.0, 0.0, 2.0 * reach + 0.001), about_x);
+  const Placed bottom = place(cube, Vector3d::Zero(), about_y);
+  PolyhedronContact contact;
+  ASSERT_TRUE(detect_polyhedron_polyhedron(top.view, bottom.view, 0.01, 0.5, 100, contact));
+  ASSERT_EQ(contact.count, 1);
+  EXPECT_TRUE(contact.normal.isApprox(Vector3d::UnitZ(), 1e-6));
+  EXPECT_NEAR(contact.gaps[0], 0.001, 1e-6);
+  EXPECT_TRUE(contact.points[0].isApprox(Vector3d(0.0, 0.0, reach + 0.0005), 1e-6));
+}
+
+}  // namespace
+}  // namespace lmgc::solver
