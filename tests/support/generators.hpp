@@ -25,6 +25,11 @@ inline rc::Gen<double> gen_d14_real() {
                                      }));
 }
 
+// A real drawn uniformly from [lo, hi] on a grid of 10⁶ steps (shrinks towards lo).
+inline double in_range(double lo, double hi) {
+  return lo + (hi - lo) * static_cast<double>(*rc::gen::inRange(0, 1000001)) / 1e6;
+}
+
 // A word of exactly `length` characters from [A-Za-z0-9_], no blanks (colours, nicknames).
 inline rc::Gen<std::string> gen_word(int length = 5) {
   return rc::gen::container<std::string>(

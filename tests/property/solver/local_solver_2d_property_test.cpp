@@ -7,6 +7,7 @@
 #include "solver/integrator/step_2d.hpp"
 #include "solver/model/scene_builder_2d.hpp"
 #include "solver/nlgs/local_solver_2d.hpp"
+#include "tests/support/generators.hpp"
 
 namespace lmgc::solver {
 namespace {
@@ -14,9 +15,7 @@ namespace {
 using Eigen::Matrix2d;
 using Eigen::Vector2d;
 
-double in_range(double lo, double hi) {
-  return lo + (hi - lo) * static_cast<double>(*rc::gen::inRange(0, 1000001)) / 1e6;
-}
+using test::in_range;
 
 // A random symmetric positive definite block, as H M⁻¹ Hᵀ of a contact between rigid bodies.
 Matrix2d random_spd() {

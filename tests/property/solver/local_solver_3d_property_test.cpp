@@ -11,6 +11,7 @@
 #include <string>
 
 #include "solver/nlgs/local_solver_3d.hpp"
+#include "tests/support/generators.hpp"
 
 namespace lmgc::solver {
 namespace {
@@ -18,9 +19,7 @@ namespace {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-double in_range(double lo, double hi) {
-  return lo + (hi - lo) * static_cast<double>(*rc::gen::inRange(0, 1000001)) / 1e6;
-}
+using test::in_range;
 
 // A random rotation of R^3 (normalised quaternion).
 Matrix3d random_rotation() {

@@ -10,6 +10,8 @@
 
 #include "solver/bodies/polyhedron.hpp"
 #include "solver/detection/polyhedron_contact.hpp"
+#include "tests/support/generators.hpp"
+#include "tests/support/polyhedra.hpp"
 
 namespace lmgc::solver {
 namespace {
@@ -17,21 +19,7 @@ namespace {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-double in_range(double lo, double hi) {
-  return lo + (hi - lo) * static_cast<double>(*rc::gen::inRange(0, 1000001)) / 1e6;
-}
-
-Polyhedron box(const Vector3d& h) {
-  Polyhedron p;
-  for (int z : {-1, 1})
-    for (int y : {-1, 1})
-      for (int x : {-1, 1}) p.vertices.emplace_back(x * h.x(), y * h.y(), z * h.z());
-  p.faces = {{0, 1, 3}, {0, 3, 2}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
-             {2, 3, 7}, {2, 7, 6}, {0, 2, 6}, {0, 6, 4}, {1, 3, 7}, {1, 7, 5}};
-  orient_faces(p.vertices, p.faces);
-  finish_polyhedron(p);
-  return p;
-}
+using test::in_range;
 
 RC_GTEST_PROP(PolyhedronContactProperty, StackedBoxesGapEqualsFaceDistanceAtEveryPointInAnyOrientation, ()) {
   const Vector3d lower_half(in_range(0.2, 1.0), in_range(0.2, 1.0), in_range(0.1, 1.0));
@@ -45,7 +33,7 @@ RC_GTEST_PROP(PolyhedronContactProperty, StackedBoxesGapEqualsFaceDistanceAtEver
   RC_PRE(q.norm() > 1e-2);
   const Matrix3d turn = q.normalized().toRotationMatrix();
   const Vector3d origin(in_range(-5.0, 5.0), in_range(-5.0, 5.0), in_range(-5.0, 5.0));
-  const Polyhedron lower = box(lower_half), upper = box(upper_half);
+  const Polyhedron lower = test::box_polyhedron(lower_half), upper = test::box_polyhedron(upper_half);
   const Vector3d upper_centre(dx, dy, lower_half.z() + upper_half.z() + gap);
 
   std::vector<Vector3d> lv, ln, uv, un;

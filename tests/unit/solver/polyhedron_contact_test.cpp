@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "solver/bodies/polyhedron.hpp"
+#include "tests/support/polyhedra.hpp"
 
 namespace lmgc::solver {
 namespace {
@@ -17,17 +18,8 @@ namespace {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-// A box of half-sizes h about the origin, faces in an arbitrary (mixed) orientation.
 Polyhedron box(const Vector3d& h) {
-  Polyhedron p;
-  for (int z : {-1, 1})
-    for (int y : {-1, 1})
-      for (int x : {-1, 1}) p.vertices.emplace_back(x * h.x(), y * h.y(), z * h.z());
-  p.faces = {{0, 1, 3}, {0, 3, 2}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
-             {2, 3, 7}, {2, 7, 6}, {0, 2, 6}, {0, 6, 4}, {1, 3, 7}, {1, 7, 5}};
-  orient_faces(p.vertices, p.faces);
-  finish_polyhedron(p);
-  return p;
+  return test::box_polyhedron(h);
 }
 
 struct Placed {
