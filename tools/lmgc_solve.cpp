@@ -75,6 +75,13 @@ int main(int argc, char** argv) {
   app.add_option("--xmin-boundary", options.x_min, "... left of this");
   app.add_option("--xmax-boundary", options.x_max, "... right of this");
   app.add_option("--xperiod", options.x_period, "periodic in x with this period (SetPeriodicCondition)");
+  app.add_option("--yperiod", options.y_period, "3D: periodic in y with this period (SetPeriodicCondition)");
+  std::vector<double> source_point;
+  app.add_option("--source-point", source_point,
+                 "3D: FIRST RADIUS X Y Z: bodies after FIRST enter one by one at (X, Y, Z), each when the "
+                 "previous one is farther than RADIUS from it (RBDY3_SetSourcePointWithIni)")
+      ->expected(5)
+      ->delimiter(',');
   app.add_flag("-q,--quiet", options.quiet, "no progress line");
   app.add_flag("--new-rotation-scheme", options.new_rotation_scheme,
                "RBDY3: update the principal frame by the Cayley map (RBDY3_NewRotationScheme)");
@@ -143,8 +150,20 @@ int main(int argc, char** argv) {
     if (!given("--ymin-boundary")) options.y_min = from_file.y_min;
     if (!given("--xperiod")) options.x_period = from_file.x_period;
     if (!given("--new-rotation-scheme")) options.new_rotation_scheme = from_file.new_rotation_scheme;
-    if (three_d && options.x_period > 0.0) {
-      std::cerr << "lmgc-solve: --xperiod: periodic conditions are not provided for 3D cases yet\n";
+    if (!given("--yperiod")) options.y_period = from_file.y_period;
+    if (given("--source-point")) {
+      options.source_first = static_cast<long>(source_point[0]);
+      options.source_radius = source_point[1];
+      for (int d = 0; d < 3; ++d) options.source_point[d] = source_point[static_cast<std::size_t>(d + 2)];
+    } else {
+      options.source_first = from_file.source_first;
+      options.source_radius = from_file.source_radius;
+      for (int d = 0; d < 3; ++d) options.source_point[d] = from_file.source_point[d];
+    }
+    if (!three_d && (options.y_period > 0.0 || options.source_first > 0)) {
+      std::cerr
+          << "lmgc-solve: --yperiod and --source-point (YPERIODIC CONDITION, INIT SOURCE POINT) apply to "
+             "RBDY3 cases only\n";
       return kExitUsage;
     }
   }

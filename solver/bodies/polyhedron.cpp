@@ -77,6 +77,19 @@ void finish_polyhedron(Polyhedron& p) {
   }
   p.radius = 0.0;
   for (const Vector3d& v : p.vertices) p.radius = std::max(p.radius, v.norm());
+  std::map<std::pair<std::int32_t, std::int32_t>, std::vector<std::size_t>> edge_faces;
+  for (std::size_t f = 0; f < p.faces.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t a = p.faces[f][static_cast<std::size_t>(k)],
+                         b = p.faces[f][static_cast<std::size_t>((k + 1) % 3)];
+      edge_faces[{std::min(a, b), std::max(a, b)}].push_back(f);
+    }
+  p.edges.clear();
+  for (const auto& [edge, faces] : edge_faces) {
+    const bool flat =
+        faces.size() == 2 && p.face_normals[faces[0]].dot(p.face_normals[faces[1]]) > 1.0 - 1e-9;
+    if (!flat) p.edges.push_back({edge.first, edge.second});
+  }
 }
 
 PolyhedronMass polyhedron_mass(const Polyhedron& p) {

@@ -14,7 +14,10 @@ struct Polyhedron {
   std::vector<Eigen::Vector3d> vertices;           // about the body's centre of inertia, body axes
   std::vector<std::array<std::int32_t, 3>> faces;  // 0-based vertex ids, counter-clockwise seen from outside
   std::vector<Eigen::Vector3d> face_normals;       // unit outward normals, body axes
-  double radius = 0.0;                             // largest vertex distance from the reference point
+  // Feature edges (0-based vertex pairs): edges between two faces that are not coplanar, i.e. not
+  // the diagonals of a triangulated flat face. Their cross products are separating-axis candidates.
+  std::vector<std::array<std::int32_t, 2>> edges;
+  double radius = 0.0;  // largest vertex distance from the reference point
 };
 
 // LMGC90's orientation of a triangulated surface (set_orientation_surface_T3, then the global flip
@@ -25,7 +28,8 @@ struct Polyhedron {
 void orient_faces(const std::vector<Eigen::Vector3d>& vertices,
                   std::vector<std::array<std::int32_t, 3>>& faces);
 
-// Unit outward face normals and the bounding radius about the origin of the vertex coordinates.
+// Unit outward face normals, the feature edges and the bounding radius about the origin of the
+// vertex coordinates.
 void finish_polyhedron(Polyhedron& p);
 
 // Volume integrals of a closed, outward-oriented triangulated surface, per unit density: volume,

@@ -109,18 +109,6 @@ bool prepare_run_3d(const validate::CaseFiles& files, Scene3D& scene, RunOutputs
     input.gravity = Eigen::Vector3d(files.bulk_behav->gravity[0].value, files.bulk_behav->gravity[1].value,
                                     files.bulk_behav->gravity[2].value);
   bool ok = build_scene_3d(input, scene, sink);
-  // Periodic conditions and the source point act on RBDY3 detection and stepping; running without
-  // them would compute another scene, so the case is refused until they are provided.
-  if (files.command)
-    for (const grammar::CommandLine& line : files.command->lines)
-      if (line.kind == grammar::CommandLineKind::keyword &&
-          (line.keyword == "PERIODIC CONDITION" || line.keyword == "XPERIODIC CONDITION" ||
-           line.keyword == "YPERIODIC CONDITION" || line.keyword == "INIT SOURCE POINT" ||
-           line.keyword == "FD INIT SOURCE POINT")) {
-        sink.report("L4001", grammar::Location{datbox_path(files, "COMMAND.DAT"), line.text.span},
-                    "'" + line.keyword + "' is not provided by the rigid 3D solver yet");
-        ok = false;
-      }
   if (!ok) return false;
   outputs.case_dir = files.case_dir;
   outputs.postpro = postpro_commands_2d(files, sink, /*three_d=*/true);
@@ -146,6 +134,12 @@ void apply_command_parameters(const validate::CaseFiles& files, RunOptions& opti
   options.nlgs.quick_scramble = p.quick_scramble;
   if (p.has_y_min) options.y_min = p.y_min;
   if (p.x_period > 0.0) options.x_period = p.x_period;
+  if (p.y_period > 0.0) options.y_period = p.y_period;
+  if (p.has_source_point) {
+    options.source_first = p.source_first;
+    options.source_radius = p.source_radius;
+    for (int d = 0; d < 3; ++d) options.source_point[d] = p.source_point[d];
+  }
   options.new_rotation_scheme = p.new_rotation_scheme;
 }
 

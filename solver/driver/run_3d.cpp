@@ -17,6 +17,13 @@ RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D&
   std::error_code ec;
   fs::create_directories(outbox, ec);
 
+  scene.x_period = options.x_period;
+  scene.y_period = options.y_period;
+  if (options.source_first > 0)
+    init_source_point(
+        scene, static_cast<std::size_t>(options.source_first - 1), options.source_radius,
+        Eigen::Vector3d(options.source_point[0], options.source_point[1], options.source_point[2]));
+
   RunState3D state;
   state.h = options.dt;
   state.theta = options.theta;

@@ -25,6 +25,12 @@ struct RunOptions {
   double x_min = -std::numeric_limits<double>::infinity();
   double x_max = std::numeric_limits<double>::infinity();
   double x_period = 0.0;  // SetPeriodicCondition(xperiod)
+  double y_period = 0.0;  // SetPeriodicCondition(xperiod, yperiod), 3D
+  // RBDY3_SetSourcePointWithIni(first, radius, x, y, z): bodies after `first` (1-based) enter one by
+  // one at the point; first = 0 means none.
+  long source_first = 0;
+  double source_radius = 0.0;
+  double source_point[3] = {0.0, 0.0, 0.0};
 };
 
 // Parses LMGC90's spellings: 'Quad ', 'QuaN ', 'Maxm ', 'QM/16' and 'Stored_Delassus_Loops',

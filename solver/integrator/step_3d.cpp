@@ -8,7 +8,9 @@
 #include <map>
 #include <numeric>
 #include <random>
+#include <set>
 #include <span>
+#include <tuple>
 
 #include "solver/detection/pair_geometry_3d.hpp"
 #include "solver/detection/polyhedron_contact.hpp"
@@ -36,6 +38,12 @@ constexpr int kCundallIterations = 100;
 // recup_rloc_PRPRx: a PRPRx point takes the previous step's reaction of the point of the same pair
 // closer than 1e-3 (squared 1e-6, `tol_recup_rloc`), both seen from the candidate body.
 constexpr double kRecupSquaredDistance = 1e-6;
+
+// Fortran's modulo: x wrapped into [0, period).
+double wrapped(double x, double period) {
+  const double r = std::fmod(x, period);
+  return r < 0.0 ? r + period : r;
+}
 
 // SPHEb is a sphere of a cluster: TACT_BEHAV.DAT rows name it SPHER.
 std::string_view seen_as(const std::string& type) {
@@ -181,7 +189,7 @@ void compute_external_forces(Scene3D& scene, const RunState3D& state) {
   for (std::size_t i = 0; i < b.size(); ++i) {
     Vector6d f;
     f << b.mass[i] * scene.gravity, gyroscopic_torque(b.inertia[i], b.velocity_begin[i].tail<3>());
-    b.external_force[i] = f;
+    b.external_force[i] = b.visible[i] ? f : Vector6d::Zero();  // invisible bodies wait (source point)
   }
   const double t_begin = state.time - state.h;
   for (const DrivenDof2D& d : scene.driven)
@@ -212,6 +220,9 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
                      h * (1.0 - theta) * b.velocity_begin[i].head<3>();
     b.frame_detection[i] = update_frame(b.frame_initial[i], (1.0 - theta) * b.velocity_begin[i].tail<3>(), h,
                                         FrameUpdate::linearised);
+    // Periodic: detection sees the centre wrapped into [0, period) (get_coorTT_RBDY3's modulo).
+    if (scene.x_period > 0.0) body_centre[i].x() = wrapped(body_centre[i].x(), scene.x_period);
+    if (scene.y_period > 0.0) body_centre[i].y() = wrapped(body_centre[i].y(), scene.y_period);
   }
   const std::size_t n = scene.contactors.size();
   std::vector<Vector3d> centre(n);
@@ -269,8 +280,10 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
 
   std::vector<Interaction3D> found;
   // One interaction per contact point: local frame rows (t, n, s), lever rows, Delassus block.
-  const auto add_point = [&](std::size_t i, std::size_t j, int row, const Vector3d& t, const Vector3d& normal,
-                             const Vector3d& s, const Vector3d& point, double gap, int vertex) {
+  // `image`: the antagonist's periodic shift (zero but across a periodic side).
+  const auto add_point = [&](std::size_t i, std::size_t j, const Vector3d& image, int row, const Vector3d& t,
+                             const Vector3d& normal, const Vector3d& s, const Vector3d& point, double gap,
+                             int vertex) {
     const Contactor3D& cd = scene.contactors[i];
     const Contactor3D& an = scene.contactors[j];
     const Visibility3D& v = scene.visibility[static_cast<std::size_t>(row)];
@@ -290,7 +303,7 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     c.gap_begin = gap;
     for (int side = 0; side < 2; ++side) {
       const auto body = static_cast<std::size_t>(side == 0 ? cd.body : an.body);
-      const Vector3d lever = point - body_centre[body];
+      const Vector3d lever = point - body_centre[body] - (side == 0 ? Vector3d::Zero() : image);
       Matrix3d& G = side == 0 ? c.lever_candidate : c.lever_antagonist;
       for (int k = 0; k < 3; ++k)
         G.row(k) =
@@ -302,7 +315,8 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     c.W = delassus_block(c, b);
     found.push_back(c);
   };
-  const auto fine = [&](std::size_t i, std::size_t j) {
+  std::vector<Vector3d> image_vertices;  // a periodic image's vertices (PRPRx)
+  const auto fine = [&](std::size_t i, std::size_t j, const Vector3d& image) {
     const Contactor3D& cd = scene.contactors[i];
     const Contactor3D& an = scene.contactors[j];
     if (cd.body == an.body || cd.shape == ContactorShape3D::plane) return false;
@@ -316,34 +330,88 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
       axes.col(1) = -axes.col(1);
       return axes;
     };
+    const bool across = !image.isZero();
+    // LMGC90 has no periodic images for contacts with planes (mod_PRPLx, mod_SPPLx).
+    if (across && (v.family == PairFamily3D::SPPLx || v.family == PairFamily3D::PRPLx)) return true;
     if (v.family == PairFamily3D::SPSPx || v.family == PairFamily3D::SPPLx) {
       ContactGeometry3D g;
       const bool hit =
           v.family == PairFamily3D::SPSPx
-              ? detect_sphere_sphere(centre[i], cd.radius, centre[j], an.radius, v.alert, g)
+              ? detect_sphere_sphere(centre[i], cd.radius, centre[j] + image, an.radius, v.alert, g)
               : detect_sphere_plane(centre[i], cd.radius, centre[j], plane_axes(), an.half_axes, v.alert, g);
-      if (hit) add_point(i, j, row, g.tangent, g.normal, g.second_tangent, g.point, g.gap, 0);
+      if (hit) add_point(i, j, image, row, g.tangent, g.normal, g.second_tangent, g.point, g.gap, 0);
       return true;
+    }
+    PlacedPolyhedron antagonist = placed_polyhedron[j];
+    if (across && an.shape == ContactorShape3D::polyhedron) {
+      image_vertices.assign(antagonist.vertices.begin(), antagonist.vertices.end());
+      for (Vector3d& x : image_vertices) x += image;
+      antagonist.vertices = image_vertices;
+      antagonist.centre += image;
     }
     PolyhedronContact g;
     const bool hit =
         v.family == PairFamily3D::PRPLx
             ? detect_polyhedron_plane(placed_polyhedron[i], centre[j], plane_axes(), an.half_axes, v.alert, g)
-            : detect_polyhedron_polyhedron(placed_polyhedron[i], placed_polyhedron[j], v.alert,
-                                           smallest_polyhedron, kCundallIterations, g);
+            : detect_polyhedron_polyhedron(placed_polyhedron[i], antagonist, v.alert, smallest_polyhedron,
+                                           kCundallIterations, g);
     if (hit)
       for (int k = 0; k < g.count; ++k) {
         const auto m = static_cast<std::size_t>(k);
-        add_point(i, j, row, g.tangent, g.normal, g.second_tangent, g.points[m], g.gaps[m],
+        add_point(i, j, image, row, g.tangent, g.normal, g.second_tangent, g.points[m], g.gaps[m],
                   v.family == PairFamily3D::PRPLx ? g.vertices[m] + 1 : 0);
       }
     return true;
   };
+  // Periodic images: every contactor (planes excepted) near a periodic side gets a ghost entry
+  // shifted by ± the period, so that the grid also reports the pairs across the sides.
+  std::vector<std::size_t> origin(n);
+  std::vector<Vector3d> shift(n, Vector3d::Zero());
+  std::iota(origin.begin(), origin.end(), std::size_t{0});
+  if (scene.x_period > 0.0 || scene.y_period > 0.0) {
+    double reach = 0.0;
+    for (std::size_t k = 0; k < n; ++k)
+      if (scene.contactors[k].shape != ContactorShape3D::plane) reach = std::max(reach, radii[k]);
+    const double margin = 2.0 * reach + max_alert;
+    const auto sides = [&](double x, double period) {
+      std::vector<int> out{0};
+      if (period <= 0.0) return out;
+      if (x < margin) out.push_back(1);
+      if (x > period - margin) out.push_back(-1);
+      return out;
+    };
+    for (std::size_t k = 0; k < n; ++k) {
+      if (scene.contactors[k].shape == ContactorShape3D::plane || !placed[k]) continue;
+      for (int sx : sides(centre[k].x(), scene.x_period))
+        for (int sy : sides(centre[k].y(), scene.y_period)) {
+          if (sx == 0 && sy == 0) continue;
+          const Vector3d offset(sx * scene.x_period, sy * scene.y_period, 0.0);
+          origin.push_back(k);
+          shift.push_back(offset);
+          centre.push_back(centre[k] + offset);
+          radii.push_back(radii[k]);
+          placed.push_back(1);
+        }
+    }
+  }
+  std::set<std::tuple<std::size_t, std::size_t, int, int>> images_seen;
   spatial::MultilevelGrid grid;
   grid.build(centre, radii, placed, max_alert);
   grid.for_each_candidate_pair(centre, radii, max_alert, [&](std::size_t i, std::size_t j) {
+    std::size_t a = origin[i], c = origin[j];
+    if (a == c || (i >= n && j >= n)) return;
+    Vector3d image = shift[j] - shift[i];  // of c relative to a
+    if (a > c) {
+      std::swap(a, c);
+      image = -image;
+    }
+    if (!image.isZero()) {
+      const auto sign = [](double x) { return static_cast<int>(x > 0.0) - static_cast<int>(x < 0.0); };
+      const auto key = std::tuple(a, c, sign(image.x()), sign(image.y()));
+      if (!images_seen.insert(key).second) return;
+    }
     // As in 2D: the lower index is the candidate when a visibility row reads the pair that way.
-    if (!fine(std::min(i, j), std::max(i, j))) fine(std::max(i, j), std::min(i, j));
+    if (!fine(a, c, image)) fine(c, a, Vector3d(-image));
   });
   // LMGC90 writes and sweeps interactions family by family, then by candidate.
   std::stable_sort(found.begin(), found.end(), [](const Interaction3D& x, const Interaction3D& y) {
@@ -498,6 +566,7 @@ void compute_dof(Scene3D& scene, const RunState3D& state) {
   RigidBodies3D& b = scene.bodies;
   const double h = state.h, theta = state.theta;
   for (std::size_t i = 0; i < b.size(); ++i) {
+    if (!b.visible[i]) continue;  // comp_dof_RBDY3 skips invisible bodies
     b.displacement[i].head<3>() =
         b.displacement_begin[i].head<3>() +
         h * ((1.0 - theta) * b.velocity_begin[i].head<3>() + theta * b.velocity[i].head<3>());
@@ -520,6 +589,54 @@ void update_step(Scene3D& scene, RunState3D& state) {
   state.previous = state.contacts;
 }
 
+namespace {
+// Contactor 1 of body i is a SPHER or POLYR (the bodies a source point handles) of colour `color`.
+const Contactor3D* first_contactor(const Scene3D& scene, std::size_t i) {
+  for (const Contactor3D& c : scene.contactors)
+    if (static_cast<std::size_t>(c.body) == i && c.rank == 1) return &c;
+  return nullptr;
+}
+bool enters_by_source(const Contactor3D* c) {
+  return c && (c->type == "SPHER" || c->type == "POLYR");
+}
+}  // namespace
+
+void init_source_point(Scene3D& scene, std::size_t first, double radius, const Vector3d& point) {
+  RigidBodies3D& b = scene.bodies;
+  if (first >= b.size()) return;
+  scene.source = SourcePoint3D{true, false, first, radius, point};
+  for (std::size_t i = 0; i <= first; ++i) b.visible[i] = 1;
+  b.reference[first].setZero();
+  b.displacement_begin[first].head<3>() = point;
+  b.displacement[first] = b.displacement_begin[first];
+  for (std::size_t i = first + 1; i < b.size(); ++i) {
+    const Contactor3D* c = first_contactor(scene, i);
+    if (!enters_by_source(c) || c->color == "BASEx") continue;
+    b.visible[i] = 0;
+    b.reference[i].setZero();
+    b.displacement_begin[i].setZero();
+    b.displacement[i].setZero();
+    b.velocity_begin[i].head<3>().setZero();
+    b.velocity[i].head<3>().setZero();
+  }
+}
+
+void check_source_point(Scene3D& scene) {
+  RigidBodies3D& b = scene.bodies;
+  SourcePoint3D& s = scene.source;
+  const std::size_t next = s.last + 1;
+  if (s.stopped || next >= b.size()) return;
+  if (!enters_by_source(first_contactor(scene, next))) {
+    s.stopped = true;
+    return;
+  }
+  // The last body's X is its position: its reference was set to 0.
+  if ((b.displacement[s.last].head<3>() - s.point).squaredNorm() <= s.radius * s.radius) return;
+  s.last = next;
+  b.visible[next] = 1;
+  b.displacement[next].head<3>() = s.point;
+}
+
 NlgsResult step_3d(Scene3D& scene, RunState3D& state, const NlgsOptions& options) {
   increment_step(scene, state);
   compute_external_forces(scene, state);
@@ -528,6 +645,7 @@ NlgsResult step_3d(Scene3D& scene, RunState3D& state, const NlgsOptions& options
   recup_rloc(state);
   const NlgsResult result = solve_contacts(scene, state, options);
   compute_dof(scene, state);
+  if (scene.source.active) check_source_point(scene);
   update_step(scene, state);
   return result;
 }

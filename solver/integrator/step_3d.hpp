@@ -32,6 +32,14 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
 void compute_dof(Scene3D& scene, const RunState3D& state);
 void update_step(Scene3D& scene, RunState3D& state);
 
+// init4fd_source_point_RBDY3: body `first` (0-based) starts at `point` (its reference moved to 0),
+// every later body whose first contactor is a SPHER or POLYR (colour other than BASEx) waits at 0,
+// at rest and invisible.
+void init_source_point(Scene3D& scene, std::size_t first, double radius, const Eigen::Vector3d& point);
+// check_source_point_RBDY3, after compute_dof: the next waiting body enters at the point when the
+// last one is farther than the radius from it.
+void check_source_point(Scene3D& scene);
+
 NlgsResult step_3d(Scene3D& scene, RunState3D& state, const NlgsOptions& options);
 
 }  // namespace lmgc::solver

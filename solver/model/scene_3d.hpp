@@ -95,6 +95,16 @@ struct ScenePlan3D {
   std::array<bool, kPairFamily3DCount> families{};
 };
 
+// RBDY3_SetSourcePointWithIni: bodies after the last injected one wait, invisible, until it is
+// farther than `radius` from `point`; then the next one enters there (one per step).
+struct SourcePoint3D {
+  bool active = false;
+  bool stopped = false;  // the next body's first contactor is not SPHER/POLYR: no more injection
+  std::size_t last = 0;  // index of the last injected body
+  double radius = 0.0;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+};
+
 struct Scene3D {
   RigidBodies3D bodies;
   std::vector<Contactor3D> contactors;
@@ -104,6 +114,10 @@ struct Scene3D {
   std::vector<DrivenDof2D> driven;  // dof 0..5
   Eigen::Vector3d gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
   FrameUpdate rotation = FrameUpdate::linearised;  // cayley = RBDY3_NewRotationScheme
+  // SetPeriodicCondition: detection sees centres wrapped into [0, period) and the images of the
+  // bodies near the sides; positions themselves are never wrapped (0 = not periodic).
+  double x_period = 0.0, y_period = 0.0;
+  SourcePoint3D source;
   ScenePlan3D plan;
 };
 

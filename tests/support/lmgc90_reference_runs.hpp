@@ -51,6 +51,11 @@ struct ExampleRun {
 // script's parameters (COMMAND.DAT is removed: LMGC90's reference run used command.py).
 // `tag` keeps the scratch folders of tests that run the same example apart (ctest runs tests in
 // parallel).
+// A RIGID_3D example (its BODIES.DAT holds RBDY3 bodies).
+inline bool dimension3(const std::filesystem::path& example) {
+  return read_file(example / "DATBOX" / "BODIES.DAT").find("RBDY3") != std::string::npos;
+}
+
 inline ExampleRun run_example(const std::filesystem::path& example, long steps, const std::string& tag = "") {
   namespace fs = std::filesystem;
   ExampleRun result;
@@ -72,12 +77,30 @@ inline ExampleRun run_example(const std::filesystem::path& example, long steps, 
     if (p.count(name)) args += std::string(" ") + flag + " " + p.at(name);
   if (p.count("norm")) args += " --norm '" + p.at("norm") + "'";
   if (p.count("solver_type")) args += " --solver " + p.at("solver_type");
-  // RBDY3 scripts may switch to the Cayley frame update.
+  // RBDY3 scripts may switch to the Cayley frame update, and set periodic sides and a source point
+  // with script variables or literals as arguments.
   {
     std::istringstream script(read_file(example / "command.py"));
     std::string line;
-    while (std::getline(script, line))
+    const auto call_arguments = [&](const std::string& call) {
+      std::vector<std::string> values;
+      const std::size_t open = line.find('('), close = line.rfind(')');
+      if (line.rfind(call, 0) != 0 || open == std::string::npos || close == std::string::npos) return values;
+      std::istringstream list(line.substr(open + 1, close - open - 1));
+      for (std::string item; std::getline(list, item, ',');) {
+        item.erase(0, item.find_first_not_of(' '));
+        item.erase(item.find_last_not_of(' ') + 1);
+        values.push_back(p.count(item) ? p.at(item) : item);
+      }
+      return values;
+    };
+    while (std::getline(script, line)) {
       if (line.rfind("chipy.RBDY3_NewRotationScheme()", 0) == 0) args += " --new-rotation-scheme";
+      if (const auto v = call_arguments("chipy.SetPeriodicCondition("); v.size() == 2 && dimension3(example))
+        args += " --xperiod " + v[0] + " --yperiod " + v[1];
+      if (const auto v = call_arguments("chipy.RBDY3_SetSourcePointWithIni("); v.size() == 5)
+        args += " --source-point " + v[0] + "," + v[1] + "," + v[2] + "," + v[3] + "," + v[4];
+    }
   }
   // BouncingBallsDK's script calls RBDY2_SetYminBoundary(-0.).
   if (example.filename() == "BouncingBallsDK") args += " --ymin-boundary 0";
