@@ -62,6 +62,9 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_flag("--quick-scramble", options.nlgs.quick_scramble,
                "shuffle the contact order before each block of sweeps");
+  app.add_flag("--diagonal-resolution", options.nlgs.diagonal_resolution,
+               "3D: solve each contact with the diagonal of its Delassus block, then project on the "
+               "Coulomb cone (nlgs_3D_DiagonalResolution)");
   app.add_option("--residual-target", options.nlgs.residual_target,
                  "also stop a step when the natural-map residual / |q| is below this (0 = off)");
   app.add_option("--rloc-tol", options.rloc_tol,
@@ -145,6 +148,8 @@ int main(int argc, char** argv) {
     if (!given("--gs-it1")) options.nlgs.gs_it1 = from_file.nlgs.gs_it1;
     if (!given("--gs-it2")) options.nlgs.gs_it2 = from_file.nlgs.gs_it2;
     if (!given("--quick-scramble")) options.nlgs.quick_scramble = from_file.nlgs.quick_scramble;
+    if (!given("--diagonal-resolution"))
+      options.nlgs.diagonal_resolution = from_file.nlgs.diagonal_resolution;
     if (!given("--write-every")) options.write_every = from_file.write_every;
     if (!given("--display-every")) options.display_every = from_file.display_every;
     if (!given("--ymin-boundary")) options.y_min = from_file.y_min;

@@ -318,6 +318,8 @@ CommandRunParameters command_run_parameters(const CommandFile& file, DiagnosticS
       first_real(c, 0, p.y_period);
     } else if (k == "NEW ROTATION SCHEME") {
       p.new_rotation_scheme = true;
+    } else if (k == "DIAGONAL RESOLUTION") {
+      p.diagonal_resolution = true;
     } else if ((k == "FD INIT SOURCE POINT" || k == "INIT SOURCE POINT") && c.arguments.size() >= 3 &&
                c.arguments[2].reals.size() >= 3) {
       p.has_source_point = true;

@@ -77,6 +77,7 @@ struct CommandRunParameters {
   double x_period = 0.0;             // PERIODIC CONDITION (2D) / XPERIODIC CONDITION (3D); 0 = none
   double y_period = 0.0;             // YPERIODIC CONDITION (3D)
   bool new_rotation_scheme = false;  // NEW ROTATION SCHEME (RBDY3: Cayley update of the frame)
+  bool diagonal_resolution = false;  // DIAGONAL RESOLUTION (3D NLGS)
   // (FD) INIT SOURCE POINT: first body (1-based), radius, point.
   bool has_source_point = false;
   long source_first = 0;

@@ -132,6 +132,7 @@ void apply_command_parameters(const validate::CaseFiles& files, RunOptions& opti
   options.write_every = p.write_every;
   options.display_every = p.display_every;
   options.nlgs.quick_scramble = p.quick_scramble;
+  options.nlgs.diagonal_resolution = p.diagonal_resolution;
   if (p.has_y_min) options.y_min = p.y_min;
   if (p.x_period > 0.0) options.x_period = p.x_period;
   if (p.y_period > 0.0) options.y_period = p.y_period;

@@ -476,6 +476,19 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   // One local solve of contact k with the others frozen; returns the new auxiliary reaction.
   const auto local_solve = [&](std::size_t k, Vector3d& q_local) {
     const Interaction3D& c = contacts[k];
+    if (options.diagonal_resolution) {
+      // solve_nlgs with diagonal_resolution (mod_nlgs_3D): only the diagonal self-terms removed.
+      const Vector3d diagonal = c.W.diagonal();
+      q_local = local_velocity(c, V) - diagonal.cwiseProduct(c.r) + c.covfree;
+      if (q_local(1) >= 0.0) return Vector3d::Zero().eval();
+      Vector3d r = -q_local.cwiseQuotient(diagonal);
+      const double bound = c.mu * r(1), tangential = std::hypot(r(0), r(2));
+      if (tangential > bound && tangential > 1e-18) {
+        r(0) *= bound / tangential;
+        r(2) *= bound / tangential;
+      }
+      return r;
+    }
     q_local = local_velocity(c, V) - c.W * c.r + c.covfree;
     const LocalSolution3D s =
         solve_signorini_coulomb_3d(W_normal_first[k], &W_inverse[k], to_normal_first(q_local), c.mu,

@@ -17,6 +17,9 @@ struct NlgsOptions {
   int gs_it1 = 50;   // sweeps between two convergence checks
   int gs_it2 = 500;  // maximum number of checks
   bool quick_scramble = false;
+  // 3D: nlgs_3D_DiagonalResolution — each contact solved with the diagonal of its block only (its
+  // own off-diagonal couplings kept at the previous iterate), then projected on the Coulomb cone.
+  bool diagonal_resolution = false;
   // Extra stopping rule of ours: stop when the natural-map residual ÷ ‖q‖ is below this (0 = off).
   double residual_target = 0.0;
 };

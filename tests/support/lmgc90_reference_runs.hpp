@@ -96,6 +96,7 @@ inline ExampleRun run_example(const std::filesystem::path& example, long steps, 
     };
     while (std::getline(script, line)) {
       if (line.rfind("chipy.RBDY3_NewRotationScheme()", 0) == 0) args += " --new-rotation-scheme";
+      if (line.rfind("chipy.nlgs_3D_DiagonalResolution()", 0) == 0) args += " --diagonal-resolution";
       if (const auto v = call_arguments("chipy.SetPeriodicCondition("); v.size() == 2 && dimension3(example))
         args += " --xperiod " + v[0] + " --yperiod " + v[1];
       if (const auto v = call_arguments("chipy.RBDY3_SetSourcePointWithIni("); v.size() == 5)
