@@ -11,6 +11,8 @@ namespace lmgc::solver {
 namespace {
 
 constexpr int kMaxNewtonIterations = 40;
+// Relative round-off of a local residual: 1e-14 ≈ 45 ulps of the terms r, W r and q it is made of.
+constexpr double kRoundOff = 1e-14;
 constexpr int kMaxLineSearchHalvings = 30;
 constexpr int kMaxFixedPointIterations = 2000;
 
@@ -209,6 +211,13 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
     }
   }
 
+  // The residual round-off allows at the scale of this contact: a tolerance below it (heavy bodies:
+  // r of 1e4 against u of 1) cannot be met, and chasing it through the fallbacks below costs 10× a
+  // Newton solve for nothing.
+  const auto attainable = [&](const Eigen::Vector3d& r) {
+    return std::max(tolerance, kRoundOff * (r.norm() + (W * r).norm() + q.norm()));
+  };
+
   // Sliding (or a near-singular block): generalised Newton on the Alart–Curnier map.
   double rho_n, rho_t;
   augmentation_parameters(W, rho_n, rho_t);
@@ -221,7 +230,7 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
   Eigen::Vector3d phi = map.value(r, &J);
   double merit = phi.squaredNorm();
   int iteration = 0;
-  for (; iteration < kMaxNewtonIterations && best_residual > tolerance; ++iteration) {
+  for (; iteration < kMaxNewtonIterations && best_residual > attainable(best); ++iteration) {
     Eigen::Matrix3d J_inverse;
     bool J_invertible = false;
     J.computeInverseWithCheck(J_inverse, J_invertible, 1e-300);
@@ -253,7 +262,7 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
     }
   }
   s.newton_iterations = iteration;
-  if (best_residual > tolerance) {
+  if (best_residual > attainable(best)) {
     // Near a direction where W_nn + mu W_nT d vanishes r_n is huge and the damped Newton does not
     // get there: enumerate the sliding directions instead.
     Eigen::Vector3d enumerated;
@@ -265,10 +274,10 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
   }
 
   // Fallback: the projected fixed point r <- P_K(r - rho (u + mu |u_T| e_n)), keeping the best iterate.
-  if (best_residual > tolerance) {
+  if (best_residual > attainable(best)) {
     const double rho = 1.0 / std::max(W.norm(), 1e-300);
     r = best;
-    for (int k = 0; k < kMaxFixedPointIterations && best_residual > tolerance; ++k) {
+    for (int k = 0; k < kMaxFixedPointIterations && best_residual > attainable(best); ++k) {
       const Eigen::Vector3d u = W * r + q;
       Eigen::Vector3d x = r - rho * u;
       x(0) -= rho * mu * u.tail<2>().norm();
@@ -286,7 +295,7 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
   s.r = best;
   s.residual = best_residual;
   s.state = classify(best, mu);
-  s.failed = !(best_residual <= tolerance);
+  s.failed = !(best_residual <= attainable(best));
   return s;
 }
 
