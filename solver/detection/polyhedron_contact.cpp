@@ -305,6 +305,7 @@ bool detect_polyhedron_plane(const PlacedPolyhedron& polyhedron, const Vector3d&
   contact.tangent = below ? Vector3d(-T) : T;
   contact.second_tangent = below ? Vector3d(-S) : S;
   contact.count = 0;
+  contact.area = 0.0;
   for (std::size_t k = 0; k < polyhedron.vertices.size(); ++k) {
     const Vector3d w = polyhedron.vertices[k] - plane_centre;
     if (std::abs(w.dot(T)) > half_axes.x() + alert || std::abs(w.dot(S)) > half_axes.y() + alert) continue;
@@ -361,7 +362,12 @@ bool detect_polyhedron_polyhedron(const PlacedPolyhedron& cd, const PlacedPolyhe
   } else {
     overlap = degenerate_overlap(cd_hull, an_hull, tolerance);
   }
-  overlap = sharpest_four(convex_hull(overlap, tolerance));
+  overlap = convex_hull(overlap, tolerance);
+  contact.area = 0.0;
+  if (overlap.size() >= 3)
+    for (std::size_t k = 0; k < overlap.size(); ++k)
+      contact.area += 0.5 * cross2(overlap[k], overlap[(k + 1) % overlap.size()]);
+  overlap = sharpest_four(overlap);
   if (overlap.empty()) overlap.emplace_back(0.0, 0.0);  // last chance: the two extreme vertices
 
   // Each point: where the line along n meets both surfaces; gap = their distance, point midway.

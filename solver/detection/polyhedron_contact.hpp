@@ -30,6 +30,7 @@ struct PolyhedronContact {
   std::array<Eigen::Vector3d, kMaxPolyhedronPoints> points{};
   std::array<double, kMaxPolyhedronPoints> gaps{};
   std::array<int, kMaxPolyhedronPoints> vertices{};  // PRPLx: candidate vertex (0-based); PRPRx: -1
+  double area = 0.0;  // PRPRx: area of the overlap of the two projected bands (0 for a point or a line)
 };
 
 // PRPLx (mod_PRPLx compute_contact_PRPLx): the plane is a box of half-axes (a1, a2, a3) along the

@@ -12,6 +12,7 @@
 #include <span>
 #include <tuple>
 
+#include "solver/bodies/rigid_3d_properties.hpp"  // lmgc_pi
 #include "solver/detection/pair_geometry_3d.hpp"
 #include "solver/detection/polyhedron_contact.hpp"
 #include "solver/nlgs/local_solver_3d.hpp"
@@ -108,9 +109,11 @@ double positive(double x) {
 
 // Derived Signorini–Coulomb problem of the laws the 3D solver provides (contact-laws.md §2, §3.1).
 // Returns false for a law it does not provide.
-bool prepare_law(const ContactLaw& law, Interaction3D& c, double h) {
+bool prepare_law(const ContactLaw& law, Interaction3D& c, double h, bool first_step) {
   c.covfree.setZero();
   c.inactive = false;
+  c.correction = 0.0;
+  c.correction_needs_contact = std::holds_alternative<IqsMohrDsClb>(law);
   const bool sliding = is_sliding(c.status_begin);
   const auto restitution = [&](double restn, double restt) {
     if (c.gap_begin > 0.0) {
@@ -156,9 +159,58 @@ bool prepare_law(const ContactLaw& law, Interaction3D& c, double h) {
                           c.mu = p.sfric;
                           return true;
                         },
+                        [&](const IqsWetDsClb& p) {
+                          // contact-laws.md §3.2 (mod_nlgs_3D prep :1379-1405): cohesion c inside the
+                          // wet halo γ ≤ Wethk, statuses in their W versions.
+                          c.covfree(1) = positive(c.gap_begin) / h;
+                          if (c.gap_begin <= p.wethk) {
+                            c.status_begin = wet_status(c.status_begin);
+                            c.correction = -p.cohen * h;
+                          } else {
+                            c.status_begin = ContactStatus::noctc;
+                          }
+                          c.mu = is_sliding(c.status_begin) ? p.dfric : p.sfric;
+                          return true;
+                        },
+                        [&](const IqsMohrDsClb& p) {
+                          // §3.2 (:1466-1520): cohesive (Mstck) from the first step of the run until the
+                          // contact stops sticking; cohesion c × contact surface.
+                          if (first_step && c.status_begin == ContactStatus::nknow)
+                            c.status_begin = ContactStatus::Mstck;
+                          c.covfree(1) = positive(c.gap_begin) / h;
+                          if (c.status_begin == ContactStatus::Mstck) {
+                            c.correction = -p.cohen * c.surface * h;
+                            c.mu = p.cohen > 0.0 ? p.cohet / p.cohen : p.sfric;
+                          } else {
+                            c.mu = is_sliding(c.status_begin) ? p.dfric : p.sfric;
+                          }
+                          return true;
+                        },
                         [&](const auto&) { return false; },
                     },
                     law);
+}
+
+// The reaction with the cohesion impulse (correction) of the WET / Mohr laws added, and back: Mohr
+// adds it only to a contact that stays closed (mod_nlgs_3D solve_nlgs :4547-4552).
+Vector3d with_cohesion(const Interaction3D& c, Vector3d rr) {
+  if (c.correction != 0.0 && !(c.correction_needs_contact && rr(1) <= 0.0)) rr(1) += c.correction;
+  return rr;
+}
+Vector3d cohesion_free(const Interaction3D& c, Vector3d r) {
+  if (c.correction != 0.0 && !(c.correction_needs_contact && r.isZero(0.0))) r(1) -= c.correction;
+  return r;
+}
+
+// Statuses after the solve (contact-laws.md §3.2): a Mohr contact that sticks keeps its cohesion
+// (Mstck), a wet contact shows its W status.
+void finish_law(const ContactLaw& law, Interaction3D& c) {
+  if (std::holds_alternative<IqsMohrDsClb>(law)) {
+    if (c.status_begin == ContactStatus::Mstck && c.status == ContactStatus::stick)
+      c.status = ContactStatus::Mstck;
+  } else if (std::holds_alternative<IqsWetDsClb>(law)) {
+    c.status = c.correction != 0.0 ? wet_status(c.status) : dry_status(c.status);
+  }
 }
 
 ContactStatus status_of(const Vector3d& r, double mu) {
@@ -283,7 +335,7 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
   // `image`: the antagonist's periodic shift (zero but across a periodic side).
   const auto add_point = [&](std::size_t i, std::size_t j, const Vector3d& image, int row, const Vector3d& t,
                              const Vector3d& normal, const Vector3d& s, const Vector3d& point, double gap,
-                             int vertex) {
+                             int vertex, double surface) {
     const Contactor3D& cd = scene.contactors[i];
     const Contactor3D& an = scene.contactors[j];
     const Visibility3D& v = scene.visibility[static_cast<std::size_t>(row)];
@@ -296,6 +348,7 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     c.law = v.law;
     c.visibility = row;
     c.vertex = vertex;
+    c.surface = surface;
     c.frame.row(0) = t.transpose();
     c.frame.row(1) = normal.transpose();
     c.frame.row(2) = s.transpose();
@@ -339,7 +392,10 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
           v.family == PairFamily3D::SPSPx
               ? detect_sphere_sphere(centre[i], cd.radius, centre[j] + image, an.radius, v.alert, g)
               : detect_sphere_plane(centre[i], cd.radius, centre[j], plane_axes(), an.half_axes, v.alert, g);
-      if (hit) add_point(i, j, image, row, g.tangent, g.normal, g.second_tangent, g.point, g.gap, 0);
+      const double surface = v.family == PairFamily3D::SPSPx
+                                 ? lmgc_pi * std::pow(cd.radius * an.radius / (cd.radius + an.radius), 2)
+                                 : lmgc_pi * cd.radius * cd.radius;
+      if (hit) add_point(i, j, image, row, g.tangent, g.normal, g.second_tangent, g.point, g.gap, 0, surface);
       return true;
     }
     PlacedPolyhedron antagonist = placed_polyhedron[j];
@@ -359,7 +415,7 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
       for (int k = 0; k < g.count; ++k) {
         const auto m = static_cast<std::size_t>(k);
         add_point(i, j, image, row, g.tangent, g.normal, g.second_tangent, g.points[m], g.gaps[m],
-                  v.family == PairFamily3D::PRPLx ? g.vertices[m] + 1 : 0);
+                  v.family == PairFamily3D::PRPLx ? g.vertices[m] + 1 : 0, g.area / g.count);
       }
     return true;
   };
@@ -454,7 +510,8 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   for (auto& impulse : b.impulse) impulse.setZero();
   double q_squared = 0.0;
   for (Interaction3D& c : contacts) {
-    if (!prepare_law(scene.laws[static_cast<std::size_t>(c.law)].law, c, state.h)) c.inactive = true;
+    if (!prepare_law(scene.laws[static_cast<std::size_t>(c.law)].law, c, state.h, state.step == 1))
+      c.inactive = true;
     if (c.inactive) c.r.setZero();
     const Vector3d q = local_velocity(c, b.velocity_free) + c.covfree;
     if (!c.inactive) q_squared += q.squaredNorm();
@@ -473,27 +530,31 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
     W_normal_first[k].computeInverseWithCheck(W_inverse[k], invertible, 1e-14 * scale * scale * scale);
     if (!invertible) W_inverse[k].setConstant(std::nan(""));
   }
-  // One local solve of contact k with the others frozen; returns the new auxiliary reaction.
+  // One local solve of contact k with the others frozen; returns the new reaction. The local problem
+  // is posed on rr = r − correction e_n (cohesive laws, contact-laws.md §3.2), r = rr + correction.
   const auto local_solve = [&](std::size_t k, Vector3d& q_local) {
     const Interaction3D& c = contacts[k];
+    // The others' contribution and the free velocity, plus the cohesion term −c h W e_n.
+    const Vector3d correction(0.0, c.correction, 0.0);
+    const Vector3d rr_previous = cohesion_free(c, c.r);
     if (options.diagonal_resolution) {
       // solve_nlgs with diagonal_resolution (mod_nlgs_3D): only the diagonal self-terms removed.
       const Vector3d diagonal = c.W.diagonal();
-      q_local = local_velocity(c, V) - diagonal.cwiseProduct(c.r) + c.covfree;
-      if (q_local(1) >= 0.0) return Vector3d::Zero().eval();
+      q_local = local_velocity(c, V) - diagonal.cwiseProduct(c.r - correction) + c.covfree;
+      if (q_local(1) >= 0.0) return with_cohesion(c, Vector3d::Zero());
       Vector3d r = -q_local.cwiseQuotient(diagonal);
       const double bound = c.mu * r(1), tangential = std::hypot(r(0), r(2));
       if (tangential > bound && tangential > 1e-18) {
         r(0) *= bound / tangential;
         r(2) *= bound / tangential;
       }
-      return r;
+      return with_cohesion(c, r);
     }
-    q_local = local_velocity(c, V) - c.W * c.r + c.covfree;
+    q_local = local_velocity(c, V) - c.W * (c.r - correction) + c.covfree;
     const LocalSolution3D s =
         solve_signorini_coulomb_3d(W_normal_first[k], &W_inverse[k], to_normal_first(q_local), c.mu,
-                                   to_normal_first(c.r), local_tolerance);
-    return from_normal_first(s.r);
+                                   to_normal_first(rr_previous), local_tolerance);
+    return with_cohesion(c, from_normal_first(s.r));
   };
   const double tol = options.tolerance;
   const int max_checks = options.gs_it2;
@@ -562,10 +623,12 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
       c.status = ContactStatus::noctc;
       continue;
     }
-    c.status = status_of(c.r, c.mu);
+    const Vector3d rr = cohesion_free(c, c.r);
+    c.status = status_of(rr, c.mu);
     if (c.r.squaredNorm() > 0.0) ++result.active;
     residual_squared +=
-        natural_map_3d(to_normal_first(c.r), to_normal_first(Vector3d(c.u + c.covfree)), c.mu).squaredNorm();
+        natural_map_3d(to_normal_first(rr), to_normal_first(Vector3d(c.u + c.covfree)), c.mu).squaredNorm();
+    finish_law(scene.laws[static_cast<std::size_t>(c.law)].law, c);
   }
   result.residual_absolute = std::sqrt(residual_squared);
   result.residual_relative = result.free_velocity_norm > 0.0

@@ -17,7 +17,8 @@ bool provided_in_3d(const ContactLaw& law) {
   return std::holds_alternative<IqsClb>(law) || std::holds_alternative<IqsDsClb>(law) ||
          std::holds_alternative<GapSgrClb>(law) || std::holds_alternative<GapSgrDsClb>(law) ||
          std::holds_alternative<RstClb>(law) || std::holds_alternative<RstDsClb>(law) ||
-         std::holds_alternative<VelSgrClb>(law);
+         std::holds_alternative<VelSgrClb>(law) || std::holds_alternative<IqsWetDsClb>(law) ||
+         std::holds_alternative<IqsMohrDsClb>(law);
 }
 }  // namespace
 

@@ -81,6 +81,13 @@ struct Interaction3D {
   std::array<double, 6> internal{};
   // PRPLx: the candidate vertex (1-based, Vloc_Rloc's CDVER); PRPRx: 0. Warm start key of PRPLx.
   std::int32_t vertex = 0;
+  // Contact surface of the cohesive laws (get_surf_*: SPSPx π (r₁r₂)²/(r₁+r₂)², SPPLx π r², PRPRx the
+  // overlap area shared by the pair's points, PRPLx 0 as LMGC90 has it).
+  double surface = 0.0;
+  // Cohesion impulse of the WET / Mohr laws (corln = −c h on the normal): the local problem is solved
+  // for rr = r − correction·e_n ≥ 0.
+  double correction = 0.0;
+  bool correction_needs_contact = false;  // Mohr: no cohesion on a contact that opens (rr = 0)
   // The contact point about the candidate's centre in its frame: PRPRx's warm-start key
   // (recup_rloc_PRPRx matches points closer than 1e-3).
   Eigen::Vector3d candidate_point = Eigen::Vector3d::Zero();

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "solver/bodies/rigid_3d_properties.hpp"
 #include "solver/integrator/step_3d.hpp"
 #include "solver/model/scene_builder_3d.hpp"
 
@@ -247,6 +248,62 @@ TEST(Rigid3DAnalytic, SpheresMeetAcrossAPeriodicSide) {
   for (int step = 0; step < 4000; ++step) step_3d(scene, state, converged_options());
   EXPECT_NEAR(scene.bodies.velocity[static_cast<std::size_t>(moving)](0), 0.0, 1e-9);
   EXPECT_NEAR(scene.bodies.velocity[static_cast<std::size_t>(resting)](0), 1.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace lmgc::solver
+
+namespace lmgc::solver {
+namespace {
+
+// A sphere hanging under a fixed plane (bottom face z = 0), released touching it. Cohesive laws
+// (contact-laws.md §3.2) hold it while their cohesion force exceeds its weight m g = 5.136 N
+// (r = 0.05 m, 1000 kg/m³): the normal force is then the tension −m g; otherwise it falls.
+struct Hanging {
+  double z_after = 0.0;
+  double normal_force = 0.0;
+  ContactStatus status = ContactStatus::nknow;
+};
+Hanging hang_under_a_plane(const ContactLaw& law, double h = 1e-3, int steps = 200) {
+  const double r = 0.05;
+  SceneBuilder3D b;
+  const int ball = b.add_sphere(Vector3d(0.0, 0.0, -r), r, 1000.0);
+  b.add_fixed_plane(Vector3d(0.0, 0.0, 0.05), Matrix3d::Identity(), Vector3d(1.0, 1.0, 0.05));
+  b.add_law("coh01", law);
+  b.see("SPHER", "BLEUx", "coh01", "PLANx", "VERTx", 0.001);
+  Scene3D scene = b.build();
+  RunState3D state = run_state(h);
+  Hanging out;
+  for (int i = 0; i < steps; ++i) step_3d(scene, state, converged_options());
+  out.z_after = centre_of(scene, ball).z();
+  if (!state.contacts.empty()) {
+    out.normal_force = state.contacts.front().r(1) / h;
+    out.status = state.contacts.front().status;
+  }
+  return out;
+}
+
+TEST(Rigid3DAnalytic, WetCohesionHoldsAHangingSphereOnlyWhenStrongerThanItsWeight) {
+  const double weight = 1000.0 * 4.0 / 3.0 * lmgc_pi * std::pow(0.05, 3) * g;
+  const Hanging held = hang_under_a_plane(IqsWetDsClb{10.0, 0.0, 0.001, 0.3, 0.3});
+  EXPECT_NEAR(held.z_after, -0.05, 1e-9);
+  EXPECT_NEAR(held.normal_force, -weight, 1e-6 * weight);  // tension: the sphere's weight
+  EXPECT_EQ(held.status, ContactStatus::Wstck);
+  const Hanging fallen = hang_under_a_plane(IqsWetDsClb{2.0, 0.0, 0.001, 0.3, 0.3});
+  EXPECT_LT(fallen.z_after, -0.1);
+}
+
+// Mohr–Coulomb cohesion: cohen × the SPPLx contact surface π r² (7.85 N for 1000 Pa) holds the
+// sphere (status Mstck); 300 Pa (2.36 N) does not, and once the contact has opened the cohesion is
+// gone for good.
+TEST(Rigid3DAnalytic, MohrCohesionHoldsAHangingSphereOnlyWhenStrongerThanItsWeight) {
+  const double weight = 1000.0 * 4.0 / 3.0 * lmgc_pi * std::pow(0.05, 3) * g;
+  const Hanging held = hang_under_a_plane(IqsMohrDsClb{1000.0, 1000.0, 0.3, 0.3});
+  EXPECT_NEAR(held.z_after, -0.05, 1e-9);
+  EXPECT_NEAR(held.normal_force, -weight, 1e-6 * weight);
+  EXPECT_EQ(held.status, ContactStatus::Mstck);
+  const Hanging fallen = hang_under_a_plane(IqsMohrDsClb{300.0, 300.0, 0.3, 0.3});
+  EXPECT_LT(fallen.z_after, -0.1);
 }
 
 }  // namespace
