@@ -104,7 +104,9 @@ constexpr InteractionKind kKinds[] = {
     {"SPSPx", 3, kTitleSPSPxXxl, kDataSPSPxXxl, kSPSP, I::one_line_with_comment, true, 7},
     // SPPLx: the reference files have no trailing iantac (newer sources write one).
     {"SPPLx", 3, kTitle3D, kDataCDPLx, kSPSP, I::one_line_with_comment, false, 7},
-    {"CDCDx", 3, kTitle3D, kDataSPSPx, kSPSP, I::one_line_with_comment, false, 7},
+    // CDCDx's format ends with 2X,I5 but no item is given for it: nothing is written there
+    // (mod_CDCDx.f90 write_out_Vloc_Rloc).
+    {"CDCDx", 3, kTitle3D, kDataCDPLx, kSPSP, I::one_line_with_comment, false, 7},
     {"CDPLx", 3, kTitle3D, kDataCDPLx, kSPSP, I::one_line_with_comment, false, 7},
     {"SPCDx", 3, kTitle3D, kDataSPSPx, kSPCD, I::one_line_with_comment, false, 7},
     {"SPDCx", 3, kTitle3D, kDataSPSPx, kSPCD, I::one_line_with_comment, false, 7},

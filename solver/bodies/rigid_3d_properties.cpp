@@ -53,6 +53,16 @@ ContactorGeometry contactor_geometry(const Rigid3DContactorShape& c, double avrd
     g.frame = c.frame;
     g.shift = c.shift;
     g.centre_weight = g.volume;
+  } else if (c.type == "CYLND" || c.type == "DNLYC") {
+    // mod_a_BDARY_CYLND.f90:84-89 (DNLYC the same, a solid cylinder): half-length H, radius r, axis
+    // along its frame's third column; CYLND's localframe and shift as PLANx's.
+    const double H = c.half_axes.z(), r = c.radius;
+    g.volume = lmgc_pi * r * r * 2.0 * H;
+    g.inertia = Vector3d(g.volume * (r * r / 4.0 + H * H / 3.0), g.volume * (r * r / 4.0 + H * H / 3.0),
+                         g.volume * r * r / 2.0);
+    g.frame = c.frame;
+    g.shift = c.shift;
+    g.centre_weight = g.volume;
   } else if (c.type == "POLYR") {
     Polyhedron p;
     p.vertices = c.vertices;
@@ -222,7 +232,7 @@ RigidBody3DProperties rigid_3d_properties(double density, double avrd, const Vec
       out.frame = p.frame;                                // :1169-1172
       for (std::size_t i = 0; i < parts.size(); ++i) {
         out.contactor_shifts[i] = p.frame.transpose() * out.contactor_shifts[i];  // :1175-1181
-        if (contactors[i].type == "PLANx" || contactors[i].type == "POLYR")
+        if (contactors[i].type == "PLANx" || contactors[i].type == "POLYR" || contactors[i].type == "CYLND")
           out.contactor_frames[i] = p.frame.transpose() * parts[i].frame;  // :1219-1224
       }
     }

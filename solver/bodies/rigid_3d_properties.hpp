@@ -14,6 +14,8 @@
 //      PLANx: V = 8 a1 a2 a3, I1 = V(a2²+a3²)/3, I2 = V(a1²+a3²)/3, I3 = V(a1²+a2²)/3 in its embedded
 //        frame (`localframe` α β γ columns, identity by default), shift = the localframe coo1..3
 //        (mod_a_BDARY_PLANx.f90:82-86, :96-128).
+//      CYLND/DNLYC: a solid cylinder of half-length H = High and radius r: V = 2π r² H,
+//        I1 = I2 = V (r²/4 + H²/3), I3 = V r²/2 (mod_a_BDARY_CYLND.f90:84-89); CYLND's localframe as PLANx.
 //      POLYR: the exact volume integrals of its closed surface (faces reoriented first), about its
 //        centroid, diagonalised by diagonalise33 unless the I-line gives the moments; shift = the
 //        centroid, frame = the principal frame, vertices re-expressed in it about the centroid
@@ -58,10 +60,10 @@ inline constexpr double lmgc_pi = static_cast<double>(3.14159265358979323846f);
 // but has volume 0, inertia 0, and its `shift`/`frame` are used as given (see ignored_contactors).
 struct Rigid3DContactorShape {
   std::string type;
-  double radius = 0.0;                                  // SPHER/SPHEb byrd
+  double radius = 0.0;                                  // SPHER/SPHEb/CYLND/DNLYC byrd
   Eigen::Vector3d shift = Eigen::Vector3d::Zero();      // SPHEb coo1..3, PLANx localframe coo1..3,
                                                         // PT3Dx coo1..3: offset from the BODIES.DAT node
-  Eigen::Vector3d half_axes = Eigen::Vector3d::Zero();  // PLANx axe1..3
+  Eigen::Vector3d half_axes = Eigen::Vector3d::Zero();  // PLANx axe1..3; CYLND/DNLYC (0, 0, High)
   Eigen::Matrix3d frame = Eigen::Matrix3d::Identity();  // PLANx localframe (columns α, β, γ)
   std::vector<Eigen::Vector3d> vertices;                // POLYR: from the BODIES.DAT node, input axes
   std::vector<std::array<std::int32_t, 3>> faces;       // POLYR: 0-based vertex ids

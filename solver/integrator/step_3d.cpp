@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "solver/bodies/rigid_3d_properties.hpp"  // lmgc_pi
+#include "solver/detection/cylinder_contact.hpp"
 #include "solver/detection/pair_geometry_3d.hpp"
 #include "solver/detection/polyhedron_contact.hpp"
 #include "solver/nlgs/local_solver_3d.hpp"
@@ -385,7 +386,51 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     };
     const bool across = !image.isZero();
     // LMGC90 has no periodic images for contacts with planes (mod_PRPLx, mod_SPPLx).
-    if (across && (v.family == PairFamily3D::SPPLx || v.family == PairFamily3D::PRPLx)) return true;
+    if (across && (v.family == PairFamily3D::SPPLx || v.family == PairFamily3D::PRPLx ||
+                   v.family == PairFamily3D::CDPLx))
+      return true;
+    const auto cylinder = [&](std::size_t k, const Vector3d& shift) {
+      const Contactor3D& c = scene.contactors[k];
+      PlacedCylinder placed;
+      placed.centre = centre[k] + shift;
+      placed.axis = (b.frame_detection[static_cast<std::size_t>(c.body)] * c.local_frame).col(2);
+      placed.half_length = c.half_axes.z();
+      placed.radius = c.radius;
+      return placed;
+    };
+    if (v.family == PairFamily3D::SPCDx) {
+      ContactGeometry3D g;
+      if (detect_sphere_cylinder(centre[i], cd.radius, cylinder(j, image), v.alert, g))
+        add_point(i, j, image, row, g.tangent, g.normal, g.second_tangent, g.point, g.gap, 0,
+                  lmgc_pi * cd.radius * cd.radius);
+      return true;
+    }
+    if (v.family == PairFamily3D::CDCDx) {
+      CylinderContact g;
+      if (detect_cylinder_cylinder(cylinder(i, Vector3d::Zero()), cylinder(j, image), v.alert, g)) {
+        const double reduced = cd.radius * an.radius / (cd.radius + an.radius);
+        for (int k = 0; k < g.count; ++k) {
+          const ContactGeometry3D& p = g.points[static_cast<std::size_t>(k)];
+          add_point(i, j, image, row, p.tangent, p.normal, p.second_tangent, p.point, p.gap, k + 1,
+                    reduced * std::min(cd.half_axes.z(), an.half_axes.z()));
+        }
+      }
+      return true;
+    }
+    if (v.family == PairFamily3D::CDPLx) {
+      // The two cap spheres (centre ± H a, first +H as mod_CDPLx) against the plane, as SPPLx.
+      const PlacedCylinder c = cylinder(i, Vector3d::Zero());
+      int rank = 0;
+      for (const double side : {1.0, -1.0}) {
+        ++rank;
+        ContactGeometry3D g;
+        if (detect_sphere_plane(c.centre + side * c.half_length * c.axis, c.radius, centre[j], plane_axes(),
+                                an.half_axes, v.alert, g))
+          add_point(i, j, image, row, g.tangent, g.normal, g.second_tangent, g.point, g.gap, rank,
+                    c.half_length * c.radius);
+      }
+      return true;
+    }
     if (v.family == PairFamily3D::SPSPx || v.family == PairFamily3D::SPPLx) {
       ContactGeometry3D g;
       const bool hit =

@@ -46,13 +46,17 @@ BodyPoints body_points(const Scene3D& scene) {
       }
       continue;
     } else {
-      // Box of half-axes (axe1, axe2, axe3) along the plane's world axes; VTK_HEXAHEDRON order:
-      // the face at -axe3 counter-clockwise about +axe3, then the face at +axe3.
+      // Box of half-axes (axe1, axe2, axe3) along the plane's world axes (a cylinder: its bounding
+      // box (r, r, H) along its axes); VTK_HEXAHEDRON order: the face at -axe3 counter-clockwise
+      // about +axe3, then the face at +axe3.
       const Matrix3d axes = b.frame[i] * c.local_frame;
+      const Vector3d half = c.shape == ContactorShape3D::cylinder
+                                ? Vector3d(c.radius, c.radius, c.half_axes.z())
+                                : Vector3d(c.half_axes);
       constexpr int kCorner[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                                      {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
       for (const auto& s : kCorner) {
-        const Vector3d local(s[0] * c.half_axes(0), s[1] * c.half_axes(1), s[2] * c.half_axes(2));
+        const Vector3d local(s[0] * half(0), s[1] * half(1), s[2] * half(2));
         out.points.push_back(centre + axes * local);
         out.owner.push_back(k);
       }

@@ -44,7 +44,8 @@ grammar::DofFile dof_file_3d(const Scene3D& scene, const RunState3D& state) {
 
 namespace {
 
-constexpr std::string_view kFamilyNames[kPairFamily3DCount] = {"SPSPx", "SPPLx", "PRPRx", "PRPLx"};
+constexpr std::string_view kFamilyNames[kPairFamily3DCount] = {"SPSPx", "SPPLx", "PRPRx", "PRPLx",
+                                                               "SPCDx", "CDCDx", "CDPLx"};
 
 std::string_view family_name(PairFamily3D f) {
   return kFamilyNames[static_cast<int>(f)];
@@ -75,6 +76,8 @@ std::string_view written_type(const Contactor3D& c) {
       return "PLANx";
     case ContactorShape3D::polyhedron:
       return "POLYR";
+    case ContactorShape3D::cylinder:
+      return "CYLND";
   }
   return "PLANx";
 }
@@ -107,13 +110,18 @@ grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& 
   file.time = Real{state.time};
   const double h = state.h;
   // Serial index of each sphere among the scene's spheres (SPHER and SPHEb: LMGC90's SPHER list),
-  // the iantac of SPSPx.
+  // the iantac of SPSPx; of each cylinder among the cylinders, the iantac of SPCDx.
   std::vector<std::int64_t> sphere_serial(scene.contactors.size(), 0);
   std::int64_t spheres = 0;
   for (std::size_t k = 0; k < scene.contactors.size(); ++k)
     if (scene.contactors[k].shape == ContactorShape3D::sphere) sphere_serial[k] = ++spheres;
+  // The same for cylinders: SPCDx ends with the CYLND's serial index.
+  std::int64_t cylinders = 0;
+  for (std::size_t k = 0; k < scene.contactors.size(); ++k)
+    if (scene.contactors[k].shape == ContactorShape3D::cylinder) sphere_serial[k] = ++cylinders;
   // LMGC90's 3D module order (state-and-outputs.md §1.1): ... PRPLx, PRPRx, ... SPPLx, SPPRx, SPSPx.
-  constexpr PairFamily3D kWriteOrder[] = {PairFamily3D::PRPLx, PairFamily3D::PRPRx, PairFamily3D::SPPLx,
+  constexpr PairFamily3D kWriteOrder[] = {PairFamily3D::CDCDx, PairFamily3D::CDPLx, PairFamily3D::PRPLx,
+                                          PairFamily3D::PRPRx, PairFamily3D::SPCDx, PairFamily3D::SPPLx,
                                           PairFamily3D::SPSPx};
   for (PairFamily3D family : kWriteOrder) {
     std::vector<std::size_t> members;
@@ -145,7 +153,7 @@ grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& 
       if (has_vertex_column(family)) out.integers.push_back(Integer{c.vertex});
       out.integers.push_back(Integer{an.body + 1});
       out.integers.push_back(Integer{an.rank});
-      if (family == PairFamily3D::SPSPx)
+      if (family == PairFamily3D::SPSPx || family == PairFamily3D::SPCDx)
         out.integers.push_back(Integer{sphere_serial[static_cast<std::size_t>(c.antagonist)]});
       for (const grammar::VectorLineKind& line : kind->vectors) {
         grammar::VlocRlocVector v;

@@ -29,8 +29,10 @@ Rigid3DContactorShape rigid_3d_shape(const grammar::Contactor& t) {
   if (shape.type == "SPHER" || shape.type == "SPHEb") {
     shape.radius = value(0);
     if (shape.type == "SPHEb") shape.shift = Vector3d(value(1), value(2), value(3));
-  } else if (shape.type == "PLANx") {
-    shape.half_axes = Vector3d(value(0), value(1), value(2));
+  } else if (shape.type == "PLANx" || shape.type == "CYLND" || shape.type == "DNLYC") {
+    shape.half_axes =
+        shape.type == "PLANx" ? Vector3d(value(0), value(1), value(2)) : Vector3d(0.0, 0.0, value(0));
+    if (shape.type != "PLANx") shape.radius = value(1);
     if (!t.frame.empty()) {
       const grammar::LocalFrame& f = t.frame.front();
       for (int k = 0; k < 3; ++k) {
@@ -90,6 +92,13 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
         c.bounding_radius = c.half_axes.norm();
       } else if (c.type == "POLYR") {
         c.shape = ContactorShape3D::polyhedron;
+      } else if (c.type == "CYLND") {
+        c.shape = ContactorShape3D::cylinder;
+        c.radius = shape.radius;
+        c.half_axes = shape.half_axes;  // (0, 0, High)
+        c.local_frame = shape.frame;
+        c.shift = shape.shift;
+        c.bounding_radius = c.half_axes.z() + c.radius;
       } else {
         sink.report("L4001", grammar::Location{in.bodies_path, t.type.span},
                     "contactor '" + c.type + "' is not handled by the rigid 3D solver yet");
@@ -129,7 +138,8 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
     for (std::size_t k = 0; k < contactors.size(); ++k) {
       Contactor3D& c = contactors[k];
       c.shift = p.contactor_shifts[k];
-      if (c.shape == ContactorShape3D::plane) c.local_frame = p.contactor_frames[k];
+      if (c.shape == ContactorShape3D::plane || c.shape == ContactorShape3D::cylinder)
+        c.local_frame = p.contactor_frames[k];
       if (c.shape == ContactorShape3D::polyhedron) {
         Polyhedron shape;
         shape.vertices = p.contactor_vertices[k];

@@ -15,27 +15,32 @@
 
 namespace lmgc::solver {
 
-enum class ContactorShape3D : std::uint8_t { sphere, plane, polyhedron };
+enum class ContactorShape3D : std::uint8_t { sphere, plane, polyhedron, cylinder };
 
 // 3D interaction families, in LMGC90's sweep order for these contactors.
-enum class PairFamily3D : std::uint8_t { SPSPx, SPPLx, PRPRx, PRPLx };
-inline constexpr int kPairFamily3DCount = 4;
+enum class PairFamily3D : std::uint8_t { SPSPx, SPPLx, PRPRx, PRPLx, SPCDx, CDCDx, CDPLx };
+inline constexpr int kPairFamily3DCount = 7;
 
 // The family of a (candidate, antagonist) contactor type pair as `$seety` names them; false for
 // pairs the rigid 3D solver does not detect.
 inline bool pair_family_3d(const std::string& candidate, const std::string& antagonist,
                            PairFamily3D& family) {
-  if (candidate == "SPHER" && antagonist == "SPHER")
-    family = PairFamily3D::SPSPx;
-  else if (candidate == "SPHER" && antagonist == "PLANx")
-    family = PairFamily3D::SPPLx;
-  else if (candidate == "POLYR" && antagonist == "POLYR")
-    family = PairFamily3D::PRPRx;
-  else if (candidate == "POLYR" && antagonist == "PLANx")
-    family = PairFamily3D::PRPLx;
-  else
-    return false;
-  return true;
+  struct Row {
+    const char* candidate;
+    const char* antagonist;
+    PairFamily3D family;
+  };
+  static constexpr Row kRows[] = {
+      {"SPHER", "SPHER", PairFamily3D::SPSPx}, {"SPHER", "PLANx", PairFamily3D::SPPLx},
+      {"POLYR", "POLYR", PairFamily3D::PRPRx}, {"POLYR", "PLANx", PairFamily3D::PRPLx},
+      {"SPHER", "CYLND", PairFamily3D::SPCDx}, {"CYLND", "CYLND", PairFamily3D::CDCDx},
+      {"CYLND", "PLANx", PairFamily3D::CDPLx}};
+  for (const Row& row : kRows)
+    if (candidate == row.candidate && antagonist == row.antagonist) {
+      family = row.family;
+      return true;
+    }
+  return false;
 }
 
 struct Contactor3D {
@@ -45,9 +50,9 @@ struct Contactor3D {
   std::string type;       // "SPHER", "SPHEb", "PLANx"
   std::string color;
   Eigen::Vector3d shift = Eigen::Vector3d::Zero();            // offset from the centre of inertia, body axes
-  Eigen::Matrix3d local_frame = Eigen::Matrix3d::Identity();  // PLANx axes (T, S, N) in body axes
-  double radius = 0.0;                                        // SPHER, SPHEb
-  Eigen::Vector3d half_axes = Eigen::Vector3d::Zero();        // PLANx axe1, axe2, axe3
+  Eigen::Matrix3d local_frame = Eigen::Matrix3d::Identity();  // PLANx axes (T, S, N), CYLND axes, body axes
+  double radius = 0.0;                                        // SPHER, SPHEb, CYLND
+  Eigen::Vector3d half_axes = Eigen::Vector3d::Zero();        // PLANx axe1, axe2, axe3; CYLND (0, 0, High)
   std::int32_t polyhedron = -1;                               // POLYR: index into Scene3D::polyhedra
   double bounding_radius = 0.0;
 };

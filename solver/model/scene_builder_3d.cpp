@@ -68,6 +68,25 @@ int SceneBuilder3D::add_sphere_cluster(const Eigen::Vector3d& centre,
   return body;
 }
 
+int SceneBuilder3D::add_cylinder(const Eigen::Vector3d& centre, const Eigen::Matrix3d& frame,
+                                 double half_length, double radius, double density,
+                                 const std::string& color) {
+  const double mass = density * std::numbers::pi * radius * radius * 2.0 * half_length;
+  const double across = mass * (radius * radius / 4.0 + half_length * half_length / 3.0);
+  const int body = add_body(centre, mass, Eigen::Vector3d(across, across, mass * radius * radius / 2.0));
+  set_frame(body, frame);
+  Contactor3D c;
+  c.shape = ContactorShape3D::cylinder;
+  c.body = body;
+  c.type = "CYLND";
+  c.color = color;
+  c.radius = radius;
+  c.half_axes = Eigen::Vector3d(0.0, 0.0, half_length);
+  c.bounding_radius = half_length + radius;
+  scene_.contactors.push_back(c);
+  return body;
+}
+
 int SceneBuilder3D::add_fixed_plane(const Eigen::Vector3d& centre, const Eigen::Matrix3d& frame,
                                     const Eigen::Vector3d& half_axes, const std::string& color) {
   const int body = add_body(centre, 1.0, Eigen::Vector3d::Ones());

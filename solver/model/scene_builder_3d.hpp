@@ -19,6 +19,10 @@ class SceneBuilder3D {
                          double radius, double density, const std::string& color = "BLEUx");
   // A fixed PLANx box centred at `centre`, axes (T, S, N) the columns of `frame`, half-axes
   // (axe1, axe2, axe3).
+  // A CYLND of half-length H and radius r whose axis is the third column of `frame` (a solid
+  // cylinder: m = ρ 2π r² H, I1 = I2 = m (r²/4 + H²/3), I3 = m r²/2).
+  int add_cylinder(const Eigen::Vector3d& centre, const Eigen::Matrix3d& frame, double half_length,
+                   double radius, double density, const std::string& color = "BLEUx");
   int add_fixed_plane(const Eigen::Vector3d& centre, const Eigen::Matrix3d& frame,
                       const Eigen::Vector3d& half_axes, const std::string& color = "VERTx");
   int add_law(const std::string& nickname, const ContactLaw& law);

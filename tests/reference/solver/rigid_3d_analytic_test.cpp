@@ -2,6 +2,7 @@
 // states the formula, its source and the tolerance.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <numbers>
 
@@ -304,6 +305,79 @@ TEST(Rigid3DAnalytic, MohrCohesionHoldsAHangingSphereOnlyWhenStrongerThanItsWeig
   EXPECT_EQ(held.status, ContactStatus::Mstck);
   const Hanging fallen = hang_under_a_plane(IqsMohrDsClb{300.0, 300.0, 0.3, 0.3});
   EXPECT_LT(fallen.z_after, -0.1);
+}
+
+}  // namespace
+}  // namespace lmgc::solver
+
+namespace lmgc::solver {
+namespace {
+
+// Cylinders at rest (CYLND: CDPLx, SPCDx, CDCDx). Statics: every contact set carries the weight
+// of what lies on it. Tolerance 1e-6 relative: NLGS Quad 1e-10 after 200 steps at rest.
+Matrix3d axis_along(const Vector3d& axis) {
+  Matrix3d f;
+  f.col(2) = axis.normalized();
+  f.col(0) =
+      (std::abs(f.col(2).x()) < 0.9 ? Vector3d::UnitX() : Vector3d::UnitY()).cross(f.col(2)).normalized();
+  f.col(1) = f.col(2).cross(f.col(0));
+  return f;
+}
+
+TEST(Rigid3DAnalytic, CylindersAtRestCarryTheWeightAbove) {
+  const double r = 0.05, H = 0.2, h = 1e-3, density = 1000.0;
+  SceneBuilder3D b;
+  // A cylinder lying along x on the ground, a second one across it along y, a sphere on top.
+  const int lower = b.add_cylinder(Vector3d(0.0, 0.0, r), axis_along(Vector3d::UnitX()), H, r, density);
+  const int upper = b.add_cylinder(Vector3d(0.0, 0.0, 3.0 * r), axis_along(Vector3d::UnitY()), H, r, density);
+  const int ball = b.add_sphere(Vector3d(0.0, 0.0, 5.0 * r), r, density);
+  add_ground(b);
+  b.add_law("iqs05", IqsClb{0.5});
+  b.see("CYLND", "BLEUx", "iqs05", "PLANx", "VERTx", 0.001);
+  b.see("CYLND", "BLEUx", "iqs05", "CYLND", "BLEUx", 0.001);
+  b.see("SPHER", "BLEUx", "iqs05", "CYLND", "BLEUx", 0.001);
+  Scene3D scene = b.build();
+  RunState3D state = run_state(h);
+  for (int i = 0; i < 200; ++i) step_3d(scene, state, converged_options());
+  const auto weight = [&](int body) { return scene.bodies.mass[static_cast<std::size_t>(body)] * g; };
+  int ground_points = 0, crossing_points = 0, sphere_points = 0;
+  double ground = 0.0, crossing = 0.0, sphere = 0.0;
+  for (const Interaction3D& c : state.contacts) {
+    const double f = c.r(1) / h;
+    if (c.family == PairFamily3D::CDPLx) ground += f, ++ground_points;
+    if (c.family == PairFamily3D::CDCDx) crossing += f, ++crossing_points;
+    if (c.family == PairFamily3D::SPCDx) sphere += f, ++sphere_points;
+  }
+  EXPECT_EQ(ground_points, 2);    // the two cap spheres of the lower cylinder
+  EXPECT_EQ(crossing_points, 1);  // crossed axes: one point
+  EXPECT_EQ(sphere_points, 1);
+  EXPECT_NEAR(sphere, weight(ball), 1e-6 * weight(ball));
+  EXPECT_NEAR(crossing, weight(ball) + weight(upper), 1e-6 * weight(upper));
+  const double total = weight(ball) + weight(upper) + weight(lower);
+  EXPECT_NEAR(ground, total, 1e-6 * total);
+  EXPECT_NEAR(centre_of(scene, ball).z(), 5.0 * r, 1e-7);
+}
+
+// Parallel cylinders stacked (CDCDx, parallel branch): two points, one per cap, sharing the weight.
+TEST(Rigid3DAnalytic, ParallelCylindersTouchAtTwoPointsSharingTheWeight) {
+  const double r = 0.05, H = 0.2, h = 1e-3;
+  SceneBuilder3D b;
+  b.add_cylinder(Vector3d(0.0, 0.0, r), axis_along(Vector3d::UnitX()), H, r, 1000.0);
+  const int upper = b.add_cylinder(Vector3d(0.0, 0.0, 3.0 * r), axis_along(Vector3d::UnitX()), H, r, 1000.0);
+  add_ground(b);
+  b.add_law("iqs05", IqsClb{0.5});
+  b.see("CYLND", "BLEUx", "iqs05", "PLANx", "VERTx", 0.001);
+  b.see("CYLND", "BLEUx", "iqs05", "CYLND", "BLEUx", 0.001);
+  Scene3D scene = b.build();
+  RunState3D state = run_state(h);
+  for (int i = 0; i < 200; ++i) step_3d(scene, state, converged_options());
+  const double weight = scene.bodies.mass[static_cast<std::size_t>(upper)] * g;
+  std::vector<double> forces;
+  for (const Interaction3D& c : state.contacts)
+    if (c.family == PairFamily3D::CDCDx) forces.push_back(c.r(1) / h);
+  ASSERT_EQ(forces.size(), 2u);
+  EXPECT_NEAR(forces[0] + forces[1], weight, 1e-6 * weight);
+  EXPECT_NEAR(centre_of(scene, upper).z(), 3.0 * r, 1e-7);
 }
 
 }  // namespace

@@ -248,12 +248,30 @@ TEST(Rigid3DProperties, Pt3dxWeighsNothingInTheCentreButEntersTheInertia) {
 }
 
 TEST(Rigid3DProperties, UnmodelledContactorsAreCountedAndDegenerateBodiesRejected) {
-  const Rigid3DContactorShape cylinder{
-      "CYLND", 0.01, Vector3d::Zero(), Vector3d::Zero(), Matrix3d::Identity(), {}, {}};
-  const auto p = rigid_3d_properties(1.0, 0.0, Vector3d::Zero(), {sphere(0.01), cylinder});
+  const Rigid3DContactorShape other{"POLYF", 0.01, Vector3d::Zero(), Vector3d::Zero(), Matrix3d::Identity(),
+                                    {},      {}};
+  const auto p = rigid_3d_properties(1.0, 0.0, Vector3d::Zero(), {sphere(0.01), other});
   EXPECT_EQ(p.ignored_contactors, 1u);
   EXPECT_THROW(rigid_3d_properties(1.0, 0.0, Vector3d::Zero(), {}), std::invalid_argument);
-  EXPECT_THROW(rigid_3d_properties(1.0, 0.1, Vector3d::Zero(), {cylinder, cylinder}), std::invalid_argument);
+  EXPECT_THROW(rigid_3d_properties(1.0, 0.1, Vector3d::Zero(), {other, other}), std::invalid_argument);
+}
+
+// CYLND (mod_a_BDARY_CYLND.f90:84-89): a solid cylinder of half-length H, radius r, axis along the
+// localframe's third column, which becomes the body's principal frame.
+TEST(Rigid3DProperties, CylinderIsASolidCylinderAlongItsFrameThirdAxis) {
+  const double H = 0.3, r = 0.1, density = 2000.0;
+  Matrix3d frame;
+  frame << 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, -1.0, 0.0, 0.0;  // axis (third column) along x
+  const Rigid3DContactorShape cylinder{"CYLND", r, Vector3d(0.1, 0.0, 0.0), Vector3d(0.0, 0.0, H), frame,
+                                       {},      {}};
+  const auto p = rigid_3d_properties(density, 0.0, Vector3d::Zero(), {cylinder});
+  const double V = lmgc_pi * r * r * 2.0 * H;
+  EXPECT_NEAR(p.volume, V, 1e-15);
+  EXPECT_NEAR(p.mass, density * V, 1e-12);
+  EXPECT_NEAR(p.inertia(0), density * V * (r * r / 4.0 + H * H / 3.0), 1e-15);
+  EXPECT_NEAR(p.inertia(2), density * V * r * r / 2.0, 1e-15);
+  EXPECT_TRUE(p.frame.isApprox(frame));
+  EXPECT_TRUE(p.centre_shift.isApprox(Vector3d(0.1, 0.0, 0.0)));
 }
 
 TEST(Rigid3DProperties, Diagonalise33ZeroesNoiseRelativeToTheDiagonalAndKeepsTheOrder) {
