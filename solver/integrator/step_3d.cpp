@@ -26,13 +26,6 @@ namespace {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
-template <class... Ts>
-Overloaded(Ts...) -> Overloaded<Ts...>;
-
 // Cap of Cundall's common-plane search (mod_PRPRx's default `cundall_iter`; the search usually
 // ends earlier, when its tilt angle falls below 0.0017 rad).
 constexpr int kCundallIterations = 100;
@@ -104,94 +97,6 @@ Matrix3d delassus_block(const Interaction3D& c, const RigidBodies3D& b) {
   return W;
 }
 
-double positive(double x) {
-  return x > 0.0 ? x : 0.0;
-}
-
-// Derived Signorini–Coulomb problem of the laws the 3D solver provides (contact-laws.md §2, §3.1).
-// Returns false for a law it does not provide.
-bool prepare_law(const ContactLaw& law, Interaction3D& c, double h, bool first_step) {
-  c.covfree.setZero();
-  c.inactive = false;
-  c.correction = 0.0;
-  c.correction_needs_contact = std::holds_alternative<IqsMohrDsClb>(law);
-  const bool sliding = is_sliding(c.status_begin);
-  const auto restitution = [&](double restn, double restt) {
-    if (c.gap_begin > 0.0) {
-      c.inactive = true;
-      return;
-    }
-    c.covfree =
-        Vector3d(restt * c.velocity_begin(0), restn * c.velocity_begin(1), restt * c.velocity_begin(2));
-  };
-  return std::visit(Overloaded{
-                        [&](const IqsClb& p) {
-                          c.covfree(1) = positive(c.gap_begin) / h;
-                          c.mu = p.sfric;
-                          return true;
-                        },
-                        [&](const IqsDsClb& p) {
-                          c.covfree(1) = positive(c.gap_begin) / h;
-                          c.mu = sliding ? p.dfric : p.sfric;
-                          return true;
-                        },
-                        [&](const GapSgrClb& p) {
-                          c.covfree(1) = c.gap_begin / h;
-                          c.mu = p.sfric;
-                          return true;
-                        },
-                        [&](const GapSgrDsClb& p) {
-                          c.covfree(1) = c.gap_begin / h;
-                          c.mu = sliding ? p.dfric : p.sfric;
-                          return true;
-                        },
-                        [&](const RstClb& p) {
-                          restitution(p.restn, p.restt);
-                          c.mu = p.sfric;
-                          return true;
-                        },
-                        [&](const RstDsClb& p) {
-                          restitution(p.restn, p.restt);
-                          c.mu = sliding ? p.dfric : p.sfric;
-                          return true;
-                        },
-                        [&](const VelSgrClb& p) {
-                          c.inactive = c.gap_begin > 0.0;
-                          c.mu = p.sfric;
-                          return true;
-                        },
-                        [&](const IqsWetDsClb& p) {
-                          // contact-laws.md §3.2 (mod_nlgs_3D prep :1379-1405): cohesion c inside the
-                          // wet halo γ ≤ Wethk, statuses in their W versions.
-                          c.covfree(1) = positive(c.gap_begin) / h;
-                          if (c.gap_begin <= p.wethk) {
-                            c.status_begin = wet_status(c.status_begin);
-                            c.correction = -p.cohen * h;
-                          } else {
-                            c.status_begin = ContactStatus::noctc;
-                          }
-                          c.mu = is_sliding(c.status_begin) ? p.dfric : p.sfric;
-                          return true;
-                        },
-                        [&](const IqsMohrDsClb& p) {
-                          // §3.2 (:1466-1520): cohesive (Mstck) from the first step of the run until the
-                          // contact stops sticking; cohesion c × contact surface.
-                          if (first_step && c.status_begin == ContactStatus::nknow)
-                            c.status_begin = ContactStatus::Mstck;
-                          c.covfree(1) = positive(c.gap_begin) / h;
-                          if (c.status_begin == ContactStatus::Mstck) {
-                            c.correction = -p.cohen * c.surface * h;
-                            c.mu = p.cohen > 0.0 ? p.cohet / p.cohen : p.sfric;
-                          } else {
-                            c.mu = is_sliding(c.status_begin) ? p.dfric : p.sfric;
-                          }
-                          return true;
-                        },
-                        [&](const auto&) { return false; },
-                    },
-                    law);
-}
-
 // The reaction with the cohesion impulse (correction) of the WET / Mohr laws added, and back: Mohr
 // adds it only to a contact that stays closed (mod_nlgs_3D solve_nlgs :4547-4552).
 Vector3d with_cohesion(const Interaction3D& c, Vector3d rr) {
@@ -201,17 +106,6 @@ Vector3d with_cohesion(const Interaction3D& c, Vector3d rr) {
 Vector3d cohesion_free(const Interaction3D& c, Vector3d r) {
   if (c.correction != 0.0 && !(c.correction_needs_contact && r.isZero(0.0))) r(1) -= c.correction;
   return r;
-}
-
-// Statuses after the solve (contact-laws.md §3.2): a Mohr contact that sticks keeps its cohesion
-// (Mstck), a wet contact shows its W status.
-void finish_law(const ContactLaw& law, Interaction3D& c) {
-  if (std::holds_alternative<IqsMohrDsClb>(law)) {
-    if (c.status_begin == ContactStatus::Mstck && c.status == ContactStatus::stick)
-      c.status = ContactStatus::Mstck;
-  } else if (std::holds_alternative<IqsWetDsClb>(law)) {
-    c.status = c.correction != 0.0 ? wet_status(c.status) : dry_status(c.status);
-  }
 }
 
 ContactStatus status_of(const Vector3d& r, double mu) {
@@ -555,7 +449,9 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   for (auto& impulse : b.impulse) impulse.setZero();
   double q_squared = 0.0;
   for (Interaction3D& c : contacts) {
-    if (!prepare_law(scene.laws[static_cast<std::size_t>(c.law)].law, c, state.h, state.step == 1))
+    // Each law's derived problem (its own file, solver/laws/*.hpp).
+    if (!prepare_law(scene.laws[static_cast<std::size_t>(c.law)].law, c,
+                     LawStep{state.h, state.time, state.step == 1}))
       c.inactive = true;
     if (c.inactive) c.r.setZero();
     const Vector3d q = local_velocity(c, b.velocity_free) + c.covfree;
@@ -673,7 +569,8 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
     if (c.r.squaredNorm() > 0.0) ++result.active;
     residual_squared +=
         natural_map_3d(to_normal_first(rr), to_normal_first(Vector3d(c.u + c.covfree)), c.mu).squaredNorm();
-    finish_law(scene.laws[static_cast<std::size_t>(c.law)].law, c);
+    finish_law(scene.laws[static_cast<std::size_t>(c.law)].law, c,
+               LawStep{state.h, state.time, state.step == 1});
   }
   result.residual_absolute = std::sqrt(residual_squared);
   result.residual_relative = result.free_velocity_norm > 0.0

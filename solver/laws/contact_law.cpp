@@ -1,48 +1,71 @@
 #include "solver/laws/contact_law.hpp"
 
+#include <utility>
+
 namespace lmgc::solver {
 namespace {
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
+
+template <class Law>
+concept HasForm3D = requires(const Law& law, Interaction3D& c, const LawStep& step) {
+  prepare(law, c, step);
 };
-template <class... Ts>
-Overloaded(Ts...) -> Overloaded<Ts...>;
+
+template <std::size_t... I>
+bool from_card(std::string_view keyword, const LawParameters& p, ContactLaw& law, std::index_sequence<I...>) {
+  const auto try_one = [&]<std::size_t K>() {
+    using Law = std::variant_alternative_t<K, ContactLaw>;
+    if (Law::keyword != keyword) return false;
+    law = Law::from_card(p);
+    return true;
+  };
+  return (try_one.template operator()<I>() || ...);
+}
+
 }  // namespace
 
 std::string_view law_keyword(const ContactLaw& law) {
-  return std::visit(Overloaded{
-                        [](const IqsClb&) { return std::string_view("IQS_CLB"); },
-                        [](const IqsDsClb&) { return std::string_view("IQS_DS_CLB"); },
-                        [](const IqsClbG0&) { return std::string_view("IQS_CLB_g0"); },
-                        [](const RstClb&) { return std::string_view("RST_CLB"); },
-                        [](const RstDsClb&) { return std::string_view("RST_DS_CLB"); },
-                        [](const GapSgrClb&) { return std::string_view("GAP_SGR_CLB"); },
-                        [](const GapSgrDsClb&) { return std::string_view("GAP_SGR_DS_CLB"); },
-                        [](const VelSgrClb&) { return std::string_view("VEL_SGR_CLB"); },
-                        [](const VelSgrDsClb&) { return std::string_view("VEL_SGR_DS_CLB"); },
-                        [](const ElasticRepellClb&) { return std::string_view("ELASTIC_REPELL_CLB"); },
-                        [](const IqsMohrDsClb&) { return std::string_view("IQS_MOHR_DS_CLB"); },
-                        [](const IqsWetDsClb&) { return std::string_view("IQS_WET_DS_CLB"); },
-                        [](const IqsMacCzm&) { return std::string_view("IQS_MAC_CZM"); },
-                        [](const CoupledDof&) { return std::string_view("COUPLED_DOF"); },
-                        [](const NoNlgsBranch&) { return std::string_view("MD_JKRs"); },
-                    },
-                    law);
+  return std::visit([](const auto& p) { return std::decay_t<decltype(p)>::keyword; }, law);
 }
 
 int law_internal_count(const ContactLaw& law) {
-  // state-and-outputs.md §1.4.4: g_ref for the _g0 laws, taille_ele for the GAP/VEL_SGR family.
-  return std::visit(Overloaded{
-                        [](const IqsClbG0&) { return 1; },
-                        [](const GapSgrClb&) { return 1; },
-                        [](const GapSgrDsClb&) { return 1; },
-                        [](const VelSgrClb&) { return 1; },
-                        [](const VelSgrDsClb&) { return 1; },
-                        [](const IqsMacCzm&) { return 5; },
-                        [](const auto&) { return 0; },
-                    },
-                    law);
+  return std::visit([](const auto& p) { return std::decay_t<decltype(p)>::internals_2d; }, law);
+}
+
+bool law_from_card(std::string_view keyword, const LawParameters& parameters, ContactLaw& law) {
+  return from_card(keyword, parameters, law, std::make_index_sequence<std::variant_size_v<ContactLaw>>{});
+}
+
+void prepare_law(const ContactLaw& law, Interaction2D& c, const LawStep& step) {
+  std::visit([&](const auto& p) { prepare(p, c, step); }, law);
+}
+
+void finish_law(const ContactLaw& law, Interaction2D& c, const LawStep& step) {
+  std::visit([&](const auto& p) { finish(p, c, step); }, law);
+}
+
+bool provided_in_3d(const ContactLaw& law) {
+  return std::visit([](const auto& p) { return HasForm3D<std::decay_t<decltype(p)>>; }, law);
+}
+
+bool prepare_law(const ContactLaw& law, Interaction3D& c, const LawStep& step) {
+  c.covfree.setZero();
+  c.inactive = false;
+  c.correction = 0.0;
+  c.correction_needs_contact = false;
+  return std::visit(
+      [&](const auto& p) {
+        if constexpr (HasForm3D<std::decay_t<decltype(p)>>) {
+          prepare(p, c, step);
+          return true;
+        } else {
+          return false;
+        }
+      },
+      law);
+}
+
+void finish_law(const ContactLaw& law, Interaction3D& c, const LawStep& step) {
+  std::visit([&](const auto& p) { finish(p, c, step); }, law);
 }
 
 }  // namespace lmgc::solver

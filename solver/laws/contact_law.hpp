@@ -1,71 +1,29 @@
 #pragma once
-// The contact laws the 2D NLGS solves: one parameter struct per law, fields named as LMGC90's
-// TACT_BEHAV.OUT names them. spec: contact-laws.md §0 (catalogue), §3 (laws one by one).
-#include <array>
+// The contact-law catalogue: one header per law (its parameters, TACT_BEHAV keyword, reader, and
+// the derived Signorini–Coulomb problem it poses in 2D and/or 3D), gathered here into one table,
+// the ContactLaw variant. Adding a law: its header, one entry in the variant, its test.
+// spec: contact-laws.md §0 (catalogue), §2 (derived problem), §3 (laws one by one).
 #include <string_view>
 #include <variant>
 
-namespace lmgc::solver {
+#include "solver/laws/coupled_dof.hpp"
+#include "solver/laws/elastic_repell_clb.hpp"
+#include "solver/laws/gap_sgr_clb.hpp"
+#include "solver/laws/gap_sgr_ds_clb.hpp"
+#include "solver/laws/iqs_clb.hpp"
+#include "solver/laws/iqs_clb_g0.hpp"
+#include "solver/laws/iqs_ds_clb.hpp"
+#include "solver/laws/iqs_mac_czm.hpp"
+#include "solver/laws/iqs_mohr_ds_clb.hpp"
+#include "solver/laws/iqs_wet_ds_clb.hpp"
+#include "solver/laws/law_forms.hpp"
+#include "solver/laws/md_jkrs.hpp"
+#include "solver/laws/rst_clb.hpp"
+#include "solver/laws/rst_ds_clb.hpp"
+#include "solver/laws/vel_sgr_clb.hpp"
+#include "solver/laws/vel_sgr_ds_clb.hpp"
 
-// contact-laws.md §3.1: inelastic quasi-shock Signorini + Coulomb.
-struct IqsClb {
-  double sfric;
-};
-// IQS with static/dynamic friction (§1.3): dfric when sliding at the beginning of the step.
-struct IqsDsClb {
-  double dfric, sfric;
-};
-// IQS relative to the gap at the first call (internal g_ref).
-struct IqsClbG0 {
-  double sfric;
-};
-// Newton restitution (normal restn, tangential restt) + Coulomb.
-struct RstClb {
-  double restn, restt, sfric;
-};
-struct RstDsClb {
-  double restn, restt, dfric, sfric;
-};
-// Gap-Signorini: end-of-step gap >= 0 (penetration corrected in one step).
-struct GapSgrClb {
-  double sfric;
-};
-struct GapSgrDsClb {
-  double dfric, sfric;
-};
-// Velocity-Signorini (Moreau): active only when the gap is closed.
-struct VelSgrClb {
-  double sfric;
-};
-struct VelSgrDsClb {
-  double dfric, sfric;
-};
-// Linear spring in compression (stiffness F/gap, force per length) + Coulomb.
-struct ElasticRepellClb {
-  double stiffness, sfric;
-};
-// Mohr–Coulomb cohesion until the first break (cohen, cohet: normal/tangential cohesion).
-struct IqsMohrDsClb {
-  double cohen, cohet, dfric, sfric;
-};
-// Reversible cohesion inside a wet halo of thickness Wethk.
-struct IqsWetDsClb {
-  double cohen, cohet, wethk, dfric, sfric;
-};
-// Monerie–Acary–Cangémi cohesive zone with an IQS normal part (contact-laws.md §3.5):
-// friction dfric/sfric, normal and tangential stiffnesses cn, ct, viscosity visco and fracture
-// energy dupre of the damage law.
-struct IqsMacCzm {
-  double dfric, sfric, cn, ct, visco, dupre;
-};
-// Bilateral glue on both components.
-struct CoupledDof {};
-// A law LMGC90's 2D NLGS has no branch for (MD_JKRs, a smooth law): LMGC90 then solves the
-// default problem, velocity Signorini without any gap term and Coulomb with the law's friction
-// (contact-laws.md §0 "Dimension note"). Reproduced for those laws only.
-struct NoNlgsBranch {
-  double sfric;
-};
+namespace lmgc::solver {
 
 using ContactLaw =
     std::variant<IqsClb, IqsDsClb, IqsClbG0, RstClb, RstDsClb, GapSgrClb, GapSgrDsClb, VelSgrClb, VelSgrDsClb,
@@ -76,5 +34,19 @@ std::string_view law_keyword(const ContactLaw& law);
 
 // Number of internal variables LMGC90 stores per interaction for this law (2D).
 int law_internal_count(const ContactLaw& law);
+
+// The law of a TACT_BEHAV keyword with its parameters; false for a keyword not in the table.
+bool law_from_card(std::string_view keyword, const LawParameters& parameters, ContactLaw& law);
+
+// 2D: the derived problem of the law (c.covfree, c.correction, c.WW, c.mu, c.inactive, statuses),
+// after the caller has reset them; and the end-of-step statuses and internal variables.
+void prepare_law(const ContactLaw& law, Interaction2D& c, const LawStep& step);
+void finish_law(const ContactLaw& law, Interaction2D& c, const LawStep& step);
+
+// 3D: the same; prepare resets c.covfree, c.inactive, c.correction first and returns false for a
+// law that has no 3D form.
+bool provided_in_3d(const ContactLaw& law);
+bool prepare_law(const ContactLaw& law, Interaction3D& c, const LawStep& step);
+void finish_law(const ContactLaw& law, Interaction3D& c, const LawStep& step);
 
 }  // namespace lmgc::solver

@@ -1,8 +1,8 @@
 #pragma once
 // Every 2D law reduced to one Signorini–Coulomb problem in auxiliary variables
 // (contact-laws.md §2): uu = ufree_loc + covfree + WW rr, r = rr + correction.
-// One std::visit per verb: prepare (once per step), solve (each sweep), residual (checks),
-// finish (end of step: statuses and internal variables).
+// The verbs of the 2D NLGS: prepare (once per step: each law's own `prepare`, solver/laws/*.hpp),
+// solve (each sweep), residual (checks), finish (end of step: each law's own `finish`).
 #include <Eigen/Core>
 
 #include "solver/laws/contact_law.hpp"

@@ -29,41 +29,8 @@ double parameter(const grammar::TactLaw& card, const grammar::LawKind& kind, std
 bool contact_law_of(const grammar::TactLaw& card, ContactLaw& law) {
   const grammar::LawKind* kind = grammar::find_law_kind(card.keyword.value);
   if (!kind) return false;
-  auto p = [&](std::string_view name) { return parameter(card, *kind, name); };
-  const std::string& k = card.keyword.value;
-  if (k == "IQS_CLB")
-    law = IqsClb{p("sfric")};
-  else if (k == "IQS_DS_CLB")
-    law = IqsDsClb{p("dfric"), p("sfric")};
-  else if (k == "IQS_CLB_g0")
-    law = IqsClbG0{p("sfric")};
-  else if (k == "RST_CLB")
-    law = RstClb{p("restn"), p("restt"), p("sfric")};
-  else if (k == "RST_DS_CLB")
-    law = RstDsClb{p("restn"), p("restt"), p("dfric"), p("sfric")};
-  else if (k == "GAP_SGR_CLB")
-    law = GapSgrClb{p("sfric")};
-  else if (k == "GAP_SGR_DS_CLB")
-    law = GapSgrDsClb{p("dfric"), p("sfric")};
-  else if (k == "VEL_SGR_CLB")
-    law = VelSgrClb{p("sfric")};
-  else if (k == "VEL_SGR_DS_CLB")
-    law = VelSgrDsClb{p("dfric"), p("sfric")};
-  else if (k == "ELASTIC_REPELL_CLB")
-    law = ElasticRepellClb{p("F/gap"), p("sfric")};
-  else if (k == "IQS_MOHR_DS_CLB")
-    law = IqsMohrDsClb{p("cohen"), p("cohet"), p("dfric"), p("sfric")};
-  else if (k == "IQS_WET_DS_CLB")
-    law = IqsWetDsClb{p("cohen"), p("cohet"), p("Wethk"), p("dfric"), p("sfric")};
-  else if (k == "IQS_MAC_CZM")
-    law = IqsMacCzm{p("dfric"), p("sfric"), p("cn"), p("ct"), p("visco"), p("dupre")};
-  else if (k == "COUPLED_DOF")
-    law = CoupledDof{};
-  else if (k == "MD_JKRs")
-    law = NoNlgsBranch{p("sfric")};
-  else
-    return false;
-  return true;
+  return law_from_card(
+      card.keyword.value, [&](std::string_view name) { return parameter(card, *kind, name); }, law);
 }
 
 bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticSink& sink) {

@@ -13,13 +13,6 @@ namespace {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-bool provided_in_3d(const ContactLaw& law) {
-  return std::holds_alternative<IqsClb>(law) || std::holds_alternative<IqsDsClb>(law) ||
-         std::holds_alternative<GapSgrClb>(law) || std::holds_alternative<GapSgrDsClb>(law) ||
-         std::holds_alternative<RstClb>(law) || std::holds_alternative<RstDsClb>(law) ||
-         std::holds_alternative<VelSgrClb>(law) || std::holds_alternative<IqsWetDsClb>(law) ||
-         std::holds_alternative<IqsMohrDsClb>(law);
-}
 }  // namespace
 
 Rigid3DContactorShape rigid_3d_shape(const grammar::Contactor& t) {

@@ -11,37 +11,12 @@
 #include "solver/bodies/polyhedron.hpp"
 #include "solver/bodies/rigid_bodies_3d.hpp"
 #include "solver/model/contact_status.hpp"
+#include "solver/model/interaction_3d.hpp"
 #include "solver/model/scene_2d.hpp"  // NamedLaw, DrivenDof2D (dimension-free parts)
 
 namespace lmgc::solver {
 
 enum class ContactorShape3D : std::uint8_t { sphere, plane, polyhedron, cylinder };
-
-// 3D interaction families, in LMGC90's sweep order for these contactors.
-enum class PairFamily3D : std::uint8_t { SPSPx, SPPLx, PRPRx, PRPLx, SPCDx, CDCDx, CDPLx };
-inline constexpr int kPairFamily3DCount = 7;
-
-// The family of a (candidate, antagonist) contactor type pair as `$seety` names them; false for
-// pairs the rigid 3D solver does not detect.
-inline bool pair_family_3d(const std::string& candidate, const std::string& antagonist,
-                           PairFamily3D& family) {
-  struct Row {
-    const char* candidate;
-    const char* antagonist;
-    PairFamily3D family;
-  };
-  static constexpr Row kRows[] = {
-      {"SPHER", "SPHER", PairFamily3D::SPSPx}, {"SPHER", "PLANx", PairFamily3D::SPPLx},
-      {"POLYR", "POLYR", PairFamily3D::PRPRx}, {"POLYR", "PLANx", PairFamily3D::PRPLx},
-      {"SPHER", "CYLND", PairFamily3D::SPCDx}, {"CYLND", "CYLND", PairFamily3D::CDCDx},
-      {"CYLND", "PLANx", PairFamily3D::CDPLx}};
-  for (const Row& row : kRows)
-    if (candidate == row.candidate && antagonist == row.antagonist) {
-      family = row.family;
-      return true;
-    }
-  return false;
-}
 
 struct Contactor3D {
   ContactorShape3D shape = ContactorShape3D::sphere;
@@ -62,45 +37,6 @@ struct Visibility3D {
   std::int32_t law = 0;
   double alert = 0.0;
   PairFamily3D family = PairFamily3D::SPSPx;
-};
-
-struct Interaction3D {
-  PairFamily3D family = PairFamily3D::SPSPx;
-  std::int32_t candidate = 0, antagonist = 0;  // contactor ids
-  std::int32_t candidate_body = 0, antagonist_body = 0;
-  std::int32_t law = 0, visibility = 0;
-  // Geometry at the detection configuration: rows t, n, s of the local frame, global axes.
-  Eigen::Matrix3d frame = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();
-  double gap_begin = 0.0;
-  // Rows: frameᵀ (ℓ × t), frameᵀ (ℓ × n), frameᵀ (ℓ × s) of each body (ℓ = contact point − centre),
-  // in body axes: the rotational part of Hᵀ (numerics.md §2).
-  Eigen::Matrix3d lever_candidate = Eigen::Matrix3d::Zero();
-  Eigen::Matrix3d lever_antagonist = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d velocity_begin = Eigen::Vector3d::Zero();  // local (t, n, s) at t_begin
-
-  Eigen::Vector3d r = Eigen::Vector3d::Zero();  // impulse over the step (t, n, s)
-  Eigen::Vector3d u = Eigen::Vector3d::Zero();  // relative velocity at the end of the step
-  ContactStatus status = ContactStatus::nknow;
-  ContactStatus status_begin = ContactStatus::nknow;
-  std::array<double, 6> internal{};
-  // PRPLx: the candidate vertex (1-based, Vloc_Rloc's CDVER); PRPRx: 0. Warm start key of PRPLx.
-  std::int32_t vertex = 0;
-  // Contact surface of the cohesive laws (get_surf_*: SPSPx π (r₁r₂)²/(r₁+r₂)², SPPLx π r², PRPRx the
-  // overlap area shared by the pair's points, PRPLx 0 as LMGC90 has it).
-  double surface = 0.0;
-  // Cohesion impulse of the WET / Mohr laws (corln = −c h on the normal): the local problem is solved
-  // for rr = r − correction·e_n ≥ 0.
-  double correction = 0.0;
-  bool correction_needs_contact = false;  // Mohr: no cohesion on a contact that opens (rr = 0)
-  // The contact point about the candidate's centre in its frame: PRPRx's warm-start key
-  // (recup_rloc_PRPRx matches points closer than 1e-3).
-  Eigen::Vector3d candidate_point = Eigen::Vector3d::Zero();
-
-  Eigen::Matrix3d W = Eigen::Matrix3d::Zero();  // Delassus block (t, n, s)
-  Eigen::Vector3d covfree = Eigen::Vector3d::Zero();
-  double mu = 0.0;
-  bool inactive = false;
 };
 
 struct ScenePlan3D {

@@ -1,0 +1,22 @@
+#pragma once
+// ELASTIC_REPELL_CLB: linear spring in compression (stiffness F/gap) in series, + Coulomb
+// (contact-laws.md §3.3). 2D.
+#include "solver/laws/law_forms.hpp"
+
+namespace lmgc::solver {
+
+struct ElasticRepellClb {
+  static constexpr std::string_view keyword = "ELASTIC_REPELL_CLB";
+  static constexpr int internals_2d = 0;
+  static ElasticRepellClb from_card(const LawParameters& p) { return {p("F/gap"), p("sfric")}; }
+  double stiffness, sfric;
+};
+
+// r_n = -h k γ_end gives WWnn = Wnn + 1/(k h²), covfree = γ/h.
+inline void prepare(const ElasticRepellClb& law, Interaction2D& c, const LawStep& step) {
+  if (law.stiffness > 0.0) c.WW(1, 1) = c.W(1, 1) + 1.0 / (law.stiffness * step.h * step.h);
+  gap_form(c, step.h);
+  c.mu = law.sfric;
+}
+
+}  // namespace lmgc::solver

@@ -1,0 +1,51 @@
+#pragma once
+// IQS_MOHR_DS_CLB: Mohr–Coulomb cohesion until the contact first stops sticking, then IQS_DS_CLB
+// (contact-laws.md §3.2). 2D: cohesion c × the contact length. 3D (mod_nlgs_3D :1466-1520,
+// :4547-4552): cohesive (Mstck) only from the run's first step, cohesion c × the family's contact
+// surface, added only while the local status is not noctc.
+#include "solver/laws/law_forms.hpp"
+
+namespace lmgc::solver {
+
+struct IqsMohrDsClb {
+  static constexpr std::string_view keyword = "IQS_MOHR_DS_CLB";
+  static constexpr int internals_2d = 0;
+  static IqsMohrDsClb from_card(const LawParameters& p) {
+    return {p("cohen"), p("cohet"), p("dfric"), p("sfric")};
+  }
+  double cohen, cohet, dfric, sfric;
+  // The Mohr cone while cohesive: μ = cohet/cohen.
+  double cohesive_friction() const { return cohen > 0.0 ? cohet / cohen : sfric; }
+};
+
+inline void prepare(const IqsMohrDsClb& law, Interaction2D& c, const LawStep& step) {
+  if (c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Mstck;
+  iqs_form(c, step.h);
+  if (c.status_begin == ContactStatus::Mstck) {
+    add_cohesion(c, law.cohen * c.length, step.h);
+    c.mu = law.cohesive_friction();
+  } else {
+    c.mu = static_dynamic(law.dfric, law.sfric, c.status_begin);
+  }
+}
+
+inline void prepare(const IqsMohrDsClb& law, Interaction3D& c, const LawStep& step) {
+  if (step.first_step && c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Mstck;
+  iqs_form(c, step.h);
+  c.correction_needs_contact = true;
+  if (c.status_begin == ContactStatus::Mstck) {
+    c.correction = -law.cohen * c.surface * step.h;
+    c.mu = law.cohesive_friction();
+  } else {
+    c.mu = static_dynamic(law.dfric, law.sfric, c.status_begin);
+  }
+}
+
+// The cohesion survives only while the contact sticks.
+template <class Interaction>
+void finish(const IqsMohrDsClb&, Interaction& c, const LawStep&) {
+  if (c.status_begin == ContactStatus::Mstck && c.status == ContactStatus::stick)
+    c.status = ContactStatus::Mstck;
+}
+
+}  // namespace lmgc::solver

@@ -1,0 +1,46 @@
+#pragma once
+// IQS_WET_DS_CLB: reversible cohesion c inside a wet halo γ ≤ Wethk, statuses in their W form,
+// static/dynamic Coulomb (contact-laws.md §3.2; mod_nlgs_3D prep :1379-1405). 2D and 3D.
+#include "solver/laws/law_forms.hpp"
+
+namespace lmgc::solver {
+
+struct IqsWetDsClb {
+  static constexpr std::string_view keyword = "IQS_WET_DS_CLB";
+  static constexpr int internals_2d = 0;
+  static IqsWetDsClb from_card(const LawParameters& p) {
+    return {p("cohen"), p("cohet"), p("Wethk"), p("dfric"), p("sfric")};
+  }
+  double cohen, cohet, wethk, dfric, sfric;
+};
+
+inline void prepare(const IqsWetDsClb& law, Interaction2D& c, const LawStep& step) {
+  iqs_form(c, step.h);
+  if (c.gap_begin <= law.wethk) {
+    c.status_begin = wet_status(c.status_begin);
+    add_cohesion(c, law.cohen, step.h);
+  } else {
+    c.status_begin = ContactStatus::noctc;
+  }
+  c.mu = static_dynamic(law.dfric, law.sfric, c.status_begin);
+}
+
+inline void prepare(const IqsWetDsClb& law, Interaction3D& c, const LawStep& step) {
+  iqs_form(c, step.h);
+  if (c.gap_begin <= law.wethk) {
+    c.status_begin = wet_status(c.status_begin);
+    c.correction = -law.cohen * step.h;
+  } else {
+    c.status_begin = ContactStatus::noctc;
+  }
+  c.mu = static_dynamic(law.dfric, law.sfric, c.status_begin);
+}
+
+inline void finish(const IqsWetDsClb&, Interaction2D& c, const LawStep&) {
+  if (c.correction(1) == 0.0) c.status = dry_status(c.status);
+}
+inline void finish(const IqsWetDsClb&, Interaction3D& c, const LawStep&) {
+  c.status = c.correction != 0.0 ? wet_status(c.status) : dry_status(c.status);
+}
+
+}  // namespace lmgc::solver

@@ -1,0 +1,69 @@
+#pragma once
+// What every contact law file builds on: the step data a law sees, the reader of a TACT_BEHAV
+// card's parameters, and the forms shared by several laws (contact-laws.md §1.3, §2). A law is
+// one header of this folder: its parameter struct (keyword, internal-variable count, reader) and
+// its `prepare` (derived Signorini–Coulomb problem, once per step) and `finish` (statuses and
+// internal variables at the end of the step) for the interactions of each dimension it has.
+// contact_law.hpp gathers them into the ContactLaw table.
+#include <functional>
+#include <string_view>
+
+#include "solver/model/contact_status.hpp"
+#include "solver/model/interaction_2d.hpp"
+#include "solver/model/interaction_3d.hpp"
+
+namespace lmgc::solver {
+
+// A law's parameter by its TACT_BEHAV.OUT name ("sfric", "restn", ...), 0 when absent.
+using LawParameters = std::function<double(std::string_view)>;
+
+struct LawStep {
+  double h = 0.0;           // time step [s]
+  double time = 0.0;        // end of the step [s]
+  bool first_step = false;  // the run's first step (Nstep = 1)
+};
+
+inline double positive(double x) {
+  return x > 0.0 ? x : 0.0;
+}
+
+// §1.3: dynamic friction when the contact was sliding at the beginning of the step.
+inline double static_dynamic(double dfric, double sfric, ContactStatus begin) {
+  return is_sliding(begin) ? dfric : sfric;
+}
+
+// "IQS form": the bodies may close an open gap within the step, no push-out when penetrated.
+template <class Interaction>
+void iqs_form(Interaction& c, double h) {
+  c.covfree(1) = positive(c.gap_begin) / h;
+}
+// "GAP form": the end-of-step gap must be >= 0 (penetrations corrected in one step).
+template <class Interaction>
+void gap_form(Interaction& c, double h) {
+  c.covfree(1) = c.gap_begin / h;
+}
+// Newton restitution: covfree = (restt v_t, restn v_n[, restt v_s]) of the velocity at t_begin;
+// inactive while the gap is open.
+template <class Interaction>
+void restitution_form(Interaction& c, double restn, double restt) {
+  if (c.gap_begin > 0.0) {
+    c.inactive = true;
+    return;
+  }
+  c.covfree = restt * c.velocity_begin;
+  c.covfree(1) = restn * c.velocity_begin(1);
+}
+
+// 2D cohesion c (force) acting through the normal (contact-laws.md §3.2): the local problem is
+// solved for rr_n = r_n + c h >= 0, i.e. covfree −= c h W e_n and r = rr + correction.
+inline void add_cohesion(Interaction2D& c, double cohesion, double h) {
+  c.covfree(0) -= cohesion * h * c.W(0, 1);
+  c.covfree(1) -= cohesion * h * c.WW(1, 1);
+  c.correction(1) = -cohesion * h;
+}
+
+// Laws without end-of-step work.
+template <class Law, class Interaction>
+void finish(const Law&, Interaction&, const LawStep&) {}
+
+}  // namespace lmgc::solver

@@ -1,0 +1,218 @@
+// The contact-law catalogue (solver/laws/): every law read from its TACT_BEHAV keyword, then one test
+// suite per law checking the derived Signorini–Coulomb problem it poses (contact-laws.md §2, §3):
+// covfree, μ, correction, inactivity and statuses, in 2D and, where the law has one, in 3D.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+
+#include "solver/laws/contact_law.hpp"
+
+namespace lmgc::solver {
+namespace {
+
+constexpr double h = 1e-3;
+
+// Parameters by name for law_from_card.
+LawParameters parameters(const std::map<std::string, double>& values) {
+  return [values](std::string_view name) {
+    const auto it = values.find(std::string(name));
+    return it == values.end() ? 0.0 : it->second;
+  };
+}
+
+Interaction2D contact_2d(double gap, ContactStatus begin = ContactStatus::nknow) {
+  Interaction2D c;
+  c.gap_begin = gap;
+  c.status_begin = begin;
+  c.velocity_begin = Eigen::Vector2d(0.3, -2.0);
+  c.W << 2.0, 0.5, 0.5, 1.0;
+  c.WW = c.W;
+  return c;
+}
+
+Interaction3D contact_3d(double gap, ContactStatus begin = ContactStatus::nknow) {
+  Interaction3D c;
+  c.gap_begin = gap;
+  c.status_begin = begin;
+  c.velocity_begin = Eigen::Vector3d(0.3, -2.0, 0.1);
+  c.W = Eigen::Matrix3d::Identity();
+  c.surface = 0.5;
+  return c;
+}
+
+TEST(ContactLawTable, EveryKeywordReadsBackToItsLaw) {
+  const char* keywords[] = {"IQS_CLB",        "IQS_DS_CLB",         "IQS_CLB_g0",      "RST_CLB",
+                            "RST_DS_CLB",     "GAP_SGR_CLB",        "GAP_SGR_DS_CLB",  "VEL_SGR_CLB",
+                            "VEL_SGR_DS_CLB", "ELASTIC_REPELL_CLB", "IQS_MOHR_DS_CLB", "IQS_WET_DS_CLB",
+                            "IQS_MAC_CZM",    "COUPLED_DOF",        "MD_JKRs"};
+  for (const char* keyword : keywords) {
+    ContactLaw law;
+    ASSERT_TRUE(law_from_card(keyword, parameters({}), law)) << keyword;
+    EXPECT_EQ(law_keyword(law), keyword);
+  }
+  ContactLaw law;
+  EXPECT_FALSE(law_from_card("NOT_A_LAW", parameters({}), law));
+  ASSERT_TRUE(law_from_card(
+      "RST_DS_CLB", parameters({{"restn", 0.5}, {"restt", 0.1}, {"dfric", 0.2}, {"sfric", 0.3}}), law));
+  const auto& rst = std::get<RstDsClb>(law);
+  EXPECT_EQ(rst.restn, 0.5);
+  EXPECT_EQ(rst.dfric, 0.2);
+}
+
+TEST(ContactLawTable, ThreeDimensionalFormsAreTheDocumentedOnes) {
+  EXPECT_TRUE(provided_in_3d(IqsClb{0.3}));
+  EXPECT_TRUE(provided_in_3d(IqsMohrDsClb{1.0, 1.0, 0.3, 0.3}));
+  EXPECT_FALSE(provided_in_3d(IqsMacCzm{}));
+  EXPECT_FALSE(provided_in_3d(ElasticRepellClb{}));
+  Interaction3D c = contact_3d(0.0);
+  EXPECT_FALSE(prepare_law(CoupledDof{}, c, LawStep{h, 0.0, true}));
+}
+
+TEST(IqsClb, ClosesAnOpenGapWithinTheStepButNeverPushesOut) {
+  Interaction2D open = contact_2d(0.002), sunk = contact_2d(-0.002);
+  prepare_law(IqsClb{0.4}, open, LawStep{h});
+  prepare_law(IqsClb{0.4}, sunk, LawStep{h});
+  EXPECT_DOUBLE_EQ(open.covfree(1), 0.002 / h);
+  EXPECT_EQ(sunk.covfree(1), 0.0);
+  EXPECT_EQ(open.mu, 0.4);
+  Interaction3D c3 = contact_3d(0.001);
+  ASSERT_TRUE(prepare_law(IqsClb{0.4}, c3, LawStep{h}));
+  EXPECT_DOUBLE_EQ(c3.covfree(1), 1.0);
+}
+
+TEST(IqsDsClb, UsesDynamicFrictionOnlyAfterSliding) {
+  Interaction2D sticking = contact_2d(0.0, ContactStatus::stick),
+                sliding = contact_2d(0.0, ContactStatus::slide);
+  prepare_law(IqsDsClb{0.2, 0.5}, sticking, LawStep{h});
+  prepare_law(IqsDsClb{0.2, 0.5}, sliding, LawStep{h});
+  EXPECT_EQ(sticking.mu, 0.5);
+  EXPECT_EQ(sliding.mu, 0.2);
+}
+
+TEST(IqsClbG0, MeasuresTheGapFromItsValueAtTheFirstStep) {
+  Interaction2D c = contact_2d(0.004);
+  prepare_law(IqsClbG0{0.3}, c, LawStep{h});
+  EXPECT_EQ(c.internal[0], 0.004);
+  EXPECT_EQ(c.covfree(1), 0.0);
+  c.status_begin = ContactStatus::stick;
+  c.gap_begin = 0.005;
+  prepare_law(IqsClbG0{0.3}, c, LawStep{h});
+  EXPECT_NEAR(c.covfree(1), 0.001 / h, 1e-9);
+}
+
+TEST(RstClb, ScalesTheIncomingVelocityAndIgnoresOpenContacts) {
+  Interaction3D c = contact_3d(0.0);
+  ASSERT_TRUE(prepare_law(RstClb{0.8, 0.5, 0.3}, c, LawStep{h}));
+  EXPECT_DOUBLE_EQ(c.covfree(1), 0.8 * -2.0);
+  EXPECT_DOUBLE_EQ(c.covfree(0), 0.5 * 0.3);
+  EXPECT_DOUBLE_EQ(c.covfree(2), 0.5 * 0.1);
+  Interaction2D open = contact_2d(0.01);
+  prepare_law(RstClb{0.8, 0.5, 0.3}, open, LawStep{h});
+  EXPECT_TRUE(open.inactive);
+}
+
+TEST(RstDsClb, RestitutionWithDynamicFrictionAfterSliding) {
+  Interaction2D c = contact_2d(-0.001, ContactStatus::slide);
+  prepare_law(RstDsClb{0.5, 0.0, 0.1, 0.6}, c, LawStep{h});
+  EXPECT_DOUBLE_EQ(c.covfree(1), 0.5 * -2.0);
+  EXPECT_EQ(c.mu, 0.1);
+}
+
+TEST(GapSgrClb, CorrectsAPenetrationWithinOneStep) {
+  Interaction2D c = contact_2d(-0.002);
+  prepare_law(GapSgrClb{0.3}, c, LawStep{h});
+  EXPECT_DOUBLE_EQ(c.covfree(1), -0.002 / h);
+}
+
+TEST(GapSgrDsClb, GapFormWithStaticFrictionWhileSticking) {
+  Interaction3D c = contact_3d(-0.001, ContactStatus::stick);
+  ASSERT_TRUE(prepare_law(GapSgrDsClb{0.1, 0.6}, c, LawStep{h}));
+  EXPECT_DOUBLE_EQ(c.covfree(1), -1.0);
+  EXPECT_EQ(c.mu, 0.6);
+}
+
+TEST(VelSgrClb, ActsOnlyOnceTheGapIsClosed) {
+  Interaction2D open = contact_2d(0.001), closed = contact_2d(0.0);
+  prepare_law(VelSgrClb{0.3}, open, LawStep{h});
+  prepare_law(VelSgrClb{0.3}, closed, LawStep{h});
+  EXPECT_TRUE(open.inactive);
+  EXPECT_FALSE(closed.inactive);
+  EXPECT_EQ(closed.covfree(1), 0.0);
+}
+
+TEST(VelSgrDsClb, VelocitySignoriniWithDynamicFrictionAfterSliding) {
+  Interaction3D c = contact_3d(-0.001, ContactStatus::slide);
+  ASSERT_TRUE(prepare_law(VelSgrDsClb{0.1, 0.6}, c, LawStep{h}));
+  EXPECT_FALSE(c.inactive);
+  EXPECT_EQ(c.mu, 0.1);
+}
+
+TEST(ElasticRepellClb, AddsTheSpringComplianceToTheNormalBlock) {
+  Interaction2D c = contact_2d(-0.001);
+  prepare_law(ElasticRepellClb{1e6, 0.3}, c, LawStep{h});
+  EXPECT_DOUBLE_EQ(c.WW(1, 1), 1.0 + 1.0 / (1e6 * h * h));
+  EXPECT_DOUBLE_EQ(c.covfree(1), -1.0);
+}
+
+TEST(IqsMohrDsClb, IsCohesiveFromTheFirstStepUntilItStopsSticking) {
+  Interaction3D c = contact_3d(0.0);
+  ASSERT_TRUE(prepare_law(IqsMohrDsClb{100.0, 50.0, 0.2, 0.3}, c, LawStep{h, 0.0, true}));
+  EXPECT_EQ(c.status_begin, ContactStatus::Mstck);
+  EXPECT_DOUBLE_EQ(c.correction, -100.0 * 0.5 * h);  // cohesion × contact surface
+  EXPECT_EQ(c.mu, 0.5);                              // cohet / cohen
+  c.status = ContactStatus::stick;
+  finish_law(IqsMohrDsClb{100.0, 50.0, 0.2, 0.3}, c, LawStep{h});
+  EXPECT_EQ(c.status, ContactStatus::Mstck);
+  // Born after the first step: never cohesive (mod_nlgs_3D).
+  Interaction3D late = contact_3d(0.0);
+  ASSERT_TRUE(prepare_law(IqsMohrDsClb{100.0, 50.0, 0.2, 0.3}, late, LawStep{h, 0.0, false}));
+  EXPECT_EQ(late.correction, 0.0);
+  // 2D: cohesion × contact length, shifted through W.
+  Interaction2D c2 = contact_2d(0.0);
+  c2.length = 2.0;
+  prepare_law(IqsMohrDsClb{100.0, 50.0, 0.2, 0.3}, c2, LawStep{h});
+  EXPECT_DOUBLE_EQ(c2.correction(1), -200.0 * h);
+  EXPECT_DOUBLE_EQ(c2.covfree(0), -200.0 * h * 0.5);
+}
+
+TEST(IqsWetDsClb, IsCohesiveInsideTheWetHaloOnly) {
+  Interaction3D wet = contact_3d(0.0005, ContactStatus::stick), dry = contact_3d(0.002, ContactStatus::stick);
+  const IqsWetDsClb law{10.0, 0.0, 0.001, 0.2, 0.3};
+  ASSERT_TRUE(prepare_law(law, wet, LawStep{h}));
+  ASSERT_TRUE(prepare_law(law, dry, LawStep{h}));
+  EXPECT_EQ(wet.status_begin, ContactStatus::Wstck);
+  EXPECT_DOUBLE_EQ(wet.correction, -10.0 * h);
+  EXPECT_EQ(dry.status_begin, ContactStatus::noctc);
+  EXPECT_EQ(dry.correction, 0.0);
+}
+
+TEST(IqsMacCzm, StartsUndamagedAndDamagesUnderOpening) {
+  const IqsMacCzm law{0.3, 0.3, 1e6, 1e6, 0.0, 10.0};
+  Interaction2D c = contact_2d(0.0);
+  prepare_law(law, c, LawStep{h});
+  EXPECT_EQ(c.internal[3], 1.0);  // β
+  EXPECT_TRUE(c.cohesive);
+  EXPECT_EQ(c.mu, 0.0);              // friction × (1 − β)
+  c.u = Eigen::Vector2d(0.0, 10.0);  // opening 1 cm in the step
+  finish_law(law, c, LawStep{h, 0.5, false});
+  EXPECT_LT(c.internal[3], 1.0);
+  EXPECT_EQ(c.internal[4], 0.5);  // TPSini: time of the first damage
+}
+
+TEST(CoupledDof, HasNoFriction) {
+  Interaction2D c = contact_2d(0.0);
+  c.mu = 1.0;
+  prepare_law(CoupledDof{}, c, LawStep{h});
+  EXPECT_EQ(c.mu, 0.0);
+}
+
+TEST(NoNlgsBranch, IsVelocitySignoriniWithoutGapTerm) {
+  Interaction2D c = contact_2d(0.003);
+  prepare_law(NoNlgsBranch{0.25}, c, LawStep{h});
+  EXPECT_EQ(c.covfree(1), 0.0);
+  EXPECT_EQ(c.mu, 0.25);
+}
+
+}  // namespace
+}  // namespace lmgc::solver
