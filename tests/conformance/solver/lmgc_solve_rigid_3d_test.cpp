@@ -69,6 +69,9 @@ TEST(LmgcSolveRigid3D, PeriodicBoxFedByASourcePointFollowsLmgc90UntilTheFirstBod
   const fs::path reference = example / "reference_lmgc90" / "POSTPRO";
   const ExampleRun r = run_example(example, 950 / kScale, "compare_");
   ASSERT_EQ(r.run.exit_code, 0);
+  // BODIES.OUT byte for byte: 100 POLYR with their volume moments, avrd and reoriented faces.
+  EXPECT_EQ(read_file(r.case_dir / "OUTBOX" / "BODIES.OUT"),
+            read_maybe_gzip(example / "reference_lmgc90" / "OUTBOX" / "BODIES.OUT.gz"));
   for (const char* body : {"BODY_0000002.DAT", "BODY_0000003.DAT"}) {
     SCOPED_TRACE(body);
     const auto ours = body_track(r.case_dir / "POSTPRO" / body);
