@@ -79,6 +79,23 @@ bool detect_sphere_cylinder(const Vector3d& x, double r_s, const PlacedCylinder&
   return true;
 }
 
+bool detect_sphere_tube(const Vector3d& x, double r_s, const PlacedCylinder& c, double alert,
+                        ContactGeometry3D& g) {
+  const Vector3d d = x - c.centre;
+  const double h = d.dot(c.axis);
+  if (std::abs(h) >= c.half_length) return false;
+  const Vector3d radial = d - h * c.axis;
+  const double rho = radial.norm();
+  if (rho <= 0.0) return false;
+  g.gap = c.radius - rho - r_s;
+  if (g.gap >= alert) return false;
+  g.normal = -radial / rho;
+  g.point = x - r_s * g.normal;
+  sphere_sphere_tangents(g.normal, g.tangent, g.second_tangent);
+  g.second_tangent = g.normal.cross(g.tangent);  // SPDCx: s = n × t, as SPCDx
+  return true;
+}
+
 bool detect_cylinder_cylinder(const PlacedCylinder& cd, const PlacedCylinder& an, double alert,
                               CylinderContact& out) {
   out.count = 0;

@@ -26,6 +26,12 @@ struct PlacedCylinder {
 bool detect_sphere_cylinder(const Eigen::Vector3d& sphere_centre, double sphere_radius,
                             const PlacedCylinder& cylinder, double alert, ContactGeometry3D& geometry);
 
+// SPDCx (mod_SPDCx compute_contact_SPDCx): a sphere inside a DNLYC, an open tube of radius R and
+// half-length H: within the tube's length, the inner wall, gap R − ρ − r_s, n towards the axis
+// (LMGC90's end branches have gap errors and are not reproduced: beyond the ends, no contact).
+bool detect_sphere_tube(const Eigen::Vector3d& sphere_centre, double sphere_radius,
+                        const PlacedCylinder& tube, double alert, ContactGeometry3D& geometry);
+
 // CDCDx (mod_CDCDx compute_contact_CDCDx): capsules. Axes within 1.8° of parallel: up to two points
 // (the caps of each over the other's axis); otherwise one point, the closest points of the two
 // axis segments. Each point: n along the axis points' difference, gap = their distance − r_cd − r_an,

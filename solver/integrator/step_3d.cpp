@@ -292,6 +292,13 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
       placed.radius = c.radius;
       return placed;
     };
+    if (v.family == PairFamily3D::SPDCx) {
+      ContactGeometry3D g;
+      if (detect_sphere_tube(centre[i], cd.radius, cylinder(j, image), v.alert, g))
+        add_point(i, j, image, row, g.tangent, g.normal, g.second_tangent, g.point, g.gap, 0,
+                  lmgc_pi * 0.01 * cd.radius * cd.radius);  // get_surf_SPDCx = π (0.1 r_s)²
+      return true;
+    }
     if (v.family == PairFamily3D::SPCDx) {
       ContactGeometry3D g;
       if (detect_sphere_cylinder(centre[i], cd.radius, cylinder(j, image), v.alert, g))

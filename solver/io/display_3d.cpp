@@ -50,7 +50,7 @@ BodyPoints body_points(const Scene3D& scene) {
       // box (r, r, H) along its axes); VTK_HEXAHEDRON order: the face at -axe3 counter-clockwise
       // about +axe3, then the face at +axe3.
       const Matrix3d axes = b.frame[i] * c.local_frame;
-      const Vector3d half = c.shape == ContactorShape3D::cylinder
+      const Vector3d half = c.shape == ContactorShape3D::cylinder || c.shape == ContactorShape3D::tube
                                 ? Vector3d(c.radius, c.radius, c.half_axes.z())
                                 : Vector3d(c.half_axes);
       constexpr int kCorner[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},

@@ -78,6 +78,8 @@ std::string_view written_type(const Contactor3D& c) {
       return "POLYR";
     case ContactorShape3D::cylinder:
       return "CYLND";
+    case ContactorShape3D::tube:
+      return "DNLYC";
   }
   return "PLANx";
 }
@@ -119,10 +121,13 @@ grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& 
   std::int64_t cylinders = 0;
   for (std::size_t k = 0; k < scene.contactors.size(); ++k)
     if (scene.contactors[k].shape == ContactorShape3D::cylinder) sphere_serial[k] = ++cylinders;
+  std::int64_t tubes = 0;
+  for (std::size_t k = 0; k < scene.contactors.size(); ++k)
+    if (scene.contactors[k].shape == ContactorShape3D::tube) sphere_serial[k] = ++tubes;
   // LMGC90's 3D module order (state-and-outputs.md §1.1): ... PRPLx, PRPRx, ... SPPLx, SPPRx, SPSPx.
   constexpr PairFamily3D kWriteOrder[] = {PairFamily3D::CDCDx, PairFamily3D::CDPLx, PairFamily3D::PRPLx,
-                                          PairFamily3D::PRPRx, PairFamily3D::SPCDx, PairFamily3D::SPPLx,
-                                          PairFamily3D::SPSPx};
+                                          PairFamily3D::PRPRx, PairFamily3D::SPCDx, PairFamily3D::SPDCx,
+                                          PairFamily3D::SPPLx, PairFamily3D::SPSPx};
   for (PairFamily3D family : kWriteOrder) {
     std::vector<std::size_t> members;
     for (std::size_t k = 0; k < state.contacts.size(); ++k)
@@ -153,7 +158,7 @@ grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& 
       if (has_vertex_column(family)) out.integers.push_back(Integer{c.vertex});
       out.integers.push_back(Integer{an.body + 1});
       out.integers.push_back(Integer{an.rank});
-      if (family == PairFamily3D::SPSPx || family == PairFamily3D::SPCDx)
+      if (family == PairFamily3D::SPSPx || family == PairFamily3D::SPCDx || family == PairFamily3D::SPDCx)
         out.integers.push_back(Integer{sphere_serial[static_cast<std::size_t>(c.antagonist)]});
       for (const grammar::VectorLineKind& line : kind->vectors) {
         grammar::VlocRlocVector v;

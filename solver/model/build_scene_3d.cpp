@@ -85,8 +85,8 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
         c.bounding_radius = c.half_axes.norm();
       } else if (c.type == "POLYR") {
         c.shape = ContactorShape3D::polyhedron;
-      } else if (c.type == "CYLND") {
-        c.shape = ContactorShape3D::cylinder;
+      } else if (c.type == "CYLND" || c.type == "DNLYC") {
+        c.shape = c.type == "CYLND" ? ContactorShape3D::cylinder : ContactorShape3D::tube;
         c.radius = shape.radius;
         c.half_axes = shape.half_axes;  // (0, 0, High)
         c.local_frame = shape.frame;
@@ -131,7 +131,8 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
     for (std::size_t k = 0; k < contactors.size(); ++k) {
       Contactor3D& c = contactors[k];
       c.shift = p.contactor_shifts[k];
-      if (c.shape == ContactorShape3D::plane || c.shape == ContactorShape3D::cylinder)
+      if (c.shape == ContactorShape3D::plane || c.shape == ContactorShape3D::cylinder ||
+          c.shape == ContactorShape3D::tube)
         c.local_frame = p.contactor_frames[k];
       if (c.shape == ContactorShape3D::polyhedron) {
         Polyhedron shape;

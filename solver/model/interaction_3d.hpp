@@ -12,8 +12,8 @@
 namespace lmgc::solver {
 
 // 3D interaction families, in LMGC90's sweep order for these contactors.
-enum class PairFamily3D : std::uint8_t { SPSPx, SPPLx, PRPRx, PRPLx, SPCDx, CDCDx, CDPLx };
-inline constexpr int kPairFamily3DCount = 7;
+enum class PairFamily3D : std::uint8_t { SPSPx, SPPLx, PRPRx, PRPLx, SPCDx, CDCDx, CDPLx, SPDCx };
+inline constexpr int kPairFamily3DCount = 8;
 
 // The family of a (candidate, antagonist) contactor type pair as `$seety` names them; false for
 // pairs the rigid 3D solver does not detect.
@@ -28,7 +28,7 @@ inline bool pair_family_3d(const std::string& candidate, const std::string& anta
       {"SPHER", "SPHER", PairFamily3D::SPSPx}, {"SPHER", "PLANx", PairFamily3D::SPPLx},
       {"POLYR", "POLYR", PairFamily3D::PRPRx}, {"POLYR", "PLANx", PairFamily3D::PRPLx},
       {"SPHER", "CYLND", PairFamily3D::SPCDx}, {"CYLND", "CYLND", PairFamily3D::CDCDx},
-      {"CYLND", "PLANx", PairFamily3D::CDPLx}};
+      {"CYLND", "PLANx", PairFamily3D::CDPLx}, {"SPHER", "DNLYC", PairFamily3D::SPDCx}};
   for (const Row& row : kRows)
     if (candidate == row.candidate && antagonist == row.antagonist) {
       family = row.family;

@@ -16,7 +16,7 @@
 
 namespace lmgc::solver {
 
-enum class ContactorShape3D : std::uint8_t { sphere, plane, polyhedron, cylinder };
+enum class ContactorShape3D : std::uint8_t { sphere, plane, polyhedron, cylinder, tube };
 
 struct Contactor3D {
   ContactorShape3D shape = ContactorShape3D::sphere;

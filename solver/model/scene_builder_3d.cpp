@@ -87,6 +87,23 @@ int SceneBuilder3D::add_cylinder(const Eigen::Vector3d& centre, const Eigen::Mat
   return body;
 }
 
+int SceneBuilder3D::add_fixed_tube(const Eigen::Vector3d& centre, const Eigen::Matrix3d& frame,
+                                   double half_length, double radius, const std::string& color) {
+  const int body = add_body(centre, 1.0, Eigen::Vector3d::Ones());
+  set_frame(body, frame);
+  scene_.bodies.driven_mask[static_cast<std::size_t>(body)] = 0x3f;
+  Contactor3D c;
+  c.shape = ContactorShape3D::tube;
+  c.body = body;
+  c.type = "DNLYC";
+  c.color = color;
+  c.radius = radius;
+  c.half_axes = Eigen::Vector3d(0.0, 0.0, half_length);
+  c.bounding_radius = half_length + radius;
+  scene_.contactors.push_back(c);
+  return body;
+}
+
 int SceneBuilder3D::add_fixed_plane(const Eigen::Vector3d& centre, const Eigen::Matrix3d& frame,
                                     const Eigen::Vector3d& half_axes, const std::string& color) {
   const int body = add_body(centre, 1.0, Eigen::Vector3d::Ones());

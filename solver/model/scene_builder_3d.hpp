@@ -23,6 +23,10 @@ class SceneBuilder3D {
   // cylinder: m = ρ 2π r² H, I1 = I2 = m (r²/4 + H²/3), I3 = m r²/2).
   int add_cylinder(const Eigen::Vector3d& centre, const Eigen::Matrix3d& frame, double half_length,
                    double radius, double density, const std::string& color = "BLEUx");
+  // A fixed DNLYC (open tube: spheres inside) of half-length H and radius r, axis along the third
+  // column of `frame`.
+  int add_fixed_tube(const Eigen::Vector3d& centre, const Eigen::Matrix3d& frame, double half_length,
+                     double radius, const std::string& color = "VERTx");
   int add_fixed_plane(const Eigen::Vector3d& centre, const Eigen::Matrix3d& frame,
                       const Eigen::Vector3d& half_axes, const std::string& color = "VERTx");
   int add_law(const std::string& nickname, const ContactLaw& law);

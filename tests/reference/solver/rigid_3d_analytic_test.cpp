@@ -382,3 +382,30 @@ TEST(Rigid3DAnalytic, ParallelCylindersTouchAtTwoPointsSharingTheWeight) {
 
 }  // namespace
 }  // namespace lmgc::solver
+
+namespace lmgc::solver {
+namespace {
+
+// A sphere resting at the bottom of a fixed horizontal drum (DNLYC, SPDCx): the inner wall carries
+// its weight, the normal points from the wall to the axis (up), and it stays put.
+TEST(Rigid3DAnalytic, SphereInsideADrumRestsOnItsInnerWall) {
+  const double R = 0.5, r = 0.1, h = 1e-3;
+  SceneBuilder3D b;
+  const int ball = b.add_sphere(Vector3d(0.0, 0.0, -(R - r)), r, 1000.0);
+  b.add_fixed_tube(Vector3d::Zero(), axis_along(Vector3d::UnitX()), 1.0, R);
+  b.add_law("iqs05", IqsClb{0.5});
+  b.see("SPHER", "BLEUx", "iqs05", "DNLYC", "VERTx", 0.001);
+  Scene3D scene = b.build();
+  RunState3D state = run_state(h);
+  for (int i = 0; i < 100; ++i) step_3d(scene, state, converged_options());
+  ASSERT_EQ(state.contacts.size(), 1u);
+  const Interaction3D& c = state.contacts.front();
+  EXPECT_EQ(c.family, PairFamily3D::SPDCx);
+  EXPECT_TRUE(c.frame.row(1).transpose().isApprox(Vector3d::UnitZ()));
+  const double weight = scene.bodies.mass[static_cast<std::size_t>(ball)] * g;
+  EXPECT_NEAR(c.r(1) / h, weight, 1e-6 * weight);
+  EXPECT_NEAR(centre_of(scene, ball).z(), -(R - r), 1e-8);
+}
+
+}  // namespace
+}  // namespace lmgc::solver

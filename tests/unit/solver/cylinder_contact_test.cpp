@@ -73,3 +73,23 @@ TEST(CylinderCylinder, ParallelAxesSideBySideGiveTwoPointsAndEndToEndOne) {
 
 }  // namespace
 }  // namespace lmgc::solver
+
+namespace lmgc::solver {
+namespace {
+
+TEST(SphereTube, InnerWallWithinTheLengthOnly) {
+  PlacedCylinder tube;
+  tube.axis = Eigen::Vector3d::UnitZ();
+  tube.half_length = 1.0;
+  tube.radius = 0.5;
+  ContactGeometry3D g;
+  ASSERT_TRUE(detect_sphere_tube(Eigen::Vector3d(0.35, 0.0, 0.2), 0.1, tube, 0.1, g));
+  EXPECT_NEAR(g.gap, 0.05, 1e-14);
+  EXPECT_TRUE(g.normal.isApprox(-Eigen::Vector3d::UnitX()));  // towards the axis
+  EXPECT_TRUE(g.point.isApprox(Eigen::Vector3d(0.45, 0.0, 0.2)));
+  EXPECT_FALSE(detect_sphere_tube(Eigen::Vector3d(0.35, 0.0, 1.2), 0.1, tube, 0.1, g));  // beyond an end
+  EXPECT_FALSE(detect_sphere_tube(Eigen::Vector3d(0.1, 0.0, 0.0), 0.1, tube, 0.1, g));   // near the axis
+}
+
+}  // namespace
+}  // namespace lmgc::solver
