@@ -1,6 +1,7 @@
 #include "solver/io/state_files_3d.hpp"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <string>
 #include <string_view>
@@ -111,19 +112,12 @@ grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& 
   file.step = Integer{state.step};
   file.time = Real{state.time};
   const double h = state.h;
-  // Serial index of each sphere among the scene's spheres (SPHER and SPHEb: LMGC90's SPHER list),
-  // the iantac of SPSPx; of each cylinder among the cylinders, the iantac of SPCDx.
-  std::vector<std::int64_t> sphere_serial(scene.contactors.size(), 0);
-  std::int64_t spheres = 0;
+  // Serial index of each contactor among the scene's contactors of its shape (spheres: SPHER and
+  // SPHEb, LMGC90's SPHER list): the trailing iantac of SPSPx, SPCDx and SPDCx.
+  std::vector<std::int64_t> serial(scene.contactors.size(), 0);
+  std::array<std::int64_t, 8> per_shape{};
   for (std::size_t k = 0; k < scene.contactors.size(); ++k)
-    if (scene.contactors[k].shape == ContactorShape3D::sphere) sphere_serial[k] = ++spheres;
-  // The same for cylinders: SPCDx ends with the CYLND's serial index.
-  std::int64_t cylinders = 0;
-  for (std::size_t k = 0; k < scene.contactors.size(); ++k)
-    if (scene.contactors[k].shape == ContactorShape3D::cylinder) sphere_serial[k] = ++cylinders;
-  std::int64_t tubes = 0;
-  for (std::size_t k = 0; k < scene.contactors.size(); ++k)
-    if (scene.contactors[k].shape == ContactorShape3D::tube) sphere_serial[k] = ++tubes;
+    serial[k] = ++per_shape[static_cast<std::size_t>(scene.contactors[k].shape)];
   // LMGC90's 3D module order (state-and-outputs.md §1.1): ... PRPLx, PRPRx, ... SPPLx, SPPRx, SPSPx.
   constexpr PairFamily3D kWriteOrder[] = {PairFamily3D::CDCDx, PairFamily3D::CDPLx, PairFamily3D::PRPLx,
                                           PairFamily3D::PRPRx, PairFamily3D::SPCDx, PairFamily3D::SPDCx,
@@ -159,7 +153,7 @@ grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& 
       out.integers.push_back(Integer{an.body + 1});
       out.integers.push_back(Integer{an.rank});
       if (family == PairFamily3D::SPSPx || family == PairFamily3D::SPCDx || family == PairFamily3D::SPDCx)
-        out.integers.push_back(Integer{sphere_serial[static_cast<std::size_t>(c.antagonist)]});
+        out.integers.push_back(Integer{serial[static_cast<std::size_t>(c.antagonist)]});
       for (const grammar::VectorLineKind& line : kind->vectors) {
         grammar::VlocRlocVector v;
         for (int k = 0; k < line.count; ++k) {

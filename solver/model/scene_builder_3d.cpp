@@ -68,6 +68,28 @@ int SceneBuilder3D::add_sphere_cluster(const Eigen::Vector3d& centre,
   return body;
 }
 
+Contactor3D& SceneBuilder3D::add_contactor(int body, ContactorShape3D shape, const char* type,
+                                           const std::string& color) {
+  Contactor3D& c = scene_.contactors.emplace_back();
+  c.shape = shape;
+  c.body = body;
+  c.type = type;
+  c.color = color;
+  return c;
+}
+
+void SceneBuilder3D::add_axial_contactor(int body, ContactorShape3D shape, const char* type,
+                                         const std::string& color, double half_length, double radius) {
+  Contactor3D& c = add_contactor(body, shape, type, color);
+  c.radius = radius;
+  c.half_axes = Eigen::Vector3d(0.0, 0.0, half_length);
+  c.bounding_radius = half_length + radius;
+}
+
+void SceneBuilder3D::fix(int body) {
+  scene_.bodies.driven_mask[static_cast<std::size_t>(body)] = 0x3f;
+}
+
 int SceneBuilder3D::add_cylinder(const Eigen::Vector3d& centre, const Eigen::Matrix3d& frame,
                                  double half_length, double radius, double density,
                                  const std::string& color) {
@@ -75,15 +97,7 @@ int SceneBuilder3D::add_cylinder(const Eigen::Vector3d& centre, const Eigen::Mat
   const double across = mass * (radius * radius / 4.0 + half_length * half_length / 3.0);
   const int body = add_body(centre, mass, Eigen::Vector3d(across, across, mass * radius * radius / 2.0));
   set_frame(body, frame);
-  Contactor3D c;
-  c.shape = ContactorShape3D::cylinder;
-  c.body = body;
-  c.type = "CYLND";
-  c.color = color;
-  c.radius = radius;
-  c.half_axes = Eigen::Vector3d(0.0, 0.0, half_length);
-  c.bounding_radius = half_length + radius;
-  scene_.contactors.push_back(c);
+  add_axial_contactor(body, ContactorShape3D::cylinder, "CYLND", color, half_length, radius);
   return body;
 }
 
@@ -91,32 +105,19 @@ int SceneBuilder3D::add_fixed_tube(const Eigen::Vector3d& centre, const Eigen::M
                                    double half_length, double radius, const std::string& color) {
   const int body = add_body(centre, 1.0, Eigen::Vector3d::Ones());
   set_frame(body, frame);
-  scene_.bodies.driven_mask[static_cast<std::size_t>(body)] = 0x3f;
-  Contactor3D c;
-  c.shape = ContactorShape3D::tube;
-  c.body = body;
-  c.type = "DNLYC";
-  c.color = color;
-  c.radius = radius;
-  c.half_axes = Eigen::Vector3d(0.0, 0.0, half_length);
-  c.bounding_radius = half_length + radius;
-  scene_.contactors.push_back(c);
+  fix(body);
+  add_axial_contactor(body, ContactorShape3D::tube, "DNLYC", color, half_length, radius);
   return body;
 }
 
 int SceneBuilder3D::add_fixed_plane(const Eigen::Vector3d& centre, const Eigen::Matrix3d& frame,
                                     const Eigen::Vector3d& half_axes, const std::string& color) {
   const int body = add_body(centre, 1.0, Eigen::Vector3d::Ones());
-  scene_.bodies.driven_mask[static_cast<std::size_t>(body)] = 0x3f;
-  Contactor3D c;
-  c.shape = ContactorShape3D::plane;
-  c.body = body;
-  c.type = "PLANx";
-  c.color = color;
+  fix(body);
+  Contactor3D& c = add_contactor(body, ContactorShape3D::plane, "PLANx", color);
   c.local_frame = frame;
   c.half_axes = half_axes;
   c.bounding_radius = half_axes.norm();
-  scene_.contactors.push_back(c);
   return body;
 }
 

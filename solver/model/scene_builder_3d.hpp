@@ -40,6 +40,12 @@ class SceneBuilder3D {
 
  private:
   int add_body(const Eigen::Vector3d& centre, double mass, const Eigen::Vector3d& inertia);
+  // A contactor of `body`, appended to the scene (its geometry left to the caller).
+  Contactor3D& add_contactor(int body, ContactorShape3D shape, const char* type, const std::string& color);
+  // CYLND / DNLYC: radius, half-length along the third axis, bounding radius H + r.
+  void add_axial_contactor(int body, ContactorShape3D shape, const char* type, const std::string& color,
+                           double half_length, double radius);
+  void fix(int body);  // all six velocities imposed to 0
   Scene3D scene_;
 };
 

@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <regex>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "grammar/dof/parser.hpp"
 #include "tests/support/run_tool.hpp"
@@ -115,22 +117,41 @@ inline grammar::DofFile read_dof(const std::filesystem::path& path) {
   return grammar::parse_dof(grammar::SourceText(path.string(), read_file(path)), sink);
 }
 
+// The X values of every body node of a DOF file, the first `dofs` of each node.
+inline std::vector<double> node_displacements(const grammar::DofFile& file,
+                                              std::size_t dofs = std::numeric_limits<std::size_t>::max()) {
+  std::vector<double> x;
+  for (const auto& section : file.sections)
+    for (const auto& body : section.bodies)
+      for (const auto& node : body.nodes)
+        for (std::size_t d = 0; d < dofs && d < node.x.size(); ++d) x.push_back(node.x[d].value);
+  return x;
+}
+
+// Largest |X_ours - X_lmgc| over the first `dofs` of every node (infinite when the files do not hold
+// the same bodies), and the largest |X_lmgc|.
+struct PositionDifference {
+  double largest = INFINITY;
+  double scale = 0.0;
+};
+inline PositionDifference position_difference(const grammar::DofFile& ours, const grammar::DofFile& lmgc,
+                                              std::size_t dofs = std::numeric_limits<std::size_t>::max()) {
+  const std::vector<double> a = node_displacements(ours, dofs), b = node_displacements(lmgc, dofs);
+  PositionDifference out;
+  if (a.size() != b.size() || b.empty()) return out;
+  out.largest = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    out.largest = std::max(out.largest, std::abs(a[k] - b[k]));
+    out.scale = std::max(out.scale, std::abs(b[k]));
+  }
+  return out;
+}
+
 // Largest |X_ours - X_lmgc| over every body, relative to the largest |X_lmgc| (infinite when the
 // files do not hold the same bodies).
 inline double relative_position_difference(const grammar::DofFile& ours, const grammar::DofFile& lmgc) {
-  std::vector<double> a, b;
-  for (const auto* file : {&ours, &lmgc})
-    for (const auto& section : file->sections)
-      for (const auto& body : section.bodies)
-        for (const auto& node : body.nodes)
-          for (const auto& x : node.x) (file == &ours ? a : b).push_back(x.value);
-  if (a.size() != b.size() || b.empty()) return INFINITY;
-  double difference = 0.0, scale = 0.0;
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    difference = std::max(difference, std::abs(a[k] - b[k]));
-    scale = std::max(scale, std::abs(b[k]));
-  }
-  return difference / std::max(scale, 1e-300);
+  const PositionDifference d = position_difference(ours, lmgc);
+  return d.largest / std::max(d.scale, 1e-300);
 }
 
 inline std::vector<std::filesystem::path> rigid_examples(const std::string& family) {
