@@ -51,6 +51,8 @@ ContactStatus wet_status(ContactStatus s) {
       return ContactStatus::Wnctc;
     case ContactStatus::stick:
       return ContactStatus::Wstck;
+    case ContactStatus::slide:
+      return ContactStatus::Wslid;
     case ContactStatus::slibw:
       return ContactStatus::Wslbw;
     case ContactStatus::slifw:
@@ -68,6 +70,8 @@ ContactStatus dry_status(ContactStatus s) {
       return ContactStatus::noctc;
     case ContactStatus::Wstck:
       return ContactStatus::stick;
+    case ContactStatus::Wslid:
+      return ContactStatus::slide;
     case ContactStatus::Wslbw:
       return ContactStatus::slibw;
     case ContactStatus::Wslfw:
@@ -85,6 +89,8 @@ ContactStatus cohesive_status(ContactStatus s) {
       return ContactStatus::Cnctc;
     case ContactStatus::stick:
       return ContactStatus::Cstck;
+    case ContactStatus::slide:
+      return ContactStatus::Cslid;
     case ContactStatus::slibw:
       return ContactStatus::Cslbw;
     case ContactStatus::slifw:
