@@ -15,7 +15,9 @@
 #include "solver/bodies/rigid_3d_properties.hpp"  // lmgc_pi
 #include "solver/detection/cylinder_contact.hpp"
 #include "solver/detection/pair_geometry_3d.hpp"
+#include "solver/detection/point_contact.hpp"
 #include "solver/detection/polyhedron_contact.hpp"
+#include "solver/nlgs/law_local_problem_3d.hpp"
 #include "solver/nlgs/local_solver_3d.hpp"
 #include "spatial/multilevel_grid.hpp"
 
@@ -175,14 +177,16 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
   std::vector<Vector3d> centre(n);
   std::vector<double> radii(n);
   std::vector<std::uint8_t> placed(n);
+  // PTPT3 rows link fixed point pairs (below): their alerts do not size the grid, points stay out.
   double max_alert = 0.0;
-  for (const Visibility3D& v : scene.visibility) max_alert = std::max(max_alert, v.alert);
+  for (const Visibility3D& v : scene.visibility)
+    if (v.family != PairFamily3D::PTPT3) max_alert = std::max(max_alert, v.alert);
   for (std::size_t k = 0; k < n; ++k) {
     const Contactor3D& c = scene.contactors[k];
     const auto body = static_cast<std::size_t>(c.body);
     centre[k] = body_centre[body] + b.frame_detection[body] * c.shift;
     radii[k] = c.bounding_radius;
-    placed[k] = b.visible[body];
+    placed[k] = c.shape != ContactorShape3D::point && b.visible[body];
   }
   // The visibility row of an ordered (candidate, antagonist) pair, -1 if none.
   const auto row_of = [&](const Contactor3D& cd, const Contactor3D& an) {
@@ -227,10 +231,12 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
 
   std::vector<Interaction3D> found;
   // One interaction per contact point: local frame rows (t, n, s), lever rows, Delassus block.
-  // `image`: the antagonist's periodic shift (zero but across a periodic side).
+  // `image`: the antagonist's periodic shift (zero but across a periodic side). The levers reach
+  // the contact point from both bodies, but PTPT3's reach each body's own point (`antagonist_point`).
   const auto add_point = [&](std::size_t i, std::size_t j, const Vector3d& image, int row, const Vector3d& t,
                              const Vector3d& normal, const Vector3d& s, const Vector3d& point, double gap,
-                             int vertex, double surface) {
+                             int vertex, double surface, const Vector3d* candidate_point = nullptr,
+                             const Vector3d* antagonist_point = nullptr) {
     const Contactor3D& cd = scene.contactors[i];
     const Contactor3D& an = scene.contactors[j];
     const Visibility3D& v = scene.visibility[static_cast<std::size_t>(row)];
@@ -251,7 +257,9 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     c.gap_begin = gap;
     for (int side = 0; side < 2; ++side) {
       const auto body = static_cast<std::size_t>(side == 0 ? cd.body : an.body);
-      const Vector3d lever = point - body_centre[body] - (side == 0 ? Vector3d::Zero() : image);
+      const Vector3d* own = side == 0 ? candidate_point : antagonist_point;
+      const Vector3d lever =
+          (own ? *own : point) - body_centre[body] - (side == 0 ? Vector3d::Zero() : image);
       Matrix3d& G = side == 0 ? c.lever_candidate : c.lever_antagonist;
       for (int k = 0; k < 3; ++k)
         G.row(k) =
@@ -268,6 +276,7 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     const Contactor3D& cd = scene.contactors[i];
     const Contactor3D& an = scene.contactors[j];
     if (cd.body == an.body || cd.shape == ContactorShape3D::plane) return false;
+    if (cd.shape == ContactorShape3D::point || an.shape == ContactorShape3D::point) return true;
     const int row = row_of(cd, an);
     if (row < 0) return false;
     const Visibility3D& v = scene.visibility[static_cast<std::size_t>(row)];
@@ -415,6 +424,23 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     // As in 2D: the lower index is the candidate when a visibility row reads the pair that way.
     if (!fine(a, c, image)) fine(c, a, Vector3d(-image));
   });
+  // PTPT3: every link of two visible points, at their unwrapped detection positions.
+  for (const PointLink3D& link : scene.point_links) {
+    const auto i = static_cast<std::size_t>(link.candidate), j = static_cast<std::size_t>(link.antagonist);
+    const auto cd_body = static_cast<std::size_t>(scene.contactors[i].body);
+    const auto an_body = static_cast<std::size_t>(scene.contactors[j].body);
+    if (!b.visible[cd_body] || !b.visible[an_body]) continue;
+    const auto position = [&](std::size_t k, std::size_t body) {
+      return Vector3d(b.reference[body] + b.displacement_begin[body].head<3>() +
+                      h * (1.0 - theta) * b.velocity_begin[body].head<3>() +
+                      b.frame_detection[body] * scene.contactors[k].shift);
+    };
+    const Vector3d cd_point = position(i, cd_body), an_point = position(j, an_body);
+    const ContactGeometry3D g = point_point_geometry(cd_point, an_point);
+    add_point(i, j, Vector3d::Zero(), link.visibility, g.tangent, g.normal, g.second_tangent, g.point, g.gap,
+              0, 0.0, &centre[i], &centre[j]);  // centre[k]: lever point about the (wrapped) centre
+    found.back().reference_gap = link.reference_length;
+  }
   // LMGC90 writes and sweeps interactions family by family, then by candidate.
   std::stable_sort(found.begin(), found.end(), [](const Interaction3D& x, const Interaction3D& y) {
     return std::tie(x.family, x.candidate, x.antagonist) < std::tie(y.family, y.candidate, y.antagonist);
@@ -482,6 +508,12 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   // is posed on rr = r − correction e_n (cohesive laws, contact-laws.md §3.2), r = rr + correction.
   const auto local_solve = [&](std::size_t k, Vector3d& q_local) {
     const Interaction3D& c = contacts[k];
+    // Rods, wires, cohesive zones: the law's own local problem (law_local_problem_3d.hpp), whatever
+    // the resolution (LMGC90's diagonal variants of these are not reproduced).
+    if (c.form != LocalForm3D::coulomb) {
+      q_local = local_velocity(c, V) - c.W * c.r + c.covfree;
+      return solve_law_form_3d(c, q_local, c.r, local_tolerance);
+    }
     // The others' contribution and the free velocity, plus the cohesion term −c h W e_n.
     const Vector3d correction(0.0, c.correction, 0.0);
     const Vector3d rr_previous = cohesion_free(c, c.r);
@@ -571,11 +603,17 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
       c.status = ContactStatus::noctc;
       continue;
     }
-    const Vector3d rr = cohesion_free(c, c.r);
-    c.status = status_of(rr, c.mu);
     if (c.r.squaredNorm() > 0.0) ++result.active;
-    residual_squared +=
-        natural_map_3d(to_normal_first(rr), to_normal_first(Vector3d(c.u + c.covfree)), c.mu).squaredNorm();
+    if (c.form != LocalForm3D::coulomb) {
+      const Vector3d uu = c.u + c.covfree;
+      c.status = law_form_status_3d(c, c.r, uu);
+      residual_squared += law_form_residual_3d(c, c.r, uu).squaredNorm();
+    } else {
+      const Vector3d rr = cohesion_free(c, c.r);
+      c.status = status_of(rr, c.mu);
+      residual_squared +=
+          natural_map_3d(to_normal_first(rr), to_normal_first(Vector3d(c.u + c.covfree)), c.mu).squaredNorm();
+    }
     finish_law(scene.laws[static_cast<std::size_t>(c.law)].law, c,
                LawStep{state.h, state.time, state.step == 1});
   }

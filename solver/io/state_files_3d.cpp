@@ -45,17 +45,10 @@ grammar::DofFile dof_file_3d(const Scene3D& scene, const RunState3D& state) {
 
 namespace {
 
-constexpr std::string_view kFamilyNames[kPairFamily3DCount] = {"SPSPx", "SPPLx", "PRPRx", "PRPLx",
-                                                               "SPCDx", "CDCDx", "CDPLx"};
-
-std::string_view family_name(PairFamily3D f) {
-  return kFamilyNames[static_cast<int>(f)];
-}
-
 // The family a Vloc_Rloc block type names; false for the others.
 bool family_of_name(std::string_view name, PairFamily3D& family) {
   for (int k = 0; k < kPairFamily3DCount; ++k)
-    if (kFamilyNames[k] == name) {
+    if (pair_family_name(static_cast<PairFamily3D>(k)) == name) {
       family = static_cast<PairFamily3D>(k);
       return true;
     }
@@ -81,6 +74,8 @@ std::string_view written_type(const Contactor3D& c) {
       return "CYLND";
     case ContactorShape3D::tube:
       return "DNLYC";
+    case ContactorShape3D::point:
+      return "PT3Dx";
   }
   return "PLANx";
 }
@@ -115,19 +110,20 @@ grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& 
   // Serial index of each contactor among the scene's contactors of its shape (spheres: SPHER and
   // SPHEb, LMGC90's SPHER list): the trailing iantac of SPSPx, SPCDx and SPDCx.
   std::vector<std::int64_t> serial(scene.contactors.size(), 0);
-  std::array<std::int64_t, 8> per_shape{};
+  std::array<std::int64_t, 8> per_shape{};  // by ContactorShape3D
   for (std::size_t k = 0; k < scene.contactors.size(); ++k)
     serial[k] = ++per_shape[static_cast<std::size_t>(scene.contactors[k].shape)];
   // LMGC90's 3D module order (state-and-outputs.md §1.1): ... PRPLx, PRPRx, ... SPPLx, SPPRx, SPSPx.
   constexpr PairFamily3D kWriteOrder[] = {PairFamily3D::CDCDx, PairFamily3D::CDPLx, PairFamily3D::PRPLx,
-                                          PairFamily3D::PRPRx, PairFamily3D::SPCDx, PairFamily3D::SPDCx,
-                                          PairFamily3D::SPPLx, PairFamily3D::SPSPx};
+                                          PairFamily3D::PRPRx, PairFamily3D::PTPT3, PairFamily3D::SPCDx,
+                                          PairFamily3D::SPDCx, PairFamily3D::SPPLx, PairFamily3D::SPSPx};
+  static_assert(std::size(kWriteOrder) == kPairFamily3DCount);
   for (PairFamily3D family : kWriteOrder) {
     std::vector<std::size_t> members;
     for (std::size_t k = 0; k < state.contacts.size(); ++k)
       if (state.contacts[k].family == family) members.push_back(k);
     if (members.empty()) continue;
-    const grammar::InteractionKind* kind = grammar::find_interaction_kind(family_name(family));
+    const grammar::InteractionKind* kind = grammar::find_interaction_kind(pair_family_name(family));
     // Written by candidate contactor, then in detection order (LMGC90's adjacency rank).
     std::vector<std::size_t> order(members.size());
     for (std::size_t m = 0; m < members.size(); ++m) order[m] = m;
@@ -152,7 +148,9 @@ grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& 
       if (has_vertex_column(family)) out.integers.push_back(Integer{c.vertex});
       out.integers.push_back(Integer{an.body + 1});
       out.integers.push_back(Integer{an.rank});
-      if (family == PairFamily3D::SPSPx || family == PairFamily3D::SPCDx || family == PairFamily3D::SPDCx)
+      // SPSPx, SPCDx, SPDCx and PTPT3 end with iantac (PTPT3 under its title's "iadj").
+      if (family == PairFamily3D::SPSPx || family == PairFamily3D::SPCDx || family == PairFamily3D::SPDCx ||
+          family == PairFamily3D::PTPT3)
         out.integers.push_back(Integer{serial[static_cast<std::size_t>(c.antagonist)]});
       for (const grammar::VectorLineKind& line : kind->vectors) {
         grammar::VlocRlocVector v;

@@ -10,6 +10,11 @@ concept HasForm3D = requires(const Law& law, Interaction3D& c, const LawStep& st
   prepare(law, c, step);
 };
 
+template <class Law>
+concept HasForm2D = requires(const Law& law, Interaction2D& c, const LawStep& step) {
+  prepare(law, c, step);
+};
+
 template <std::size_t... I>
 bool from_card(std::string_view keyword, const LawParameters& p, ContactLaw& law, std::index_sequence<I...>) {
   const auto try_one = [&]<std::size_t K>() {
@@ -35,12 +40,27 @@ bool law_from_card(std::string_view keyword, const LawParameters& parameters, Co
   return from_card(keyword, parameters, law, std::make_index_sequence<std::variant_size_v<ContactLaw>>{});
 }
 
+bool provided_in_2d(const ContactLaw& law) {
+  return std::visit([](const auto& p) { return HasForm2D<std::decay_t<decltype(p)>>; }, law);
+}
+
 void prepare_law(const ContactLaw& law, Interaction2D& c, const LawStep& step) {
-  std::visit([&](const auto& p) { prepare(p, c, step); }, law);
+  std::visit(
+      [&](const auto& p) {
+        if constexpr (HasForm2D<std::decay_t<decltype(p)>>)
+          prepare(p, c, step);
+        else
+          c.inactive = true;  // a 3D-only law: build_scene_2d refuses it first
+      },
+      law);
 }
 
 void finish_law(const ContactLaw& law, Interaction2D& c, const LawStep& step) {
-  std::visit([&](const auto& p) { finish(p, c, step); }, law);
+  std::visit(
+      [&](const auto& p) {
+        if constexpr (HasForm2D<std::decay_t<decltype(p)>>) finish(p, c, step);
+      },
+      law);
 }
 
 bool provided_in_3d(const ContactLaw& law) {
@@ -52,6 +72,10 @@ bool prepare_law(const ContactLaw& law, Interaction3D& c, const LawStep& step) {
   c.inactive = false;
   c.correction = 0.0;
   c.correction_needs_contact = false;
+  c.form = LocalForm3D::coulomb;
+  c.normal_compliance = 0.0;
+  c.cohesive_slope.setZero();
+  c.cohesive_shift.setZero();
   return std::visit(
       [&](const auto& p) {
         if constexpr (HasForm3D<std::decay_t<decltype(p)>>) {

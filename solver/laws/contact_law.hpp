@@ -8,6 +8,8 @@
 
 #include "solver/laws/coupled_dof.hpp"
 #include "solver/laws/elastic_repell_clb.hpp"
+#include "solver/laws/elastic_rod.hpp"
+#include "solver/laws/elastic_wire.hpp"
 #include "solver/laws/gap_sgr_clb.hpp"
 #include "solver/laws/gap_sgr_ds_clb.hpp"
 #include "solver/laws/iqs_clb.hpp"
@@ -25,9 +27,9 @@
 
 namespace lmgc::solver {
 
-using ContactLaw =
-    std::variant<IqsClb, IqsDsClb, IqsClbG0, RstClb, RstDsClb, GapSgrClb, GapSgrDsClb, VelSgrClb, VelSgrDsClb,
-                 ElasticRepellClb, IqsMohrDsClb, IqsWetDsClb, IqsMacCzm, CoupledDof, NoNlgsBranch>;
+using ContactLaw = std::variant<IqsClb, IqsDsClb, IqsClbG0, RstClb, RstDsClb, GapSgrClb, GapSgrDsClb,
+                                VelSgrClb, VelSgrDsClb, ElasticRepellClb, IqsMohrDsClb, IqsWetDsClb,
+                                IqsMacCzm, CoupledDof, NoNlgsBranch, ElasticRod, ElasticWire>;
 
 // Keyword of a law as TACT_BEHAV.DAT spells it.
 std::string_view law_keyword(const ContactLaw& law);
@@ -38,6 +40,8 @@ int law_internal_count(const ContactLaw& law);
 // The law of a TACT_BEHAV keyword with its parameters; false for a keyword not in the table.
 bool law_from_card(std::string_view keyword, const LawParameters& parameters, ContactLaw& law);
 
+// 2D: whether the law has a 2D form (false for the 3D-only ones: rods, wires).
+bool provided_in_2d(const ContactLaw& law);
 // 2D: the derived problem of the law (c.covfree, c.correction, c.WW, c.mu, c.inactive, statuses),
 // after the caller has reset them; and the end-of-step statuses and internal variables.
 void prepare_law(const ContactLaw& law, Interaction2D& c, const LawStep& step);

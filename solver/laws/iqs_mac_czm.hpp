@@ -1,7 +1,8 @@
 #pragma once
 // IQS_MAC_CZM: Monerie–Acary–Cangémi cohesive zone with an IQS normal part (contact-laws.md §3.5):
 // friction dfric/sfric, stiffnesses cn, ct, viscosity visco and fracture energy dupre of the damage
-// β. Internals (2D): L, δt, δn, β, TPSini (state-and-outputs.md §1.4.4). 2D.
+// β. Internals (2D): L, δt, δn, β, TPSini; (3D): L, δt, δn, δs, β, TPSini (state-and-outputs.md
+// §1.4.4). 2D and 3D.
 #include "solver/laws/law_forms.hpp"
 
 namespace lmgc::solver {
@@ -17,9 +18,11 @@ struct IqsMacCzm {
 
 inline void prepare(const IqsMacCzm& law, Interaction2D& c, const LawStep& step) {
   const double h = step.h;
-  if (c.status_begin == ContactStatus::nknow) {
+  // Sound (β = 1) only at the run's first step; contacts created later start broken, β = 0
+  // (mod_nlgs prep :2313-2330, init_CZM resets internals when Nstep = 1).
+  if (step.first_step) {
     c.internal = {0.0, 0.0, 0.0, 1.0, -99.0, 0.0};
-    c.status_begin = ContactStatus::Cnnow;
+    if (c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Cnnow;
   }
   const double length = c.length;
   const double beta = c.internal[3];
@@ -54,6 +57,49 @@ inline void finish(const IqsMacCzm& law, Interaction2D& c, const LawStep& step) 
   if (beta < 1e-12) beta = 0.0;
   if (beta <= beta_old && law.dupre <= beta_old * energy) c.internal[3] = beta;
   if (c.internal[3] < 1.0 && c.internal[4] < 0.0) c.internal[4] = step.time;
+}
+
+// 3D (mod_nlgs_3D prep :1994-2040, mod_tact_behav init/prep/iter_CZM_3D :4352-4600): at the run's
+// first step every internal is reset and β = 1 (new contacts of later steps start broken, β = 0);
+// L = the pair's contact surface. While β > 1e-12 the cohesive impulse is −L β² h C (δ_begin + h uu)
+// componentwise, C = diag(ct, cn, ct); the normal δ_begin is folded into uu by the IQS covfree.
+inline void prepare(const IqsMacCzm& law, Interaction3D& c, const LawStep& step) {
+  const double h = step.h;
+  if (step.first_step) {
+    c.internal = {0.0, 0.0, 0.0, 0.0, 1.0, -99.0};
+    if (c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Cnnow;
+  }
+  const double beta = c.internal[4];
+  c.internal[0] = c.surface;
+  c.internal[2] = positive(c.gap_begin);
+  iqs_form(c, h);
+  c.mu = (is_sliding(c.status_begin) ? law.dfric : law.sfric) * (1.0 - beta);
+  if (beta <= 1e-12) return;
+  c.form = LocalForm3D::cohesive;
+  const double scale = -c.surface * beta * beta * h;
+  c.cohesive_slope = Eigen::Vector3d(scale * law.ct * h, scale * law.cn * h, scale * law.ct * h);
+  c.cohesive_shift = Eigen::Vector3d(scale * law.ct * c.internal[1], 0.0, scale * law.ct * c.internal[3]);
+}
+
+// 3D damage (updt_CZM_3D :4856-4925, store :5426-5450): jumps from the final velocity,
+// β_new = (h w + β b)/(b + h (ct |δ_t,s|² + cn (δn)+²)), kept when it does not grow and the stored
+// energy exceeds w; TPSini at first damage. Statuses in their C form while cohesive.
+inline void finish(const IqsMacCzm& law, Interaction3D& c, const LawStep& step) {
+  const double h = step.h;
+  const double dt = c.internal[1] + h * c.u(0), dn = c.internal[2] + h * c.u(1),
+               ds = c.internal[3] + h * c.u(2);
+  const double beta_old = c.internal[4];
+  const double tangential = dt * dt + ds * ds, normal = dn > 0.0 ? dn * dn : 0.0;
+  const double energy = law.ct * tangential + law.cn * normal;
+  const double denominator = law.visco + h * energy;
+  double beta = denominator == 0.0 ? 1.0 : (h * law.dupre + beta_old * law.visco) / denominator;
+  if (beta < 1e-12) beta = 0.0;
+  if (beta <= beta_old && law.dupre <= beta_old * energy) c.internal[4] = beta;
+  c.internal[1] = dt;
+  c.internal[2] = dn;
+  c.internal[3] = ds;
+  if (c.internal[5] == -99.0 && c.internal[4] < 1.0) c.internal[5] = step.time;
+  if (c.form == LocalForm3D::cohesive) c.status = cohesive_status(c.status);
 }
 
 }  // namespace lmgc::solver

@@ -62,6 +62,25 @@ inline void add_cohesion(Interaction2D& c, double cohesion, double h) {
   c.correction(1) = -cohesion * h;
 }
 
+// Rods and wires (contact-laws.md §3.4): a spring of stiffness F/str (force per unit strain) and
+// prestrain prstr on a link of reference length gapREF. The impulse r_n = −h F/str ε_end, with
+// ε_end = (γ_begin + h u_n)/gapREF − 1 − prstr, is uu_n + (gapREF/(F/str h²)) r_n = 0 for
+// uu_n = u_n + covfree_n, covfree_n = (γ_begin − (1 + prstr) gapREF)/h (mod_nlgs_3D prep :1700-1728).
+// No link without a reference length (LMGC90 stops there; build_scene_3d refuses rods and wires on
+// pairs other than PTPT3, the only 3D family that sets it).
+inline void spring_form(Interaction3D& c, double force_per_strain, double prestrain, double h,
+                        LocalForm3D form) {
+  c.internal[0] = c.reference_gap;
+  if (c.reference_gap <= 1e-18 || force_per_strain <= 0.0) {
+    c.inactive = true;
+    return;
+  }
+  c.form = form;
+  c.normal_compliance = c.reference_gap / (force_per_strain * h * h);
+  c.covfree(1) = (c.gap_begin - (1.0 + prestrain) * c.reference_gap) / h;
+  c.mu = 0.0;
+}
+
 // Laws without end-of-step work.
 template <class Law, class Interaction>
 void finish(const Law&, Interaction&, const LawStep&) {}

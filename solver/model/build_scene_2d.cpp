@@ -158,7 +158,7 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
     for (const grammar::TactLaw& card : in.tact_behav->laws)
       if (card.nickname.value == v.law_nickname) {
         ContactLaw law;
-        if (!contact_law_of(card, law)) {
+        if (!contact_law_of(card, law) || !provided_in_2d(law)) {
           sink.report("L4002", grammar::Location{in.tact_behav_path, card.keyword.span},
                       "contact law '" + card.keyword.value + "' is not solved by the rigid 2D solver yet");
           ok = false;

@@ -4,6 +4,7 @@
 
 #include "grammar/tact_behav/see_table.hpp"
 #include "solver/bodies/rigid_3d_properties.hpp"
+#include "solver/detection/point_contact.hpp"
 #include "solver/model/build_scene_2d.hpp"  // contact_law_of: the law table is shared
 #include "solver/model/driven_dofs.hpp"
 
@@ -35,6 +36,8 @@ Rigid3DContactorShape rigid_3d_shape(const grammar::Contactor& t) {
         shape.shift(k) = f.shift[static_cast<std::size_t>(k)].value;
       }
     }
+  } else if (shape.type == "PT3Dx") {
+    shape.shift = Vector3d(value(0), value(1), value(2));
   } else if (shape.type == "POLYR") {
     for (const auto& v : t.vertices) shape.vertices.emplace_back(v[0].value, v[1].value, v[2].value);
     for (const auto& f : t.faces)
@@ -85,6 +88,9 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
         c.bounding_radius = c.half_axes.norm();
       } else if (c.type == "POLYR") {
         c.shape = ContactorShape3D::polyhedron;
+      } else if (c.type == "PT3Dx") {
+        c.shape = ContactorShape3D::point;
+        c.shift = shape.shift;
       } else if (c.type == "CYLND" || c.type == "DNLYC") {
         c.shape = c.type == "CYLND" ? ContactorShape3D::cylinder : ContactorShape3D::tube;
         c.radius = shape.radius;
@@ -179,6 +185,13 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
         sink.report("L4002", grammar::Location{in.tact_behav_path, card.keyword.span},
                     "contact law '" + card.keyword.value + "' is not solved by the rigid 3D solver yet");
         ok = false;
+      } else if ((std::holds_alternative<ElasticWire>(law) || std::holds_alternative<ElasticRod>(law)) &&
+                 v.family != PairFamily3D::PTPT3) {
+        // Only PTPT3 sets the reference length gapREF; LMGC90 stops on gapREF <= 1e-18.
+        sink.report("L2018", grammar::Location{in.tact_behav_path, see.law_nickname.span},
+                    "law '" + card.nickname.value + "' (" + card.keyword.value +
+                        ") needs a reference length, which only PT3Dx/PT3Dx (PTPT3) links have");
+        ok = false;
       }
       break;
     }
@@ -228,6 +241,7 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
       if (b.driven_mask[i] & (1u << d)) inverse(d) = 0.0;
     b.inverse_mass[i] = inverse;
   }
+  scene.point_links = link_points_3d(scene);
   scene.plan = {};
   for (const Visibility3D& v : scene.visibility) scene.plan.families[static_cast<int>(v.family)] = true;
   return ok;

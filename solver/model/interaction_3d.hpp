@@ -6,14 +6,40 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 #include "solver/model/contact_status.hpp"
 
 namespace lmgc::solver {
 
-// 3D interaction families, in LMGC90's sweep order for these contactors.
-enum class PairFamily3D : std::uint8_t { SPSPx, SPPLx, PRPRx, PRPLx, SPCDx, CDCDx, CDPLx, SPDCx };
-inline constexpr int kPairFamily3DCount = 8;
+// 3D interaction families (the order interactions are kept and swept in).
+enum class PairFamily3D : std::uint8_t { SPSPx, SPPLx, PRPRx, PRPLx, SPCDx, CDCDx, CDPLx, SPDCx, PTPT3 };
+inline constexpr int kPairFamily3DCount = 9;
+
+// The family's name: its contact module, and the block type of its Vloc_Rloc entries.
+constexpr std::string_view pair_family_name(PairFamily3D family) {
+  switch (family) {
+    case PairFamily3D::SPSPx:
+      return "SPSPx";
+    case PairFamily3D::SPPLx:
+      return "SPPLx";
+    case PairFamily3D::PRPRx:
+      return "PRPRx";
+    case PairFamily3D::PRPLx:
+      return "PRPLx";
+    case PairFamily3D::SPCDx:
+      return "SPCDx";
+    case PairFamily3D::CDCDx:
+      return "CDCDx";
+    case PairFamily3D::CDPLx:
+      return "CDPLx";
+    case PairFamily3D::SPDCx:
+      return "SPDCx";
+    case PairFamily3D::PTPT3:
+      return "PTPT3";
+  }
+  return "";
+}
 
 // The family of a (candidate, antagonist) contactor type pair as `$seety` names them; false for
 // pairs the rigid 3D solver does not detect.
@@ -28,7 +54,8 @@ inline bool pair_family_3d(const std::string& candidate, const std::string& anta
       {"SPHER", "SPHER", PairFamily3D::SPSPx}, {"SPHER", "PLANx", PairFamily3D::SPPLx},
       {"POLYR", "POLYR", PairFamily3D::PRPRx}, {"POLYR", "PLANx", PairFamily3D::PRPLx},
       {"SPHER", "CYLND", PairFamily3D::SPCDx}, {"CYLND", "CYLND", PairFamily3D::CDCDx},
-      {"CYLND", "PLANx", PairFamily3D::CDPLx}, {"SPHER", "DNLYC", PairFamily3D::SPDCx}};
+      {"CYLND", "PLANx", PairFamily3D::CDPLx}, {"SPHER", "DNLYC", PairFamily3D::SPDCx},
+      {"PT3Dx", "PT3Dx", PairFamily3D::PTPT3}};
   for (const Row& row : kRows)
     if (candidate == row.candidate && antagonist == row.antagonist) {
       family = row.family;
@@ -36,6 +63,14 @@ inline bool pair_family_3d(const std::string& candidate, const std::string& anta
     }
   return false;
 }
+
+// The local problem a law poses at a contact (contact-laws.md §2-§3.5). With uu = u + covfree the
+// auxiliary velocity:
+//  coulomb  — Signorini–Coulomb on (rr, uu), rr = r − correction e_n;
+//  rod      — r = (0, r_n, 0) with uu_n + normal_compliance r_n = 0 (bilateral spring);
+//  wire     — the same, tension only: 0 ≤ −r_n ⊥ −(uu_n + normal_compliance r_n) ≥ 0;
+//  cohesive — r = rr + cohesive_shift + diag(cohesive_slope) uu, Signorini–Coulomb on (rr, uu).
+enum class LocalForm3D : std::uint8_t { coulomb, rod, wire, cohesive };
 
 struct Interaction3D {
   PairFamily3D family = PairFamily3D::SPSPx;
@@ -70,10 +105,17 @@ struct Interaction3D {
   // (recup_rloc_PRPRx matches points closer than 1e-3).
   Eigen::Vector3d candidate_point = Eigen::Vector3d::Zero();
 
+  // PTPT3: the link's length in the reference configuration (nonuc0, the rods' and wires' gapREF).
+  double reference_gap = 0.0;
+
   Eigen::Matrix3d W = Eigen::Matrix3d::Zero();  // Delassus block (t, n, s)
   Eigen::Vector3d covfree = Eigen::Vector3d::Zero();
   double mu = 0.0;
   bool inactive = false;
+  LocalForm3D form = LocalForm3D::coulomb;
+  double normal_compliance = 0.0;                            // rod, wire: WWnn − Wnn
+  Eigen::Vector3d cohesive_slope = Eigen::Vector3d::Zero();  // cohesive: (k_t, k_n, k_t)
+  Eigen::Vector3d cohesive_shift = Eigen::Vector3d::Zero();  // cohesive: (radh_t, 0, radh_s)
 };
 
 }  // namespace lmgc::solver

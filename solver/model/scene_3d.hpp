@@ -16,13 +16,13 @@
 
 namespace lmgc::solver {
 
-enum class ContactorShape3D : std::uint8_t { sphere, plane, polyhedron, cylinder, tube };
+enum class ContactorShape3D : std::uint8_t { sphere, plane, polyhedron, cylinder, tube, point };
 
 struct Contactor3D {
   ContactorShape3D shape = ContactorShape3D::sphere;
   std::int32_t body = 0;
   std::int32_t rank = 1;  // rank within its body (1-based)
-  std::string type;       // "SPHER", "SPHEb", "PLANx"
+  std::string type;       // "SPHER", "SPHEb", "PLANx", "POLYR", "CYLND", "DNLYC", "PT3Dx"
   std::string color;
   Eigen::Vector3d shift = Eigen::Vector3d::Zero();            // offset from the centre of inertia, body axes
   Eigen::Matrix3d local_frame = Eigen::Matrix3d::Identity();  // PLANx axes (T, S, N), CYLND axes, body axes
@@ -37,6 +37,14 @@ struct Visibility3D {
   std::int32_t law = 0;
   double alert = 0.0;
   PairFamily3D family = PairFamily3D::SPSPx;
+};
+
+// A PTPT3 link: two PT3Dx contactors of different bodies, their `$seety` row and their distance in
+// the reference configuration (solver/detection/point_contact.hpp).
+struct PointLink3D {
+  std::int32_t candidate = 0, antagonist = 0;  // contactor ids
+  std::int32_t visibility = 0;
+  double reference_length = 0.0;  // nonuc0 [m]
 };
 
 struct ScenePlan3D {
@@ -66,6 +74,7 @@ struct Scene3D {
   // bodies near the sides; positions themselves are never wrapped (0 = not periodic).
   double x_period = 0.0, y_period = 0.0;
   SourcePoint3D source;
+  std::vector<PointLink3D> point_links;  // PTPT3, fixed for the run
   ScenePlan3D plan;
 };
 

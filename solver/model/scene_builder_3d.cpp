@@ -3,6 +3,8 @@
 #include <Eigen/Eigenvalues>
 #include <numbers>
 
+#include "solver/detection/point_contact.hpp"
+
 namespace lmgc::solver {
 
 int SceneBuilder3D::add_body(const Eigen::Vector3d& centre, double mass, const Eigen::Vector3d& inertia) {
@@ -151,6 +153,14 @@ void SceneBuilder3D::set_frame(int body, const Eigen::Matrix3d& frame) {
   scene_.bodies.frame_initial[b] = scene_.bodies.frame[b] = scene_.bodies.frame_detection[b] = frame;
 }
 
+void SceneBuilder3D::add_point(int body, const Eigen::Vector3d& offset, const std::string& color) {
+  std::int32_t rank = 1;
+  for (const Contactor3D& c : scene_.contactors) rank += c.body == body ? 1 : 0;
+  Contactor3D& c = add_contactor(body, ContactorShape3D::point, "PT3Dx", color);
+  c.shift = offset;
+  c.rank = rank;
+}
+
 Scene3D SceneBuilder3D::build() {
   RigidBodies3D& b = scene_.bodies;
   for (std::size_t i = 0; i < b.size(); ++i) {
@@ -160,6 +170,7 @@ Scene3D SceneBuilder3D::build() {
       if (b.driven_mask[i] & (1u << d)) inverse(d) = 0.0;
     b.inverse_mass[i] = inverse;
   }
+  scene_.point_links = link_points_3d(scene_);
   scene_.plan = {};
   for (const Visibility3D& v : scene_.visibility) scene_.plan.families[static_cast<int>(v.family)] = true;
   return scene_;

@@ -29,6 +29,8 @@ class SceneBuilder3D {
                      double radius, const std::string& color = "VERTx");
   int add_fixed_plane(const Eigen::Vector3d& centre, const Eigen::Matrix3d& frame,
                       const Eigen::Vector3d& half_axes, const std::string& color = "VERTx");
+  // A PT3Dx point of `body` at `offset` from its centre (body axes); adds no mass.
+  void add_point(int body, const Eigen::Vector3d& offset, const std::string& color = "BLEUx");
   int add_law(const std::string& nickname, const ContactLaw& law);
   void see(const std::string& candidate_type, const std::string& candidate_color, const std::string& law,
            const std::string& antagonist_type, const std::string& antagonist_color, double alert);

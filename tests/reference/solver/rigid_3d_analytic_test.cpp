@@ -409,3 +409,129 @@ TEST(Rigid3DAnalytic, SphereInsideADrumRestsOnItsInnerWall) {
 
 }  // namespace
 }  // namespace lmgc::solver
+
+namespace lmgc::solver {
+namespace {
+
+// A sphere of radius 0.1 m (density 1000) hanging by a PTPT3 link from a fixed point at the
+// origin: the anchor is a fixed PLANx body (not seen by anything) carrying a PT3Dx; the sphere
+// carries a PT3Dx at its centre, `length` below the origin in the reference configuration, then
+// moved by `offset` along z. Link law `law`.
+struct PointLinkScene {
+  Scene3D scene;
+  int ball = 0;
+};
+PointLinkScene hanging_by_a_link(const ContactLaw& law, double length, double offset, double side = -1.0) {
+  SceneBuilder3D b;
+  const int anchor = b.add_fixed_plane(Vector3d::Zero(), Matrix3d::Identity(), Vector3d(0.1, 0.1, 0.01));
+  b.add_point(anchor, Vector3d::Zero(), "ANCRx");
+  const int ball = b.add_sphere(Vector3d(0.0, 0.0, side * length), 0.1, 1000.0);
+  b.add_point(ball, Vector3d::Zero(), "BLEUx");
+  b.add_law("link1", law);
+  // The anchor's point comes first: it is the candidate (mod_PTPT3 pairs points in order).
+  b.see("PT3Dx", "ANCRx", "link1", "PT3Dx", "BLEUx", 2.0 * length);
+  PointLinkScene s{b.build(), ball};
+  const auto i = static_cast<std::size_t>(ball);
+  s.scene.bodies.displacement_begin[i].z() = offset;
+  s.scene.bodies.displacement[i].z() = offset;
+  return s;
+}
+
+// ELASTIC_WIRE of stiffness k per unit strain and reference length L0 at its static elongation
+// δ = m g L0 / k (Hooke): the implicit spring impulse −h k ε_end equals the weight's −m g h, so the
+// mass stays put (tolerance: round-off over 1000 steps) and the link reports a stick traction.
+TEST(Rigid3DAnalytic, ElasticWireHoldsAHangingMassAtItsStaticElongation) {
+  const double L0 = 1.0, k = 2000.0, h = 1e-3;
+  const double m = 1000.0 * 4.0 / 3.0 * std::numbers::pi * 1e-3;
+  const double delta = m * g * L0 / k;
+  PointLinkScene s = hanging_by_a_link(ElasticWire{k, 0.0}, L0, -delta);
+  ASSERT_EQ(s.scene.point_links.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.scene.point_links.front().reference_length, L0);
+  RunState3D state = run_state(h);
+  for (int i = 0; i < 1000; ++i) step_3d(s.scene, state, converged_options());
+  ASSERT_EQ(state.contacts.size(), 1u);
+  const Interaction3D& c = state.contacts.front();
+  EXPECT_EQ(c.family, PairFamily3D::PTPT3);
+  EXPECT_EQ(c.status, ContactStatus::stick);
+  EXPECT_EQ(c.internal[0], L0);                                         // gapREF
+  EXPECT_TRUE(c.frame.row(1).transpose().isApprox(Vector3d::UnitZ()));  // from the mass to the anchor
+  EXPECT_NEAR(c.r(1) / h, -s.scene.bodies.mass[static_cast<std::size_t>(s.ball)] * g, 1e-9 * m * g);
+  EXPECT_NEAR(centre_of(s.scene, s.ball).z(), -L0 - delta, 1e-10);
+}
+
+// A slack wire (points closer than L0) carries nothing: the mass falls freely, z = z0 − g t²/2
+// (θ = 1/2 integrates a constant acceleration exactly), while the link stays 'vnish'.
+TEST(Rigid3DAnalytic, SlackElasticWireLetsTheMassFallFreely) {
+  const double L0 = 1.0, h = 1e-3;
+  PointLinkScene s = hanging_by_a_link(ElasticWire{2000.0, 0.0}, L0, 0.5 * L0);
+  RunState3D state = run_state(h);
+  for (int i = 0; i < 200; ++i) step_3d(s.scene, state, converged_options());
+  ASSERT_EQ(state.contacts.size(), 1u);
+  EXPECT_EQ(state.contacts.front().status, ContactStatus::vnish);
+  EXPECT_EQ(state.contacts.front().r, Vector3d::Zero());
+  EXPECT_NEAR(centre_of(s.scene, s.ball).z(), -0.5 * L0 - 0.5 * g * 0.2 * 0.2, 1e-12);
+}
+
+// ELASTIC_ROD is bilateral: a mass standing on a rod, compressed by δ = m g L0 / k, stays put.
+TEST(Rigid3DAnalytic, ElasticRodCarriesAMassInCompression) {
+  const double L0 = 1.0, k = 2000.0, h = 1e-3;
+  const double m = 1000.0 * 4.0 / 3.0 * std::numbers::pi * 1e-3;
+  const double delta = m * g * L0 / k;
+  PointLinkScene s = hanging_by_a_link(ElasticRod{k, 0.0}, L0, -delta, +1.0);
+  RunState3D state = run_state(h);
+  for (int i = 0; i < 1000; ++i) step_3d(s.scene, state, converged_options());
+  ASSERT_EQ(state.contacts.size(), 1u);
+  EXPECT_NEAR(state.contacts.front().r(1) / h, m * g, 1e-9 * m * g);  // push
+  EXPECT_NEAR(centre_of(s.scene, s.ball).z(), L0 - delta, 1e-10);
+}
+
+// A sphere glued under a fixed plane by IQS_MAC_CZM (SPPLx, contact surface π r²): a sound
+// interface (β = 1) holds the weight with the opening δn = m g / (π r² cn), where the cohesive
+// impulse −π r² cn h δn equals −m g h; started there, the sphere stays put and the interface stays
+// sound (its stored energy cn δn² is far below dupre).
+Scene3D sphere_under_a_plane(const IqsMacCzm& law, double opening, int& ball) {
+  SceneBuilder3D b;
+  Matrix3d down;  // plane axes (T, S, N) with N = −z: the bottom face at z = 0 faces down
+  down << 1, 0, 0, 0, -1, 0, 0, 0, -1;
+  b.add_fixed_plane(Vector3d(0.0, 0.0, 0.05), down, Vector3d(1.0, 1.0, 0.05));
+  ball = b.add_sphere(Vector3d(0.0, 0.0, -0.1 - opening), 0.1, 1000.0);
+  b.add_law("mac01", law);
+  b.see("SPHER", "BLEUx", "mac01", "PLANx", "VERTx", 0.01);
+  return b.build();
+}
+
+TEST(Rigid3DAnalytic, SoundCohesiveZoneHoldsASphereUnderAPlaneAtItsElasticOpening) {
+  const double r = 0.1, cn = 1e8, h = 1e-3;
+  const double m = 1000.0 * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  const double opening = m * g / (lmgc_pi * r * r * cn);
+  int ball = 0;
+  Scene3D scene = sphere_under_a_plane(IqsMacCzm{0.3, 0.3, cn, cn, 0.0, 1e6}, opening, ball);
+  RunState3D state = run_state(h);
+  for (int i = 0; i < 500; ++i) step_3d(scene, state, converged_options());
+  ASSERT_EQ(state.contacts.size(), 1u);
+  const Interaction3D& c = state.contacts.front();
+  EXPECT_EQ(c.internal[4], 1.0);  // β
+  EXPECT_EQ(c.status, ContactStatus::Cstck);
+  EXPECT_NEAR(c.r(1) / h, -m * g, 1e-6 * m * g);
+  EXPECT_NEAR(centre_of(scene, ball).z(), -r - opening, 1e-10);
+}
+
+// A weak interface (dupre 1e-3 J/m²) damages as soon as it opens: β = w / (cn δn²) once the stored
+// energy exceeds w, the cohesive traction β² cn δn vanishes, and the sphere falls almost freely:
+// after 0.2 s it has dropped at least 95% of g t²/2 and β is below 1e-2.
+TEST(Rigid3DAnalytic, WeakCohesiveZoneBreaksAndLetsTheSphereFall) {
+  const double r = 0.1, h = 1e-3;
+  int ball = 0;
+  Scene3D scene = sphere_under_a_plane(IqsMacCzm{0.3, 0.3, 1e8, 1e8, 0.0, 1e-3}, 0.0, ball);
+  RunState3D state = run_state(h);
+  double beta = 1.0;
+  for (int i = 0; i < 200; ++i) {
+    step_3d(scene, state, converged_options());
+    if (!state.contacts.empty()) beta = state.contacts.front().internal[4];
+  }
+  EXPECT_LT(beta, 1e-2);
+  EXPECT_LT(centre_of(scene, ball).z(), -r - 0.95 * 0.5 * g * 0.2 * 0.2);
+}
+
+}  // namespace
+}  // namespace lmgc::solver

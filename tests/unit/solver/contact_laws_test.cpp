@@ -45,7 +45,8 @@ TEST(ContactLawTable, EveryKeywordReadsBackToItsLaw) {
   const char* keywords[] = {"IQS_CLB",        "IQS_DS_CLB",         "IQS_CLB_g0",      "RST_CLB",
                             "RST_DS_CLB",     "GAP_SGR_CLB",        "GAP_SGR_DS_CLB",  "VEL_SGR_CLB",
                             "VEL_SGR_DS_CLB", "ELASTIC_REPELL_CLB", "IQS_MOHR_DS_CLB", "IQS_WET_DS_CLB",
-                            "IQS_MAC_CZM",    "COUPLED_DOF",        "MD_JKRs"};
+                            "IQS_MAC_CZM",    "COUPLED_DOF",        "MD_JKRs",         "ELASTIC_ROD",
+                            "ELASTIC_WIRE"};
   for (const char* keyword : keywords) {
     ContactLaw law;
     ASSERT_TRUE(law_from_card(keyword, parameters({}), law)) << keyword;
@@ -63,8 +64,14 @@ TEST(ContactLawTable, EveryKeywordReadsBackToItsLaw) {
 TEST(ContactLawTable, ThreeDimensionalFormsAreTheDocumentedOnes) {
   EXPECT_TRUE(provided_in_3d(IqsClb{0.3}));
   EXPECT_TRUE(provided_in_3d(IqsMohrDsClb{1.0, 1.0, 0.3, 0.3}));
-  EXPECT_FALSE(provided_in_3d(IqsMacCzm{}));
+  EXPECT_TRUE(provided_in_3d(IqsMacCzm{}));
   EXPECT_FALSE(provided_in_3d(ElasticRepellClb{}));
+  EXPECT_TRUE(provided_in_3d(ElasticWire{}));
+  EXPECT_TRUE(provided_in_3d(ElasticRod{}));
+  // Rods and wires link PTPT3 points only: no 2D form (the 2D scene refuses them).
+  EXPECT_FALSE(provided_in_2d(ElasticWire{}));
+  EXPECT_FALSE(provided_in_2d(ElasticRod{}));
+  EXPECT_TRUE(provided_in_2d(IqsMacCzm{}));
   Interaction3D c = contact_3d(0.0);
   EXPECT_FALSE(prepare_law(CoupledDof{}, c, LawStep{h, 0.0, true}));
 }
@@ -190,7 +197,7 @@ TEST(IqsWetDsClb, IsCohesiveInsideTheWetHaloOnly) {
 TEST(IqsMacCzm, StartsUndamagedAndDamagesUnderOpening) {
   const IqsMacCzm law{0.3, 0.3, 1e6, 1e6, 0.0, 10.0};
   Interaction2D c = contact_2d(0.0);
-  prepare_law(law, c, LawStep{h});
+  prepare_law(law, c, LawStep{h, h, true});
   EXPECT_EQ(c.internal[3], 1.0);  // β
   EXPECT_TRUE(c.cohesive);
   EXPECT_EQ(c.mu, 0.0);              // friction × (1 − β)
@@ -198,6 +205,78 @@ TEST(IqsMacCzm, StartsUndamagedAndDamagesUnderOpening) {
   finish_law(law, c, LawStep{h, 0.5, false});
   EXPECT_LT(c.internal[3], 1.0);
   EXPECT_EQ(c.internal[4], 0.5);  // TPSini: time of the first damage
+}
+
+TEST(IqsMacCzm, ContactsCreatedAfterTheFirstStepStartBroken) {
+  // LMGC90 makes the interface sound (β = 1) only at the run's first step (init_CZM, Nstep = 1).
+  const IqsMacCzm law{0.3, 0.4, 1e6, 1e6, 0.0, 10.0};
+  Interaction2D c2 = contact_2d(0.0);
+  prepare_law(law, c2, LawStep{h, 2 * h, false});
+  EXPECT_EQ(c2.internal[3], 0.0);
+  EXPECT_FALSE(c2.cohesive);
+  EXPECT_EQ(c2.mu, 0.4);
+  Interaction3D c3 = contact_3d(0.0);
+  ASSERT_TRUE(prepare_law(law, c3, LawStep{h, 2 * h, false}));
+  EXPECT_EQ(c3.internal[4], 0.0);
+  EXPECT_EQ(c3.form, LocalForm3D::coulomb);
+  EXPECT_EQ(c3.mu, 0.4);
+}
+
+TEST(IqsMacCzm, ThreeDimensionalFormIsTheCohesiveZoneOnTheContactSurface) {
+  const IqsMacCzm law{0.3, 0.4, 2e6, 1e6, 0.0, 10.0};
+  Interaction3D c = contact_3d(0.002);  // surface 0.5
+  ASSERT_TRUE(prepare_law(law, c, LawStep{h, h, true}));
+  EXPECT_EQ(c.status_begin, ContactStatus::Cnnow);
+  EXPECT_EQ(c.form, LocalForm3D::cohesive);
+  EXPECT_EQ(c.internal[0], 0.5);    // L = surface
+  EXPECT_EQ(c.internal[2], 0.002);  // δn = (γ)+
+  EXPECT_EQ(c.internal[4], 1.0);    // β
+  EXPECT_DOUBLE_EQ(c.covfree(1), 0.002 / h);
+  EXPECT_EQ(c.mu, 0.0);  // sfric (1 − β)
+  // k = −L β² h² C, radh = −L β² h C δ (tangential jumps 0 at the start).
+  EXPECT_DOUBLE_EQ(c.cohesive_slope(0), -0.5 * h * h * 1e6);
+  EXPECT_DOUBLE_EQ(c.cohesive_slope(1), -0.5 * h * h * 2e6);
+  EXPECT_DOUBLE_EQ(c.cohesive_slope(2), -0.5 * h * h * 1e6);
+  EXPECT_EQ(c.cohesive_shift, Eigen::Vector3d::Zero());
+  // Opening 1 cm and sliding 1 cm in the step: β drops, jumps and TPSini are stored.
+  c.u = Eigen::Vector3d(10.0, 8.0, 0.0);
+  c.status = ContactStatus::stick;
+  finish_law(law, c, LawStep{h, 0.25, true});
+  EXPECT_LT(c.internal[4], 1.0);
+  EXPECT_DOUBLE_EQ(c.internal[1], 0.01);
+  EXPECT_DOUBLE_EQ(c.internal[2], 0.002 + 0.008);
+  EXPECT_EQ(c.internal[5], 0.25);
+  EXPECT_EQ(c.status, ContactStatus::Cstck);
+  // Next step: the tangential jump feeds radh_t.
+  c.status_begin = c.status;
+  const double beta = c.internal[4];
+  ASSERT_TRUE(prepare_law(law, c, LawStep{h, 2 * h, false}));
+  EXPECT_DOUBLE_EQ(c.cohesive_shift(0), -0.5 * beta * beta * h * 1e6 * 0.01);
+  EXPECT_DOUBLE_EQ(c.mu, 0.4 * (1.0 - beta));
+}
+
+TEST(ElasticWire, IsATensionOnlySpringOnTheReferenceLength) {
+  const ElasticWire law{2000.0, 0.1};
+  Interaction3D c = contact_3d(1.3);
+  c.reference_gap = 1.0;
+  ASSERT_TRUE(prepare_law(law, c, LawStep{h}));
+  EXPECT_EQ(c.form, LocalForm3D::wire);
+  EXPECT_EQ(c.internal[0], 1.0);  // gapREF
+  EXPECT_DOUBLE_EQ(c.normal_compliance, 1.0 / (2000.0 * h * h));
+  EXPECT_DOUBLE_EQ(c.covfree(1), (1.3 - 1.1) / h);
+  EXPECT_EQ(c.mu, 0.0);
+  Interaction3D unlinked = contact_3d(1.3);  // no reference length: no link (LMGC90 stops)
+  ASSERT_TRUE(prepare_law(law, unlinked, LawStep{h}));
+  EXPECT_TRUE(unlinked.inactive);
+}
+
+TEST(ElasticRod, IsTheBilateralSpring) {
+  Interaction3D c = contact_3d(0.9);
+  c.reference_gap = 1.0;
+  ASSERT_TRUE(prepare_law(ElasticRod{500.0, 0.0}, c, LawStep{h}));
+  EXPECT_EQ(c.form, LocalForm3D::rod);
+  EXPECT_DOUBLE_EQ(c.covfree(1), -0.1 / h);
+  EXPECT_DOUBLE_EQ(c.normal_compliance, 1.0 / (500.0 * h * h));
 }
 
 TEST(CoupledDof, HasNoFriction) {

@@ -15,6 +15,7 @@
 #include "grammar/common/source.hpp"
 #include "grammar/dof/parser.hpp"
 #include "grammar/dof/writer.hpp"
+#include "grammar/vloc_rloc/interaction_catalogue.hpp"
 #include "grammar/vloc_rloc/parser.hpp"
 #include "grammar/vloc_rloc/writer.hpp"
 #include "solver/model/scene_builder_3d.hpp"
@@ -300,6 +301,61 @@ TEST(StateFiles3D, InternalVariablesOfTheLawAreWrittenWithTheirNames) {
   const std::vector<Interaction3D> warm = warm_start_3d(back, scene, kH);
   ASSERT_EQ(warm.size(), 1u);
   EXPECT_DOUBLE_EQ(warm[0].internal[0], 0.25);
+}
+
+}  // namespace
+}  // namespace lmgc::solver
+
+namespace lmgc::solver {
+namespace {
+
+TEST(StateFiles3D, EveryPairFamilyHasItsVlocRlocBlockInTheGrammar) {
+  for (int k = 0; k < kPairFamily3DCount; ++k) {
+    const std::string_view name = pair_family_name(static_cast<PairFamily3D>(k));
+    ASSERT_FALSE(name.empty()) << "family " << k;
+    const grammar::InteractionKind* kind = grammar::find_interaction_kind(name);
+    ASSERT_NE(kind, nullptr) << name;
+    EXPECT_EQ(kind->dimension, 3) << name;
+  }
+}
+
+// A sphere resting in a fixed drum (SPDCx) and a sphere hanging by an ELASTIC_WIRE (PTPT3): both
+// blocks are written in LMGC90's layout (PTPT3: no CDVER column, trailing iantac, gapREF as its
+// internal variable), parse back to the same text and warm-start the same interactions.
+TEST(StateFiles3D, DrumAndPointLinkBlocksRoundTripAndWarmStart) {
+  SceneBuilder3D b;
+  b.add_sphere(Vector3d(0.0, 0.0, -0.4), 0.1, 1000.0);
+  Matrix3d along_x;  // the drum's axis (third column) along x
+  along_x << 0, 0, 1, 1, 0, 0, 0, 1, 0;
+  b.add_fixed_tube(Vector3d::Zero(), along_x, 1.0, 0.5);
+  const int anchor =
+      b.add_fixed_plane(Vector3d(3.0, 0.0, 0.0), Matrix3d::Identity(), Vector3d(0.1, 0.1, 0.1));
+  b.add_point(anchor, Vector3d::Zero(), "ANCRx");
+  const int hanging = b.add_sphere(Vector3d(3.0, 0.0, -1.0), 0.1, 1000.0);
+  b.add_point(hanging, Vector3d::Zero(), "BLEUx");
+  b.add_law("iqsc0", IqsClb{0.3});
+  b.add_law("wire1", ElasticWire{2000.0, 0.0});
+  b.see("SPHER", "BLEUx", "iqsc0", "DNLYC", "VERTx", 0.01);
+  b.see("PT3Dx", "ANCRx", "wire1", "PT3Dx", "BLEUx", 2.0);
+  SceneRun r{b.build(), {}};
+  r.state.h = kH;
+  for (int i = 0; i < 5; ++i) step_3d(r.scene, r.state, converged_options());
+  ASSERT_EQ(r.state.contacts.size(), 2u);
+  const std::string text = grammar::write_vloc_rloc(vloc_rloc_file_3d(r.scene, r.state));
+  EXPECT_NE(text.find("$icdan  PTPT3"), std::string::npos) << text;
+  EXPECT_NE(text.find("$icdan  SPDCx"), std::string::npos) << text;
+  EXPECT_NE(text.find("gapREF"), std::string::npos) << text;
+  const grammar::VlocRlocFile back = parse_vloc(text);
+  EXPECT_EQ(grammar::write_vloc_rloc(back), text);
+  const std::vector<Interaction3D> warm = warm_start_3d(back, r.scene, kH);
+  ASSERT_EQ(warm.size(), 2u);
+  for (std::size_t k = 0; k < warm.size(); ++k) {
+    EXPECT_EQ(warm[k].family, r.state.contacts[k].family);
+    EXPECT_EQ(warm[k].candidate, r.state.contacts[k].candidate);
+    EXPECT_EQ(warm[k].antagonist, r.state.contacts[k].antagonist);
+    EXPECT_EQ(warm[k].status, r.state.contacts[k].status);
+    for (int d = 0; d < 3; ++d) expect_close(r.state.contacts[k].r(d), warm[k].r(d), "r");
+  }
 }
 
 }  // namespace
