@@ -29,8 +29,8 @@ BodyPoints body_points(const Scene3D& scene) {
     const Contactor3D& c = scene.contactors[k];
     const auto i = static_cast<std::size_t>(c.body);
     const Vector3d centre = b.reference[i] + b.displacement[i].head<3>() + b.frame[i] * c.shift;
-    if (c.shape == ContactorShape3D::sphere) {
-      out.points.push_back(centre);
+    if (c.shape == ContactorShape3D::sphere || c.shape == ContactorShape3D::point) {
+      out.points.push_back(centre);  // a vertex (radius 0 for PT3Dx)
       out.owner.push_back(k);
       out.types.push_back(kVtkVertex);
     } else if (c.shape == ContactorShape3D::polyhedron) {
