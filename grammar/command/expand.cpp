@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <optional>
 
 #include "grammar/command/catalogue.hpp"
 #include "grammar/command/chic_text.hpp"
@@ -160,6 +161,8 @@ std::size_t run_command_program(const CommandFile& file, std::size_t max_command
     return find_entry(file, p, target, occurrence);
   };
 
+  // Each entry's command module and arguments, looked up once (loops run the same lines often).
+  std::vector<std::optional<ExecutedCommand>> prepared(n_entries);
   std::vector<std::int64_t> counter(p.loops.size());
   for (std::size_t l = 0; l < p.loops.size(); ++l) counter[l] = p.loops[l].count;
   std::map<std::pair<std::size_t, std::int64_t>, std::int64_t> flags;  // IFLZZZ(entry, f)
@@ -174,17 +177,20 @@ std::size_t run_command_program(const CommandFile& file, std::size_t max_command
     const std::string_view t = line.text.value;
     if (t == "FIN DU PROGRAMME" || t == "FIN_DU_PROGRAMME") break;
     if (line.kind == CommandLineKind::keyword) {
-      ExecutedCommand command;
-      command.keyword = line.keyword;
-      const CommandKeyword* kind = find_command_keyword(t);
-      command.module = kind ? std::string(kind->module) : std::string();
-      command.text = line.text.value;
-      command.parameter = line.parameter;
-      for (std::size_t a = p.entries[k] + 1;
-           a < file.lines.size() && file.lines[a].kind == CommandLineKind::argument; ++a)
-        if (file.lines[a].value) command.arguments.push_back(*file.lines[a].value);
-      command.line = line.text.span.line;
-      command.deployed = k;
+      if (!prepared[k]) {
+        ExecutedCommand& command = prepared[k].emplace();
+        command.keyword = line.keyword;
+        const CommandKeyword* kind = find_command_keyword(t);
+        command.module = kind ? std::string(kind->module) : std::string();
+        command.text = line.text.value;
+        command.parameter = line.parameter;
+        for (std::size_t a = p.entries[k] + 1;
+             a < file.lines.size() && file.lines[a].kind == CommandLineKind::argument; ++a)
+          if (file.lines[a].value) command.arguments.push_back(*file.lines[a].value);
+        command.line = line.text.span.line;
+        command.deployed = k;
+      }
+      const ExecutedCommand& command = *prepared[k];
       for (const CommandFlagRule& rule : rules)
         if (rule.keyword == command.keyword) flags[{k, rule.flag}] = rule.value;
       ++executed;
