@@ -500,7 +500,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
     if (!c.inactive) inject(c, c.r, b, V);
   result.free_velocity_norm = std::sqrt(q_squared);
 
-  const double local_tolerance = 1e-12 * std::max(result.free_velocity_norm, 1e-300);
+  const double local_tolerance = 1e-10 * std::max(result.free_velocity_norm, 1e-300);
   // Each block in the local solver's order and its inverse, once per step.
   std::vector<Matrix3d> W_normal_first(contacts.size()), W_inverse(contacts.size());
   for (std::size_t k = 0; k < contacts.size(); ++k) {

@@ -1,5 +1,6 @@
 #include "solver/nlgs/local_solver_3d.hpp"
 
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
@@ -153,24 +154,6 @@ bool enumerate_sliding(const Eigen::Matrix3d& W, const Eigen::Vector3d& q, doubl
 
 }  // namespace
 
-Eigen::Vector3d project_on_coulomb_cone(const Eigen::Vector3d& x, double mu) {
-  const double tangent_norm = x.tail<2>().norm();
-  if (mu * tangent_norm <= -x(0)) return Eigen::Vector3d::Zero();
-  if (tangent_norm <= mu * x(0)) return x;
-  const double a = (mu * tangent_norm + x(0)) / (1.0 + mu * mu);
-  Eigen::Vector3d p;
-  p(0) = a;
-  p.tail<2>() =
-      tangent_norm > 0.0 ? Eigen::Vector2d(mu * a * x.tail<2>() / tangent_norm) : Eigen::Vector2d::Zero();
-  return p;
-}
-
-Eigen::Vector3d natural_map_3d(const Eigen::Vector3d& r, const Eigen::Vector3d& u, double mu) {
-  Eigen::Vector3d x = r - u;
-  x(0) -= mu * u.tail<2>().norm();
-  return r - project_on_coulomb_cone(x, mu);
-}
-
 LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen::Vector3d& q, double mu,
                                            const Eigen::Vector3d& r_start, double tolerance) {
   return solve_signorini_coulomb_3d(W, nullptr, q, mu, r_start, tolerance);
@@ -217,6 +200,12 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
   const auto attainable = [&](const Eigen::Vector3d& r) {
     return std::max(tolerance, kRoundOff * (r.norm() + (W * r).norm() + q.norm()));
   };
+  // The natural-map residual of r and the bound round-off puts on it, from one product W r.
+  const auto evaluate = [&](const Eigen::Vector3d& r, double& residual, double& bound) {
+    const Eigen::Vector3d Wr = W * r;
+    residual = natural_map_3d(r, Wr + q, mu).norm();
+    bound = std::max(tolerance, kRoundOff * (r.norm() + Wr.norm() + q.norm()));
+  };
 
   // Sliding (or a near-singular block): generalised Newton on the Alart–Curnier map.
   double rho_n, rho_t;
@@ -225,17 +214,25 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
   Eigen::Vector3d r = r_start.allFinite() ? project_on_coulomb_cone(r_start, mu) : Eigen::Vector3d::Zero();
   if (r(0) <= 0.0) r = Eigen::Vector3d(-q(0) * rho_n, 0.0, 0.0);
   Eigen::Vector3d best = r;
-  double best_residual = natural_map_3d(r, W * r + q, mu).norm();
+  double best_residual, best_bound;
+  evaluate(r, best_residual, best_bound);
   Eigen::Matrix3d J;
   Eigen::Vector3d phi = map.value(r, &J);
   double merit = phi.squaredNorm();
   int iteration = 0;
-  for (; iteration < kMaxNewtonIterations && best_residual > attainable(best); ++iteration) {
-    Eigen::Matrix3d J_inverse;
-    bool J_invertible = false;
-    J.computeInverseWithCheck(J_inverse, J_invertible, 1e-300);
-    Eigen::Vector3d step = J_invertible ? Eigen::Vector3d(-J_inverse * phi) : Eigen::Vector3d(-phi);
-    if (!step.allFinite()) step = -phi;
+  for (; iteration < kMaxNewtonIterations && best_residual > best_bound; ++iteration) {
+    // Newton step by cofactors (J is 3×3); a singular J falls back to the steepest descent.
+    const Eigen::Vector3d c0 = J.row(1).cross(J.row(2)).transpose();
+    const double det = J.row(0).dot(c0.transpose());
+    Eigen::Vector3d step = -phi;
+    if (det != 0.0 && std::isfinite(det)) {
+      Eigen::Matrix3d adjugate;
+      adjugate.col(0) = c0;
+      adjugate.col(1) = J.row(2).cross(J.row(0)).transpose();
+      adjugate.col(2) = J.row(0).cross(J.row(1)).transpose();
+      step = -(adjugate * phi) / det;
+      if (!step.allFinite()) step = -phi;
+    }
     double t = 1.0;
     Eigen::Vector3d trial;
     Eigen::Vector3d trial_phi;
@@ -255,9 +252,11 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
     J = trial_J;
     merit = phi.squaredNorm();
     const Eigen::Vector3d admissible = project_on_coulomb_cone(r, mu);
-    const double residual = natural_map_3d(admissible, W * admissible + q, mu).norm();
+    double residual, bound;
+    evaluate(admissible, residual, bound);
     if (residual < best_residual) {
       best_residual = residual;
+      best_bound = bound;
       best = admissible;
     }
   }

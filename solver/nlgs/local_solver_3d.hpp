@@ -35,10 +35,25 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
                                            const Eigen::Vector3d& q, double mu,
                                            const Eigen::Vector3d& r_start, double tolerance);
 
-// Projection onto the Coulomb cone K_mu = { |x_T| <= mu x_n } (fc3d/FORMAT.md §3).
-Eigen::Vector3d project_on_coulomb_cone(const Eigen::Vector3d& x, double mu);
+// Projection onto the Coulomb cone K_mu = { |x_T| <= mu x_n } (fc3d/FORMAT.md §3). Inline: the local
+// solver evaluates it several times per contact and sweep.
+inline Eigen::Vector3d project_on_coulomb_cone(const Eigen::Vector3d& x, double mu) {
+  const double tangent_norm = x.tail<2>().norm();
+  if (mu * tangent_norm <= -x(0)) return Eigen::Vector3d::Zero();
+  if (tangent_norm <= mu * x(0)) return x;
+  const double a = (mu * tangent_norm + x(0)) / (1.0 + mu * mu);
+  Eigen::Vector3d p;
+  p(0) = a;
+  p.tail<2>() =
+      tangent_norm > 0.0 ? Eigen::Vector2d(mu * a * x.tail<2>() / tangent_norm) : Eigen::Vector2d::Zero();
+  return p;
+}
 
 // F(r) = r - P_K(r - u - mu |u_T| e_n) of one contact (fc3d/FORMAT.md §3).
-Eigen::Vector3d natural_map_3d(const Eigen::Vector3d& r, const Eigen::Vector3d& u, double mu);
+inline Eigen::Vector3d natural_map_3d(const Eigen::Vector3d& r, const Eigen::Vector3d& u, double mu) {
+  Eigen::Vector3d x = r - u;
+  x(0) -= mu * u.tail<2>().norm();
+  return r - project_on_coulomb_cone(x, mu);
+}
 
 }  // namespace lmgc::solver
