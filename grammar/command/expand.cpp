@@ -3,6 +3,7 @@
 #include "grammar/command/expand.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <optional>
@@ -161,8 +162,30 @@ std::size_t run_command_program(const CommandFile& file, std::size_t max_command
     return find_entry(file, p, target, occurrence);
   };
 
-  // Each entry's command module and arguments, looked up once (loops run the same lines often).
+  // Each entry's command module and arguments, and the kind of each control line, looked up once:
+  // loops run the same lines many times (a 100 000-step script is millions of lines).
   std::vector<std::optional<ExecutedCommand>> prepared(n_entries);
+  enum class Control : std::uint8_t { other, end, repete, stop_repete, cap, iok, flag, rok, drap };
+  std::vector<Control> control(n_entries, Control::other);
+  for (std::size_t k = 0; k < n_entries; ++k) {
+    const std::string_view t = text(k);
+    if (t == "FIN DU PROGRAMME" || t == "FIN_DU_PROGRAMME")
+      control[k] = Control::end;
+    else if (starts_with(t, "REPETE"))
+      control[k] = Control::repete;
+    else if (starts_with(t, "STOP REPETE SI IOK ="))
+      control[k] = Control::stop_repete;
+    else if (starts_with(t, "CAP SI IOK ="))
+      control[k] = Control::cap;
+    else if (starts_with(t, "IOK ="))
+      control[k] = Control::iok;
+    else if (starts_with(t, "FLAG"))
+      control[k] = Control::flag;
+    else if (starts_with(t, "ROK ="))
+      control[k] = Control::rok;
+    else if (starts_with(t, "DRAP"))
+      control[k] = Control::drap;
+  }
   std::vector<std::int64_t> counter(p.loops.size());
   for (std::size_t l = 0; l < p.loops.size(); ++l) counter[l] = p.loops[l].count;
   std::map<std::pair<std::size_t, std::int64_t>, std::int64_t> flags;  // IFLZZZ(entry, f)
@@ -175,7 +198,7 @@ std::size_t run_command_program(const CommandFile& file, std::size_t max_command
   for (std::size_t k = 0; k < n_entries && executed < max_commands && steps < step_limit; ++k, ++steps) {
     const CommandLine& line = file.lines[p.entries[k]];
     const std::string_view t = line.text.value;
-    if (t == "FIN DU PROGRAMME" || t == "FIN_DU_PROGRAMME") break;
+    if (control[k] == Control::end) break;
     if (line.kind == CommandLineKind::keyword) {
       if (!prepared[k]) {
         ExecutedCommand& command = prepared[k].emplace();
@@ -197,7 +220,7 @@ std::size_t run_command_program(const CommandFile& file, std::size_t max_command
       visit(command);
       continue;
     }
-    if (starts_with(t, "REPETE")) {
+    if (control[k] == Control::repete) {
       for (std::size_t l = 0; l < p.loops.size(); ++l) {
         if (p.loops[l].repete != k) continue;
         if (counter[l] > 0) {
@@ -208,7 +231,7 @@ std::size_t run_command_program(const CommandFile& file, std::size_t max_command
         }
         break;
       }
-    } else if (starts_with(t, "STOP REPETE SI IOK =")) {
+    } else if (control[k] == Control::stop_repete) {
       if (chic::list_integer(from(t, 20)) == iok) {
         // Leave through the next REPETE line with its counter at zero.
         for (std::size_t i = k + 1; i < n_entries; ++i) {
@@ -222,7 +245,7 @@ std::size_t run_command_program(const CommandFile& file, std::size_t max_command
           break;
         }
       }
-    } else if (starts_with(t, "CAP SI IOK =")) {
+    } else if (control[k] == Control::cap) {
       if (chic::list_integer(from(t, 12)) == iok) {
         const std::size_t m = target_of(k, 4, "SUR OCCURENCE");
         // Counters of the loops left by the jump are reset.
@@ -234,7 +257,7 @@ std::size_t run_command_program(const CommandFile& file, std::size_t max_command
         if (m >= n_entries) break;  // no such line: CHIC runs off the end of its list
         k = m - 1;
       }
-    } else if (starts_with(t, "IOK =")) {
+    } else if (control[k] == Control::iok) {
       const std::string_view rest = from(t, 5);
       if (starts_with(rest, " FLAG")) {
         const std::int64_t f = chic::list_integer(from(rest, 5)).value_or(0);
@@ -245,9 +268,9 @@ std::size_t run_command_program(const CommandFile& file, std::size_t max_command
       } else {
         iok = chic::list_integer(rest).value_or(iok);
       }
-    } else if (starts_with(t, "FLAG")) {
+    } else if (control[k] == Control::flag) {
       if (const auto f = chic::flag_number(t, "= IOK")) flags[{target_of(k, 5, "INTO OCCURENCE"), *f}] = iok;
-    } else if (starts_with(t, "ROK =")) {
+    } else if (control[k] == Control::rok) {
       const std::string_view rest = from(t, 5);
       if (starts_with(rest, " DRAP")) {
         const std::int64_t f = chic::list_integer(from(rest, 5)).value_or(0);
@@ -258,7 +281,7 @@ std::size_t run_command_program(const CommandFile& file, std::size_t max_command
         const auto v = items.empty() ? std::nullopt : read_list_directed_real(items[0]);
         if (v && v->error == NumberError::none) rok = v->value;
       }
-    } else if (starts_with(t, "DRAP")) {
+    } else if (control[k] == Control::drap) {
       if (const auto f = chic::flag_number(t, "= ROK")) draps[{target_of(k, 5, "INTO OCCURENCE"), *f}] = rok;
     }
   }
@@ -294,8 +317,18 @@ CommandRunParameters command_run_parameters(const CommandFile& file, DiagnosticS
     if (k < c.arguments.size() && !c.arguments[k].reals.empty()) value = c.arguments[k].reals[0].value;
   };
   bool dt_set = false;
+  // A line met again (a loop) changes nothing but the step count: remember which lines count steps.
+  enum class Seen : std::uint8_t { not_yet, step, done };
+  std::vector<Seen> seen;
   run_command_program(file, 10'000'000, sink, {}, [&](const ExecutedCommand& c) {
+    if (c.deployed >= seen.size()) seen.resize(c.deployed + 1, Seen::not_yet);
+    if (seen[c.deployed] == Seen::step) {
+      ++p.steps;
+      return;
+    }
+    if (seen[c.deployed] == Seen::done) return;
     const std::string& k = c.keyword;
+    seen[c.deployed] = k == "INCREMENT STEP" ? Seen::step : Seen::done;
     if (k == "INCREMENT STEP") {
       ++p.steps;
     } else if (k == "TIME STEP" && !dt_set) {
