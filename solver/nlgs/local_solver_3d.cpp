@@ -207,15 +207,28 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
     bound = std::max(tolerance, kRoundOff * (r.norm() + Wr.norm() + q.norm()));
   };
 
-  // Sliding (or a near-singular block): generalised Newton on the Alart–Curnier map.
+  // Sliding (or a near-singular block): generalised Newton on the Alart–Curnier map, from the
+  // previous reaction. In NLGS sweeps that start often already solves the problem (the others moved
+  // little): then it is returned without building the map.
+  Eigen::Vector3d r = r_start.allFinite() ? project_on_coulomb_cone(r_start, mu) : Eigen::Vector3d::Zero();
+  double best_residual, best_bound;
+  if (r(0) > 0.0) {
+    evaluate(r, best_residual, best_bound);
+    if (best_residual <= best_bound) {
+      s.r = r;
+      s.residual = best_residual;
+      s.state = classify(r, mu);
+      return s;
+    }
+  }
   double rho_n, rho_t;
   augmentation_parameters(W, rho_n, rho_t);
   const AlartCurnier map{W, q, mu, rho_n, rho_t};
-  Eigen::Vector3d r = r_start.allFinite() ? project_on_coulomb_cone(r_start, mu) : Eigen::Vector3d::Zero();
-  if (r(0) <= 0.0) r = Eigen::Vector3d(-q(0) * rho_n, 0.0, 0.0);
+  if (r(0) <= 0.0) {
+    r = Eigen::Vector3d(-q(0) * rho_n, 0.0, 0.0);
+    evaluate(r, best_residual, best_bound);
+  }
   Eigen::Vector3d best = r;
-  double best_residual, best_bound;
-  evaluate(r, best_residual, best_bound);
   Eigen::Matrix3d J;
   Eigen::Vector3d phi = map.value(r, &J);
   double merit = phi.squaredNorm();
