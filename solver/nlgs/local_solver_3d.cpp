@@ -163,7 +163,10 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
                                            const Eigen::Vector3d& q, double mu,
                                            const Eigen::Vector3d& r_start, double tolerance) {
   LocalSolution3D s;
-  if (!q.allFinite() || !W.allFinite()) {
+  // A caller's inverse is all NaN when W is singular or not finite (then W is checked here); the
+  // caller computed it once per step, so W needs no check per call.
+  const bool given = W_inverse_given && !std::isnan((*W_inverse_given)(0, 0));
+  if (!q.allFinite() || (!given && !W.allFinite())) {
     s.failed = true;
     return s;
   }
@@ -172,16 +175,14 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
 
   // Sticking: u = 0, r = -W⁻¹ q, valid when it lies inside the cone. The inverse is the caller's
   // when given (once per contact and step), else by cofactors here.
-  Eigen::Matrix3d W_inverse;
-  bool invertible = false;
-  if (W_inverse_given) {
-    W_inverse = *W_inverse_given;
-    invertible = W_inverse.allFinite();
-  } else {
+  Eigen::Matrix3d own_inverse;
+  bool invertible = given;
+  if (!W_inverse_given) {
     const double scale = W.cwiseAbs().maxCoeff();
-    W.computeInverseWithCheck(W_inverse, invertible, 1e-14 * scale * scale * scale);
+    W.computeInverseWithCheck(own_inverse, invertible, 1e-14 * scale * scale * scale);
   }
   if (invertible) {
+    const Eigen::Matrix3d& W_inverse = given ? *W_inverse_given : own_inverse;
     const Eigen::Vector3d r_stick = -W_inverse * q;
     if (r_stick(0) > 0.0 && r_stick.tail<2>().norm() <= mu * r_stick(0)) {
       // Inside the cone with u = W r + q = 0: exact up to the round-off of the inverse, checked
