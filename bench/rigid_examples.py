@@ -1,16 +1,18 @@
 #!/usr/bin/python3
-"""Speed and achieved error of lmgc-solve on LMGC90's RIGID_2D examples, against LMGC90's own run.
+"""Speed and achieved error of lmgc-solve on LMGC90's RIGID_2D or RIGID_3D examples, against LMGC90's
+own run.
 
 For every example with reference_lmgc90/RUN.md: runs lmgc-solve (release build) with the parameters
-of the example's command.py (as RUN.md records them) for the number of steps LMGC90 ran (or
---steps-cap), then reads OUTBOX/run_report.csv and prints one markdown table row: seconds per step,
+of the example's command.py (as RUN.md records them, plus the chipy calls of its script that have a
+flag: new rotation scheme, diagonal resolution, periodic sides, source point) for the number of
+steps LMGC90 ran (or --steps-cap), then reads OUTBOX/run_report.csv and prints one markdown table row: seconds per step,
 NLGS sweep rate (contact updates per second = sum(iterations x contacts) / NLGS time), mean NLGS
 iterations, steps that hit the iteration cap, and the achieved natural-map residual / |q| (median
 and worst over the steps with contacts), next to LMGC90's seconds per step, sweep rate and
 unconverged steps from RUN.md. Single thread.
 
-Usage: bench/rigid_2d_examples.py [--build build/release] [--steps-cap N] [--only NAME] [--out FILE]
-       [--extra "--residual-target 1e-6"]
+Usage: bench/rigid_examples.py [--dimension 2|3] [--build build/release] [--steps-cap N] [--only NAME]
+       [--out FILE] [--extra "--residual-target 1e-6"]
 """
 import argparse
 import os
@@ -25,7 +27,31 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXAMPLES = os.environ.get("LMGC_SHARED_DIR", os.path.join(os.path.dirname(ROOT), "shared"))
-EXAMPLES = os.path.join(EXAMPLES, "lmgc90-examples", "RIGID_2D")
+EXAMPLES = os.path.join(EXAMPLES, "lmgc90-examples")
+
+
+def script_flags(case):
+    """lmgc-solve flags for the chipy calls of the example's command.py that change the run."""
+    flags = []
+    path = os.path.join(case, "command.py")
+    if not os.path.exists(path):
+        return flags
+    text = open(path).read()
+    values = dict(re.findall(r"^(\w+)\s*=\s*([-+0-9.eE]+)\s*$", text, re.M))
+    for line in text.splitlines():
+        line = line.strip()
+        if line.startswith("chipy.RBDY3_NewRotationScheme()"):
+            flags.append("--new-rotation-scheme")
+        elif line.startswith("chipy.nlgs_3D_DiagonalResolution()"):
+            flags.append("--diagonal-resolution")
+        elif line.startswith("chipy.SetPeriodicCondition("):
+            names = [n.strip() for n in line.split("(", 1)[1].rsplit(")", 1)[0].split(",")]
+            v = [values.get(n, n) for n in names]
+            flags += ["--xperiod", v[0], "--yperiod", v[1]]
+        elif line.startswith("chipy.RBDY3_SetSourcePointWithIni("):
+            names = [n.strip() for n in line.split("(", 1)[1].rsplit(")", 1)[0].split(",")]
+            flags += ["--source-point", ",".join(values.get(n, n) for n in names)]
+    return flags
 
 
 def run_md(case):
@@ -47,6 +73,7 @@ def run_md(case):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--dimension", type=int, choices=(2, 3), default=2)
     parser.add_argument("--build", default=os.path.join(ROOT, "build", "release"))
     parser.add_argument("--steps-cap", type=int, default=None)
     parser.add_argument("--only", default=None)
@@ -54,14 +81,15 @@ def main():
     parser.add_argument("--extra", default="", help="extra lmgc-solve flags")
     args = parser.parse_args()
     solve = os.path.join(args.build, "tools", "lmgc-solve")
-    if not os.path.isdir(EXAMPLES):
-        print(f"no examples at {EXAMPLES}", file=sys.stderr)
+    examples = os.path.join(EXAMPLES, f"RIGID_{args.dimension}D")
+    if not os.path.isdir(examples):
+        print(f"no examples at {examples}", file=sys.stderr)
         return 2
     header = ("| example | steps | lmgc s/step | LMGC90 s/step | speed-up | lmgc updates/s | LMGC90 updates/s "
               "| mean iterations | capped steps (lmgc / LMGC90) | residual/‖q‖ median | worst |")
     lines = [header, "|" + "---|" * header.count("|")[:-1] if False else "|" + "---|" * (header.count("|") - 1)]
-    for name in sorted(os.listdir(EXAMPLES)):
-        case = os.path.join(EXAMPLES, name)
+    for name in sorted(os.listdir(examples)):
+        case = os.path.join(examples, name)
         if args.only and name != args.only:
             continue
         if not os.path.exists(os.path.join(case, "reference_lmgc90", "RUN.md")):
@@ -81,6 +109,8 @@ def main():
                 command += [flag, params[key]]
         if name == "BouncingBallsDK":
             command += ["--ymin-boundary", "0"]
+        if args.dimension == 3:
+            command += script_flags(case)
         command += args.extra.split()
         start = time.perf_counter()
         subprocess.run(command, check=True)
