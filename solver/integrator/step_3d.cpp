@@ -47,19 +47,6 @@ std::string_view seen_as(const std::string& type) {
   return type == "SPHEb" ? std::string_view("SPHER") : std::string_view(type);
 }
 
-// (t, n, s) <-> the local solver's normal-first (n, t, s).
-Vector3d to_normal_first(const Vector3d& v) {
-  return Vector3d(v(1), v(0), v(2));
-}
-Vector3d from_normal_first(const Vector3d& v) {
-  return Vector3d(v(1), v(0), v(2));
-}
-Matrix3d to_normal_first(const Matrix3d& W) {
-  Matrix3d P;
-  P << 0, 1, 0, 1, 0, 0, 0, 0, 1;
-  return P * W * P;
-}
-
 // Relative local velocity (t, n, s) of the contact for body velocities V (numerics.md §2, 3D).
 Vector3d local_velocity(const Interaction3D& c, const std::vector<Vector6d>& V) {
   const Vector6d& vc = V[static_cast<std::size_t>(c.candidate_body)];
@@ -504,7 +491,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   // Each block in the local solver's order and its inverse, once per step.
   std::vector<Matrix3d> W_normal_first(contacts.size()), W_inverse(contacts.size());
   for (std::size_t k = 0; k < contacts.size(); ++k) {
-    W_normal_first[k] = to_normal_first(contacts[k].W);
+    W_normal_first[k] = swap_normal_first(contacts[k].W);
     bool invertible = false;
     const double scale = W_normal_first[k].cwiseAbs().maxCoeff();
     W_normal_first[k].computeInverseWithCheck(W_inverse[k], invertible, 1e-14 * scale * scale * scale);
@@ -538,9 +525,9 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
     }
     q_local = local_velocity(c, V) - c.W * (c.r - correction) + c.covfree;
     const LocalSolution3D s =
-        solve_signorini_coulomb_3d(W_normal_first[k], &W_inverse[k], to_normal_first(q_local), c.mu,
-                                   to_normal_first(rr_previous), local_tolerance);
-    return with_cohesion(c, from_normal_first(s.r));
+        solve_signorini_coulomb_3d(W_normal_first[k], &W_inverse[k], swap_normal_first(q_local), c.mu,
+                                   swap_normal_first(rr_previous), local_tolerance);
+    return with_cohesion(c, swap_normal_first(s.r));
   };
   const double tol = options.tolerance;
   const int max_checks = options.gs_it2;
@@ -632,7 +619,8 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
       const Vector3d rr = cohesion_free(c, c.r);
       c.status = status_of(rr, c.mu);
       residual_squared +=
-          natural_map_3d(to_normal_first(rr), to_normal_first(Vector3d(c.u + c.covfree)), c.mu).squaredNorm();
+          natural_map_3d(swap_normal_first(rr), swap_normal_first(Vector3d(c.u + c.covfree)), c.mu)
+              .squaredNorm();
     }
     finish_law(scene.laws[static_cast<std::size_t>(c.law)].law, c,
                LawStep{state.h, state.time, state.step == 1});

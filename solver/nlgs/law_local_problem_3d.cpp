@@ -13,16 +13,6 @@ using Eigen::Vector3d;
 
 namespace {
 
-// (t, n, s) <-> (n, t, s), the local solver's order.
-Vector3d normal_first(const Vector3d& v) {
-  return Vector3d(v(1), v(0), v(2));
-}
-Matrix3d normal_first(const Matrix3d& W) {
-  Matrix3d P;
-  P << 0, 1, 0, 1, 0, 0, 0, 0, 1;
-  return P * W * P;
-}
-
 // Cohesive zone (contact-laws.md §3.5): r = rr + shift + K uu with uu = q + W r gives
 // uu = A (q + W shift) + A W rr, A = (I − W K)⁻¹.
 struct CohesiveProblem {
@@ -48,9 +38,9 @@ Vector3d solve_law_form_3d(const Interaction3D& c, const Vector3d& q, const Vect
       const CohesiveProblem p = cohesive_problem(c, q);
       const Vector3d rr_previous =
           r_previous - c.cohesive_shift - c.cohesive_slope.cwiseProduct(q + c.W * r_previous);
-      const LocalSolution3D s = solve_signorini_coulomb_3d(normal_first(p.W), normal_first(p.q), c.mu,
-                                                           normal_first(rr_previous), tolerance);
-      const Vector3d rr = normal_first(s.r);
+      const LocalSolution3D s = solve_signorini_coulomb_3d(swap_normal_first(p.W), swap_normal_first(p.q),
+                                                           c.mu, swap_normal_first(rr_previous), tolerance);
+      const Vector3d rr = swap_normal_first(s.r);
       const Vector3d uu = p.q + p.W * rr;
       return rr + c.cohesive_shift + c.cohesive_slope.cwiseProduct(uu);
     }
@@ -87,7 +77,7 @@ Vector3d law_form_residual_3d(const Interaction3D& c, const Vector3d& r, const V
       return Vector3d(std::min(-r(1), -(uu(1) + c.normal_compliance * r(1))), r(0), r(2));
     case LocalForm3D::cohesive: {
       const Vector3d rr = r - c.cohesive_shift - c.cohesive_slope.cwiseProduct(uu);
-      return natural_map_3d(normal_first(rr), normal_first(uu), c.mu);
+      return natural_map_3d(swap_normal_first(rr), swap_normal_first(uu), c.mu);
     }
     case LocalForm3D::coulomb:
       break;

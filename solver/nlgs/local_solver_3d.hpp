@@ -35,6 +35,17 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
                                            const Eigen::Vector3d& q, double mu,
                                            const Eigen::Vector3d& r_start, double tolerance);
 
+// LMGC90's (t, n, s) order <-> the solver's normal-first (n, t, s): swapping the first two entries
+// (rows and columns of a block) is its own inverse.
+inline Eigen::Vector3d swap_normal_first(const Eigen::Vector3d& v) {
+  return Eigen::Vector3d(v(1), v(0), v(2));
+}
+inline Eigen::Matrix3d swap_normal_first(const Eigen::Matrix3d& W) {
+  Eigen::Matrix3d S;
+  S << W(1, 1), W(1, 0), W(1, 2), W(0, 1), W(0, 0), W(0, 2), W(2, 1), W(2, 0), W(2, 2);
+  return S;
+}
+
 // Projection onto the Coulomb cone K_mu = { |x_T| <= mu x_n } (fc3d/FORMAT.md §3). Inline: the local
 // solver evaluates it several times per contact and sweep.
 inline Eigen::Vector3d project_on_coulomb_cone(const Eigen::Vector3d& x, double mu) {

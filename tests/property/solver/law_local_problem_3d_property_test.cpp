@@ -4,11 +4,10 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include <Eigen/Geometry>
 #include <cmath>
 
 #include "solver/nlgs/law_local_problem_3d.hpp"
-#include "tests/support/generators.hpp"
+#include "tests/support/random_blocks.hpp"
 
 namespace lmgc::solver {
 namespace {
@@ -17,20 +16,8 @@ using Eigen::Matrix3d;
 using Eigen::Vector3d;
 using test::in_range;
 
-// A random SPD block: a random rotation of eigenvalues in [1e-3, 1] × scale.
-Matrix3d random_spd() {
-  Eigen::Quaterniond rotation(in_range(-1.0, 1.0), in_range(-1.0, 1.0), in_range(-1.0, 1.0),
-                              in_range(-1.0, 1.0));
-  const Matrix3d Q = rotation.norm() < 1e-3 ? Matrix3d::Identity() : rotation.normalized().toRotationMatrix();
-  const double scale = in_range(0.1, 10.0);
-  const Vector3d lambda(scale, scale * in_range(1e-3, 1.0), scale * in_range(1e-3, 1.0));
-  const Matrix3d W = Q * lambda.asDiagonal() * Q.transpose();
-  return 0.5 * (W + W.transpose());
-}
-
-Vector3d random_q() {
-  return Vector3d(in_range(-5.0, 5.0), in_range(-5.0, 5.0), in_range(-5.0, 5.0));
-}
+using test::random_q;
+using test::random_spd;
 
 Interaction3D spring(LocalForm3D form) {
   Interaction3D c;

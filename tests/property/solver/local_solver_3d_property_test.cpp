@@ -12,6 +12,7 @@
 
 #include "solver/nlgs/local_solver_3d.hpp"
 #include "tests/support/generators.hpp"
+#include "tests/support/random_blocks.hpp"
 
 namespace lmgc::solver {
 namespace {
@@ -21,29 +22,9 @@ using Eigen::Vector3d;
 
 using test::in_range;
 
-// A random rotation of R^3 (normalised quaternion).
-Matrix3d random_rotation() {
-  Eigen::Quaterniond rotation(in_range(-1.0, 1.0), in_range(-1.0, 1.0), in_range(-1.0, 1.0),
-                              in_range(-1.0, 1.0));
-  if (rotation.norm() < 1e-3) return Matrix3d::Identity();
-  rotation.normalize();
-  return rotation.toRotationMatrix();
-}
-
-// A random symmetric positive definite block Q diag(lambda) Qᵀ: largest eigenvalue in [0.1, 10],
-// the others down to 1e-4 of it (condition number up to 1e4).
-Matrix3d random_spd() {
-  const double scale = in_range(0.1, 10.0);
-  const Vector3d lambda(scale, scale * std::pow(10.0, -in_range(0.0, 4.0)),
-                        scale * std::pow(10.0, -in_range(0.0, 4.0)));
-  const Matrix3d Q = random_rotation();
-  const Matrix3d W = Q * lambda.asDiagonal() * Q.transpose();
-  return 0.5 * (W + W.transpose());
-}
-
-Vector3d random_q() {
-  return Vector3d(in_range(-5.0, 5.0), in_range(-5.0, 5.0), in_range(-5.0, 5.0));
-}
+using test::random_q;
+using test::random_rotation;
+using test::random_spd;
 
 double smallest_eigenvalue_of_symmetric_part(const Matrix3d& W) {
   const Matrix3d S = 0.5 * (W + W.transpose());
