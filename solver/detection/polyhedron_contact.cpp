@@ -386,4 +386,76 @@ bool detect_polyhedron_polyhedron(const PlacedPolyhedron& cd, const PlacedPolyhe
   return contact.count > 0;
 }
 
+namespace {
+
+// The point of triangle (a, b, c) nearest to p, by the region of p among the triangle's vertices,
+// edges and face (Voronoi regions of the triangle).
+Vector3d closest_point_on_triangle(const Vector3d& p, const Vector3d& a, const Vector3d& b,
+                                   const Vector3d& c) {
+  const Vector3d ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return a;
+  const Vector3d bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + (d1 / (d1 - d3)) * ab;
+  const Vector3d cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + (d2 / (d2 - d6)) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)
+    return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  const double denominator = 1.0 / (va + vb + vc);
+  return a + ab * (vb * denominator) + ac * (vc * denominator);
+}
+
+}  // namespace
+
+bool detect_sphere_polyhedron(const Vector3d& centre, double radius, const PlacedPolyhedron& polyhedron,
+                              double alert, ContactGeometry3D& geometry) {
+  const auto& faces = polyhedron.shape->faces;
+  // The face whose plane the centre is farthest in front of (least deep when it is inside).
+  double deepest = -std::numeric_limits<double>::infinity();
+  std::size_t front = 0;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const double d =
+        polyhedron.normals[f].dot(centre - polyhedron.vertices[static_cast<std::size_t>(faces[f][0])]);
+    if (d > deepest) {
+      deepest = d;
+      front = f;
+    }
+  }
+  if (faces.empty() || deepest - radius > alert) return false;
+  if (deepest <= 0.0) {
+    geometry.normal = polyhedron.normals[front];
+    geometry.point = centre - deepest * geometry.normal;
+    geometry.gap = deepest - radius;
+  } else {
+    // Outside a convex polyhedron the nearest surface point lies on a face the centre is in front of.
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      const Vector3d& a = polyhedron.vertices[static_cast<std::size_t>(faces[f][0])];
+      if (polyhedron.normals[f].dot(centre - a) <= 0.0) continue;
+      const Vector3d q =
+          closest_point_on_triangle(centre, a, polyhedron.vertices[static_cast<std::size_t>(faces[f][1])],
+                                    polyhedron.vertices[static_cast<std::size_t>(faces[f][2])]);
+      const double distance = (centre - q).squaredNorm();
+      if (distance < best) {
+        best = distance;
+        geometry.point = q;
+      }
+    }
+    const double distance = std::sqrt(best);
+    if (distance - radius > alert) return false;
+    geometry.normal =
+        distance > 0.0 ? Vector3d((centre - geometry.point) / distance) : polyhedron.normals[front];
+    geometry.gap = distance - radius;
+  }
+  tangents_of_normal(geometry.normal, geometry.tangent, geometry.second_tangent);
+  return true;
+}
+
 }  // namespace lmgc::solver

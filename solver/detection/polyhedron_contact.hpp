@@ -8,6 +8,7 @@
 #include <span>
 
 #include "solver/bodies/polyhedron.hpp"
+#include "solver/detection/pair_geometry_3d.hpp"
 
 namespace lmgc::solver {
 
@@ -50,5 +51,13 @@ bool detect_polyhedron_plane(const PlacedPolyhedron& polyhedron, const Eigen::Ve
 bool detect_polyhedron_polyhedron(const PlacedPolyhedron& candidate, const PlacedPolyhedron& antagonist,
                                   double alert, double reference_size, int max_iterations,
                                   PolyhedronContact& contact);
+
+// SPPRx (mod_SPPRx DETECTION_SPPRx): a sphere (centre, radius) against a convex polyhedron. The
+// contact point is the point of the polyhedron's surface nearest to the centre; n goes from it to
+// the centre, gap = distance − radius. A centre inside the polyhedron takes the least deep face:
+// n = its normal, gap = (signed distance to its plane) − radius. (t, s) by comp_rep. False when the
+// gap exceeds `alert`.
+bool detect_sphere_polyhedron(const Eigen::Vector3d& centre, double radius,
+                              const PlacedPolyhedron& polyhedron, double alert, ContactGeometry3D& geometry);
 
 }  // namespace lmgc::solver

@@ -346,6 +346,22 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
       if (hit) add_point(i, j, image, row, g.tangent, g.normal, g.second_tangent, g.point, g.gap, 0, surface);
       return true;
     }
+    if (v.family == PairFamily3D::SPPRx) {
+      PlacedPolyhedron polyhedron = placed_polyhedron[j];
+      if (across) {
+        image_vertices.assign(polyhedron.vertices.begin(), polyhedron.vertices.end());
+        for (Vector3d& x : image_vertices) x += image;
+        polyhedron.vertices = image_vertices;
+        polyhedron.centre += image;
+      }
+      ContactGeometry3D g;
+      // Bounding spheres first (compute_contact_SPPRx), then the surface.
+      if ((centre[i] - polyhedron.centre).norm() < cd.radius + polyhedron.radius + v.alert &&
+          detect_sphere_polyhedron(centre[i], cd.radius, polyhedron, v.alert, g))
+        add_point(i, j, image, row, g.tangent, g.normal, g.second_tangent, g.point, g.gap, 0,
+                  lmgc_pi * cd.radius * cd.radius);  // as SPPLx (LMGC90's SPPRx area is left unset)
+      return true;
+    }
     PlacedPolyhedron antagonist = placed_polyhedron[j];
     if (across && an.shape == ContactorShape3D::polyhedron) {
       image_vertices.assign(antagonist.vertices.begin(), antagonist.vertices.end());

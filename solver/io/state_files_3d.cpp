@@ -116,7 +116,8 @@ grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& 
   // LMGC90's 3D module order (state-and-outputs.md §1.1): ... PRPLx, PRPRx, ... SPPLx, SPPRx, SPSPx.
   constexpr PairFamily3D kWriteOrder[] = {PairFamily3D::CDCDx, PairFamily3D::CDPLx, PairFamily3D::PRPLx,
                                           PairFamily3D::PRPRx, PairFamily3D::PTPT3, PairFamily3D::SPCDx,
-                                          PairFamily3D::SPDCx, PairFamily3D::SPPLx, PairFamily3D::SPSPx};
+                                          PairFamily3D::SPDCx, PairFamily3D::SPPLx, PairFamily3D::SPPRx,
+                                          PairFamily3D::SPSPx};
   static_assert(std::size(kWriteOrder) == kPairFamily3DCount);
   for (PairFamily3D family : kWriteOrder) {
     std::vector<std::size_t> members;

@@ -13,8 +13,19 @@
 namespace lmgc::solver {
 
 // 3D interaction families (the order interactions are kept and swept in).
-enum class PairFamily3D : std::uint8_t { SPSPx, SPPLx, PRPRx, PRPLx, SPCDx, CDCDx, CDPLx, SPDCx, PTPT3 };
-inline constexpr int kPairFamily3DCount = 9;
+enum class PairFamily3D : std::uint8_t {
+  SPSPx,
+  SPPLx,
+  PRPRx,
+  PRPLx,
+  SPCDx,
+  CDCDx,
+  CDPLx,
+  SPDCx,
+  PTPT3,
+  SPPRx
+};
+inline constexpr int kPairFamily3DCount = 10;
 
 // The family's name: its contact module, and the block type of its Vloc_Rloc entries.
 constexpr std::string_view pair_family_name(PairFamily3D family) {
@@ -37,6 +48,8 @@ constexpr std::string_view pair_family_name(PairFamily3D family) {
       return "SPDCx";
     case PairFamily3D::PTPT3:
       return "PTPT3";
+    case PairFamily3D::SPPRx:
+      return "SPPRx";
   }
   return "";
 }
@@ -55,7 +68,7 @@ inline bool pair_family_3d(const std::string& candidate, const std::string& anta
       {"POLYR", "POLYR", PairFamily3D::PRPRx}, {"POLYR", "PLANx", PairFamily3D::PRPLx},
       {"SPHER", "CYLND", PairFamily3D::SPCDx}, {"CYLND", "CYLND", PairFamily3D::CDCDx},
       {"CYLND", "PLANx", PairFamily3D::CDPLx}, {"SPHER", "DNLYC", PairFamily3D::SPDCx},
-      {"PT3Dx", "PT3Dx", PairFamily3D::PTPT3}};
+      {"PT3Dx", "PT3Dx", PairFamily3D::PTPT3}, {"SPHER", "POLYR", PairFamily3D::SPPRx}};
   for (const Row& row : kRows)
     if (candidate == row.candidate && antagonist == row.antagonist) {
       family = row.family;

@@ -154,3 +154,40 @@ TEST(PolyhedronPolyhedron, CrossedEdgesMeetAtOnePoint) {
 
 }  // namespace
 }  // namespace lmgc::solver
+
+namespace lmgc::solver {
+namespace {
+
+// SPPRx on a unit half-size cube at the origin: the nearest surface point, its distance and the
+// normal from the polyhedron to the sphere, for a centre in front of a face, of an edge and of a
+// vertex, and inside (least deep face); nothing beyond the alert.
+TEST(SpherePolyhedron, NearestSurfacePointGivesTheGapAndTheNormal) {
+  const Polyhedron cube = test::box_polyhedron(Vector3d(0.5, 0.5, 0.5));
+  std::vector<Vector3d> vertices = cube.vertices, normals = cube.face_normals;
+  PlacedPolyhedron view{&cube, vertices, normals, Vector3d::Zero(), cube.radius};
+  const double r = 0.1;
+  ContactGeometry3D g;
+  ASSERT_TRUE(detect_sphere_polyhedron(Vector3d(0.2, -0.1, 0.65), r, view, 0.1, g));
+  EXPECT_NEAR(g.gap, 0.05, 1e-15);
+  EXPECT_TRUE(g.normal.isApprox(Vector3d::UnitZ()));
+  EXPECT_TRUE(g.point.isApprox(Vector3d(0.2, -0.1, 0.5)));
+  EXPECT_NEAR(g.tangent.dot(g.normal), 0.0, 1e-15);
+  EXPECT_TRUE(g.second_tangent.isApprox(g.tangent.cross(g.normal)));
+  // In front of the edge x = z = 0.5: along the diagonal.
+  ASSERT_TRUE(detect_sphere_polyhedron(Vector3d(0.6, 0.0, 0.6), r, view, 0.1, g));
+  EXPECT_NEAR(g.gap, std::sqrt(0.02) - r, 1e-15);
+  EXPECT_TRUE(g.normal.isApprox(Vector3d(1.0, 0.0, 1.0).normalized()));
+  EXPECT_TRUE(g.point.isApprox(Vector3d(0.5, 0.0, 0.5)));
+  // In front of the vertex (0.5, 0.5, 0.5).
+  ASSERT_TRUE(detect_sphere_polyhedron(Vector3d(0.55, 0.55, 0.55), r, view, 0.1, g));
+  EXPECT_NEAR(g.gap, std::sqrt(3.0) * 0.05 - r, 1e-15);
+  EXPECT_TRUE(g.point.isApprox(Vector3d(0.5, 0.5, 0.5)));
+  // Centre inside, 0.1 below the top face and deeper below the others: the top face.
+  ASSERT_TRUE(detect_sphere_polyhedron(Vector3d(0.0, 0.1, 0.4), r, view, 0.1, g));
+  EXPECT_NEAR(g.gap, -0.1 - r, 1e-15);
+  EXPECT_TRUE(g.normal.isApprox(Vector3d::UnitZ()));
+  EXPECT_FALSE(detect_sphere_polyhedron(Vector3d(0.0, 0.0, 0.75), r, view, 0.1, g));
+}
+
+}  // namespace
+}  // namespace lmgc::solver
