@@ -451,25 +451,38 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     found.back().reference_gap = link.reference_length;
   }
   // LMGC90 writes and sweeps interactions family by family, then by candidate.
-  std::stable_sort(found.begin(), found.end(), [](const Interaction3D& x, const Interaction3D& y) {
+  // Sorted through an index (an interaction is 640 bytes: moving them in the sort cost more than
+  // the fine detection on large scenes), then gathered once.
+  std::vector<std::uint32_t> sorted(found.size());
+  std::iota(sorted.begin(), sorted.end(), 0u);
+  std::stable_sort(sorted.begin(), sorted.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const Interaction3D &x = found[a], &y = found[b];
     return std::tie(x.family, x.candidate, x.antagonist) < std::tie(y.family, y.candidate, y.antagonist);
   });
-  state.contacts = std::move(found);
+  state.contacts.clear();
+  state.contacts.reserve(found.size());
+  for (const std::uint32_t k : sorted) state.contacts.push_back(std::move(found[k]));
 }
 
 void recup_rloc(RunState3D& state) {
   // Key: the contactor pair and, for PRPLx, the candidate vertex; PRPRx points of a pair are then
   // told apart by position (numerics.md §4, recup_rloc_PRPRx / recup_rloc_PRPLx).
-  std::multimap<std::tuple<std::int32_t, std::int32_t, std::int32_t>, const Interaction3D*> previous;
-  for (const Interaction3D& p : state.previous)
-    previous.emplace(std::tuple(p.candidate, p.antagonist, p.vertex), &p);
+  // The previous interactions by key through a sorted index (equal keys keep their order).
+  const std::vector<Interaction3D>& previous = state.previous;
+  const auto key = [](const Interaction3D& c) { return std::tuple(c.candidate, c.antagonist, c.vertex); };
+  std::vector<std::uint32_t> by_key(previous.size());
+  std::iota(by_key.begin(), by_key.end(), 0u);
+  std::stable_sort(by_key.begin(), by_key.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return key(previous[a]) < key(previous[b]); });
   for (Interaction3D& c : state.contacts) {
     const Interaction3D* match = nullptr;
-    const auto [first, last] = previous.equal_range(std::tuple(c.candidate, c.antagonist, c.vertex));
-    for (auto it = first; it != last && !match; ++it)
+    const auto wanted = key(c);
+    auto it = std::lower_bound(by_key.begin(), by_key.end(), wanted,
+                               [&](std::uint32_t a, const auto& k) { return key(previous[a]) < k; });
+    for (; it != by_key.end() && key(previous[*it]) == wanted && !match; ++it)
       if (c.family != PairFamily3D::PRPRx ||
-          (it->second->candidate_point - c.candidate_point).squaredNorm() < kRecupSquaredDistance)
-        match = it->second;
+          (previous[*it].candidate_point - c.candidate_point).squaredNorm() < kRecupSquaredDistance)
+        match = &previous[*it];
     if (!match) {
       c.r.setZero();
       c.status_begin = ContactStatus::nknow;
@@ -505,12 +518,12 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
 
   const double local_tolerance = 1e-10 * std::max(result.free_velocity_norm, 1e-300);
   // Each block in the local solver's order and its inverse, once per step.
-  std::vector<Matrix3d> W_normal_first(contacts.size()), W_inverse(contacts.size());
+  std::vector<Matrix3d> W_inverse(contacts.size());
   for (std::size_t k = 0; k < contacts.size(); ++k) {
-    W_normal_first[k] = swap_normal_first(contacts[k].W);
+    const Matrix3d W_normal_first = swap_normal_first(contacts[k].W);
     bool invertible = false;
-    const double scale = W_normal_first[k].cwiseAbs().maxCoeff();
-    W_normal_first[k].computeInverseWithCheck(W_inverse[k], invertible, 1e-14 * scale * scale * scale);
+    const double scale = W_normal_first.cwiseAbs().maxCoeff();
+    W_normal_first.computeInverseWithCheck(W_inverse[k], invertible, 1e-14 * scale * scale * scale);
     if (!invertible) W_inverse[k].setConstant(std::nan(""));
   }
   // One local solve of contact k with the others frozen; returns the new reaction. The local problem
@@ -541,7 +554,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
     }
     q_local = local_velocity(c, V) - c.W * (c.r - correction) + c.covfree;
     const LocalSolution3D s =
-        solve_signorini_coulomb_3d(W_normal_first[k], &W_inverse[k], swap_normal_first(q_local), c.mu,
+        solve_signorini_coulomb_3d(swap_normal_first(c.W), &W_inverse[k], swap_normal_first(q_local), c.mu,
                                    swap_normal_first(rr_previous), local_tolerance);
     return with_cohesion(c, swap_normal_first(s.r));
   };

@@ -86,22 +86,33 @@ inline bool pair_family_3d(const std::string& candidate, const std::string& anta
 enum class LocalForm3D : std::uint8_t { coulomb, rod, wire, cohesive };
 
 struct Interaction3D {
-  PairFamily3D family = PairFamily3D::SPSPx;
-  std::int32_t candidate = 0, antagonist = 0;  // contactor ids
+  // What an NLGS sweep reads of a contact comes first, together (six cache lines of the struct):
+  // large granular steps are memory-bound.
   std::int32_t candidate_body = 0, antagonist_body = 0;
-  std::int32_t law = 0, visibility = 0;
+  bool inactive = false;
+  LocalForm3D form = LocalForm3D::coulomb;
+  bool correction_needs_contact = false;  // Mohr: no cohesion on a contact that opens (rr = 0)
+  double mu = 0.0;
+  // Cohesion impulse of the WET / Mohr laws (corln = −c h on the normal): the local problem is solved
+  // for rr = r − correction·e_n ≥ 0.
+  double correction = 0.0;
   // Geometry at the detection configuration: rows t, n, s of the local frame, global axes.
   Eigen::Matrix3d frame = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();
-  double gap_begin = 0.0;
   // Rows: frameᵀ (ℓ × t), frameᵀ (ℓ × n), frameᵀ (ℓ × s) of each body (ℓ = contact point − centre),
   // in body axes: the rotational part of Hᵀ (numerics.md §2).
   Eigen::Matrix3d lever_candidate = Eigen::Matrix3d::Zero();
   Eigen::Matrix3d lever_antagonist = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d velocity_begin = Eigen::Vector3d::Zero();  // local (t, n, s) at t_begin
-
   Eigen::Vector3d r = Eigen::Vector3d::Zero();  // impulse over the step (t, n, s)
-  Eigen::Vector3d u = Eigen::Vector3d::Zero();  // relative velocity at the end of the step
+  Eigen::Vector3d covfree = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d W = Eigen::Matrix3d::Zero();  // Delassus block (t, n, s)
+
+  PairFamily3D family = PairFamily3D::SPSPx;
+  std::int32_t candidate = 0, antagonist = 0;  // contactor ids
+  std::int32_t law = 0, visibility = 0;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  double gap_begin = 0.0;
+  Eigen::Vector3d velocity_begin = Eigen::Vector3d::Zero();  // local (t, n, s) at t_begin
+  Eigen::Vector3d u = Eigen::Vector3d::Zero();               // relative velocity at the end of the step
   ContactStatus status = ContactStatus::nknow;
   ContactStatus status_begin = ContactStatus::nknow;
   std::array<double, 6> internal{};
@@ -110,22 +121,11 @@ struct Interaction3D {
   // Contact surface of the cohesive laws (get_surf_*: SPSPx π (r₁r₂)²/(r₁+r₂)², SPPLx π r², PRPRx the
   // overlap area shared by the pair's points, PRPLx 0 as LMGC90 has it).
   double surface = 0.0;
-  // Cohesion impulse of the WET / Mohr laws (corln = −c h on the normal): the local problem is solved
-  // for rr = r − correction·e_n ≥ 0.
-  double correction = 0.0;
-  bool correction_needs_contact = false;  // Mohr: no cohesion on a contact that opens (rr = 0)
   // The contact point about the candidate's centre in its frame: PRPRx's warm-start key
   // (recup_rloc_PRPRx matches points closer than 1e-3).
   Eigen::Vector3d candidate_point = Eigen::Vector3d::Zero();
-
   // PTPT3: the link's length in the reference configuration (nonuc0, the rods' and wires' gapREF).
   double reference_gap = 0.0;
-
-  Eigen::Matrix3d W = Eigen::Matrix3d::Zero();  // Delassus block (t, n, s)
-  Eigen::Vector3d covfree = Eigen::Vector3d::Zero();
-  double mu = 0.0;
-  bool inactive = false;
-  LocalForm3D form = LocalForm3D::coulomb;
   double normal_compliance = 0.0;                            // rod, wire: WWnn − Wnn
   Eigen::Vector3d cohesive_slope = Eigen::Vector3d::Zero();  // cohesive: (k_t, k_n, k_t)
   Eigen::Vector3d cohesive_shift = Eigen::Vector3d::Zero();  // cohesive: (radh_t, 0, radh_s)
