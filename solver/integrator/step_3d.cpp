@@ -181,15 +181,33 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     radii[k] = c.bounding_radius;
     placed[k] = c.shape != ContactorShape3D::point && b.visible[body];
   }
-  // The visibility row of an ordered (candidate, antagonist) pair, -1 if none.
-  const auto row_of = [&](const Contactor3D& cd, const Contactor3D& an) {
-    for (std::size_t r = 0; r < scene.visibility.size(); ++r) {
-      const Visibility3D& v = scene.visibility[r];
-      if (seen_as(cd.type) == v.candidate_type && cd.color == v.candidate_color &&
-          seen_as(an.type) == v.antagonist_type && an.color == v.antagonist_color)
-        return static_cast<int>(r);
-    }
-    return -1;
+  // The visibility row of an ordered (candidate, antagonist) pair, -1 if none: contactors are grouped
+  // by (type as `$seety` names it, colour) once, and rows looked up in a class × class table (the
+  // string comparisons per grid pair were a tenth of large steps).
+  std::vector<std::int32_t> class_of(n);
+  std::vector<std::pair<std::string_view, std::string_view>> classes;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Contactor3D& c = scene.contactors[k];
+    const std::pair<std::string_view, std::string_view> name(seen_as(c.type), c.color);
+    const auto it = std::find(classes.begin(), classes.end(), name);
+    class_of[k] = static_cast<std::int32_t>(it - classes.begin());
+    if (it == classes.end()) classes.push_back(name);
+  }
+  const std::size_t class_count = classes.size();
+  std::vector<std::int32_t> row_table(class_count * class_count, -1);
+  for (std::size_t a = 0; a < class_count; ++a)
+    for (std::size_t c = 0; c < class_count; ++c)
+      for (std::size_t r = 0; r < scene.visibility.size(); ++r) {
+        const Visibility3D& v = scene.visibility[r];
+        if (classes[a].first == v.candidate_type && classes[a].second == v.candidate_color &&
+            classes[c].first == v.antagonist_type && classes[c].second == v.antagonist_color) {
+          row_table[a * class_count + c] = static_cast<std::int32_t>(r);
+          break;
+        }
+      }
+  const auto row_of = [&](std::size_t cd, std::size_t an) {
+    return row_table[static_cast<std::size_t>(class_of[cd]) * class_count +
+                     static_cast<std::size_t>(class_of[an])];
   };
   // POLYR vertices and face normals at the detection configuration, one flat array each.
   std::vector<PlacedPolyhedron> placed_polyhedron(n);
@@ -270,7 +288,7 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     const Contactor3D& an = scene.contactors[j];
     if (cd.body == an.body || cd.shape == ContactorShape3D::plane) return false;
     if (cd.shape == ContactorShape3D::point || an.shape == ContactorShape3D::point) return true;
-    const int row = row_of(cd, an);
+    const int row = row_of(i, j);
     if (row < 0) return false;
     const Visibility3D& v = scene.visibility[static_cast<std::size_t>(row)];
     // LMGC90's PLANx frame is (T, S, N) = (e1, -e2, e3) of the body axes times the contactor's
