@@ -99,7 +99,9 @@ void recup_rloc(RunState2D& state) {
 
 NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  NlgsResult result = solve_nlgs_2d(scene, scene.bodies, state.contacts, state.h, state.time, options);
+  const bool first = !state.laws_initialized && !state.contacts.empty();
+  NlgsResult result = solve_nlgs_2d(scene, scene.bodies, state.contacts, state.h, state.time, options, first);
+  if (!state.contacts.empty()) state.laws_initialized = true;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -17,6 +17,7 @@ struct RunState2D {
   double theta = 0.5;
   std::vector<Interaction2D> contacts;  // this step's interactions
   std::vector<Interaction2D> previous;  // last step's (the "verlet" list used for warm start)
+  bool laws_initialized = false;        // a step with interactions has been solved (LawStep::first_step)
   VisibilityIndex2D visibility;
 };
 

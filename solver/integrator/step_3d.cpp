@@ -92,6 +92,14 @@ Matrix3d delassus_block(const Interaction3D& c, const RigidBodies3D& b) {
   return W;
 }
 
+// The block the law's local problem is posed with: W, plus ELASTIC_REPELL_CLB's compliance on n.
+Matrix3d law_block(const Interaction3D& c) {
+  if (c.normal_compliance == 0.0 || c.form != LocalForm3D::coulomb) return c.W;
+  Matrix3d WW = c.W;
+  WW(1, 1) += c.normal_compliance;
+  return WW;
+}
+
 // The reaction with the cohesion impulse (correction) of the WET / Mohr laws added, and back: Mohr
 // adds it only to a contact that stays closed (mod_nlgs_3D solve_nlgs :4547-4552).
 Vector3d with_cohesion(const Interaction3D& c, Vector3d rr) {
@@ -521,10 +529,11 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   V = b.velocity_free;
   for (auto& impulse : b.impulse) impulse.setZero();
   double q_squared = 0.0;
+  const bool first = !state.laws_initialized && !contacts.empty();
+  if (!contacts.empty()) state.laws_initialized = true;
   for (Interaction3D& c : contacts) {
     // Each law's derived problem (its own file, solver/laws/*.hpp).
-    if (!prepare_law(scene.laws[static_cast<std::size_t>(c.law)].law, c,
-                     LawStep{state.h, state.time, state.step == 1}))
+    if (!prepare_law(scene.laws[static_cast<std::size_t>(c.law)].law, c, LawStep{state.h, state.time, first}))
       c.inactive = true;
     if (c.inactive) c.r.setZero();
     const Vector3d q = local_velocity(c, b.velocity_free) + c.covfree;
@@ -538,7 +547,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   // Each block in the local solver's order and its inverse, once per step.
   std::vector<Matrix3d> W_inverse(contacts.size());
   for (std::size_t k = 0; k < contacts.size(); ++k) {
-    const Matrix3d W_normal_first = swap_normal_first(contacts[k].W);
+    const Matrix3d W_normal_first = swap_normal_first(law_block(contacts[k]));
     bool invertible = false;
     const double scale = W_normal_first.cwiseAbs().maxCoeff();
     W_normal_first.computeInverseWithCheck(W_inverse[k], invertible, 1e-14 * scale * scale * scale);
@@ -562,7 +571,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
       const Vector3d diagonal = c.W.diagonal();
       q_local = local_velocity(c, V) - diagonal.cwiseProduct(c.r - correction) + c.covfree;
       if (q_local(1) >= 0.0) return with_cohesion(c, Vector3d::Zero());
-      Vector3d r = -q_local.cwiseQuotient(diagonal);
+      Vector3d r = -q_local.cwiseQuotient(law_block(c).diagonal());  // invWnn = 1/WWnn
       const double bound = c.mu * r(1), tangential = std::hypot(r(0), r(2));
       if (tangential > bound && tangential > 1e-18) {
         r(0) *= bound / tangential;
@@ -572,8 +581,8 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
     }
     q_local = local_velocity(c, V) - c.W * (c.r - correction) + c.covfree;
     const LocalSolution3D s =
-        solve_signorini_coulomb_3d(swap_normal_first(c.W), &W_inverse[k], swap_normal_first(q_local), c.mu,
-                                   swap_normal_first(rr_previous), local_tolerance);
+        solve_signorini_coulomb_3d(swap_normal_first(law_block(c)), &W_inverse[k], swap_normal_first(q_local),
+                                   c.mu, swap_normal_first(rr_previous), local_tolerance);
     return with_cohesion(c, swap_normal_first(s.r));
   };
   const double tol = options.tolerance;
@@ -665,12 +674,11 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
     } else {
       const Vector3d rr = cohesion_free(c, c.r);
       c.status = status_of(rr, c.mu);
-      residual_squared +=
-          natural_map_3d(swap_normal_first(rr), swap_normal_first(Vector3d(c.u + c.covfree)), c.mu)
-              .squaredNorm();
+      Vector3d uu = c.u + c.covfree;
+      uu(1) += c.normal_compliance * rr(1);  // ELASTIC_REPELL_CLB's WW (0 for the other laws)
+      residual_squared += natural_map_3d(swap_normal_first(rr), swap_normal_first(uu), c.mu).squaredNorm();
     }
-    finish_law(scene.laws[static_cast<std::size_t>(c.law)].law, c,
-               LawStep{state.h, state.time, state.step == 1});
+    finish_law(scene.laws[static_cast<std::size_t>(c.law)].law, c, LawStep{state.h, state.time, first});
   }
   result.residual_absolute = std::sqrt(residual_squared);
   result.residual_relative = result.free_velocity_norm > 0.0

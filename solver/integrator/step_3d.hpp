@@ -15,6 +15,7 @@ struct RunState3D {
   double theta = 0.5;
   std::vector<Interaction3D> contacts;
   std::vector<Interaction3D> previous;
+  bool laws_initialized = false;  // a step with interactions has been solved (LawStep::first_step)
 };
 
 void increment_step(Scene3D& scene, RunState3D& state);

@@ -1,5 +1,6 @@
 #pragma once
-// COUPLED_DOF: bilateral glue on both components (contact-laws.md §3). 2D.
+// COUPLED_DOF: bilateral glue on every component (contact-laws.md §3.4; 3D: mod_nlgs_3D :5809,
+// r = −W⁻¹ uu). 2D and 3D.
 #include "solver/laws/law_forms.hpp"
 
 namespace lmgc::solver {
@@ -11,6 +12,11 @@ struct CoupledDof {
 };
 
 inline void prepare(const CoupledDof&, Interaction2D& c, const LawStep&) {
+  c.mu = 0.0;
+}
+
+inline void prepare(const CoupledDof&, Interaction3D& c, const LawStep&) {
+  c.form = LocalForm3D::glued;
   c.mu = 0.0;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // ELASTIC_REPELL_CLB: linear spring in compression (stiffness F/gap) in series, + Coulomb
-// (contact-laws.md §3.3). 2D.
+// (contact-laws.md §3.3). 2D and 3D.
 #include "solver/laws/law_forms.hpp"
 
 namespace lmgc::solver {
@@ -15,6 +15,13 @@ struct ElasticRepellClb {
 // r_n = -h k γ_end gives WWnn = Wnn + 1/(k h²), covfree = γ/h.
 inline void prepare(const ElasticRepellClb& law, Interaction2D& c, const LawStep& step) {
   if (law.stiffness > 0.0) c.WW(1, 1) = c.W(1, 1) + 1.0 / (law.stiffness * step.h * step.h);
+  gap_form(c, step.h);
+  c.mu = law.sfric;
+}
+
+// 3D (mod_nlgs_3D prep :1523-1530): the same WWnn and covfree.
+inline void prepare(const ElasticRepellClb& law, Interaction3D& c, const LawStep& step) {
+  if (law.stiffness > 0.0) c.normal_compliance = 1.0 / (law.stiffness * step.h * step.h);
   gap_form(c, step.h);
   c.mu = law.sfric;
 }

@@ -1,6 +1,6 @@
 #pragma once
-// IQS_CLB_g0: IQS relative to the gap at the interaction's first step, kept as internal g_ref
-// (contact-laws.md §3.1). 2D.
+// IQS_CLB_g0: IQS relative to the gap at the run's first step, kept as internal g_ref
+// (contact-laws.md §3.1). 2D and 3D.
 #include "solver/laws/law_forms.hpp"
 
 namespace lmgc::solver {
@@ -12,8 +12,11 @@ struct IqsClbG0 {
   double sfric;
 };
 
-inline void prepare(const IqsClbG0& law, Interaction2D& c, const LawStep& step) {
-  if (c.status_begin == ContactStatus::nknow) c.internal[0] = positive(c.gap_begin);
+// g_ref = (γ)+ at the run's first preparation (mod_nlgs / mod_nlgs_3D prep, `.not. is_initialized`);
+// contacts created later keep g_ref = 0, i.e. plain IQS_CLB.
+template <class Interaction>
+void prepare(const IqsClbG0& law, Interaction& c, const LawStep& step) {
+  if (step.first_step) c.internal[0] = positive(c.gap_begin);
   c.covfree(1) = positive(c.gap_begin - c.internal[0]) / step.h;
   c.mu = law.sfric;
 }

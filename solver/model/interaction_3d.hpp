@@ -82,8 +82,11 @@ inline bool pair_family_3d(const std::string& candidate, const std::string& anta
 //  coulomb  — Signorini–Coulomb on (rr, uu), rr = r − correction e_n;
 //  rod      — r = (0, r_n, 0) with uu_n + normal_compliance r_n = 0 (bilateral spring);
 //  wire     — the same, tension only: 0 ≤ −r_n ⊥ −(uu_n + normal_compliance r_n) ≥ 0;
-//  cohesive — r = rr + cohesive_shift + diag(cohesive_slope) uu, Signorini–Coulomb on (rr, uu).
-enum class LocalForm3D : std::uint8_t { coulomb, rod, wire, cohesive };
+//  cohesive — r = rr + cohesive_shift + diag(cohesive_slope) uu, Signorini–Coulomb on (rr, uu);
+//  glued    — uu = 0 on all three components (bilateral).
+// A coulomb contact with normal_compliance > 0 (ELASTIC_REPELL_CLB) solves it with WW = W +
+// normal_compliance e_n e_nᵀ, i.e. on uu = u + covfree + normal_compliance rr_n e_n.
+enum class LocalForm3D : std::uint8_t { coulomb, rod, wire, cohesive, glued };
 
 struct Interaction3D {
   // What an NLGS sweep reads of a contact comes first, together (six cache lines of the struct):
@@ -126,7 +129,7 @@ struct Interaction3D {
   Eigen::Vector3d candidate_point = Eigen::Vector3d::Zero();
   // PTPT3: the link's length in the reference configuration (nonuc0, the rods' and wires' gapREF).
   double reference_gap = 0.0;
-  double normal_compliance = 0.0;                            // rod, wire: WWnn − Wnn
+  double normal_compliance = 0.0;  // rod, wire, coulomb (ELASTIC_REPELL_CLB): WWnn − Wnn
   Eigen::Vector3d cohesive_slope = Eigen::Vector3d::Zero();  // cohesive: (k_t, k_n, k_t)
   Eigen::Vector3d cohesive_shift = Eigen::Vector3d::Zero();  // cohesive: (radh_t, 0, radh_s)
 };

@@ -44,6 +44,8 @@ Vector3d solve_law_form_3d(const Interaction3D& c, const Vector3d& q, const Vect
       const Vector3d uu = p.q + p.W * rr;
       return rr + c.cohesive_shift + c.cohesive_slope.cwiseProduct(uu);
     }
+    case LocalForm3D::glued:
+      return c.W.partialPivLu().solve(-q);
     case LocalForm3D::coulomb:
       break;
   }
@@ -53,6 +55,7 @@ Vector3d solve_law_form_3d(const Interaction3D& c, const Vector3d& q, const Vect
 ContactStatus law_form_status_3d(const Interaction3D& c, const Vector3d& r, const Vector3d& uu) {
   switch (c.form) {
     case LocalForm3D::rod:
+    case LocalForm3D::glued:
       return ContactStatus::stick;
     case LocalForm3D::wire:
       return r(1) < 0.0 ? ContactStatus::stick : ContactStatus::vnish;
@@ -79,6 +82,8 @@ Vector3d law_form_residual_3d(const Interaction3D& c, const Vector3d& r, const V
       const Vector3d rr = r - c.cohesive_shift - c.cohesive_slope.cwiseProduct(uu);
       return natural_map_3d(swap_normal_first(rr), swap_normal_first(uu), c.mu);
     }
+    case LocalForm3D::glued:
+      return swap_normal_first(uu);
     case LocalForm3D::coulomb:
       break;
   }

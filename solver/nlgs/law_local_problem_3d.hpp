@@ -23,7 +23,7 @@ ContactStatus law_form_status_3d(const Interaction3D& c, const Eigen::Vector3d& 
 
 // Natural-map residual (normal first, like natural_map_3d) of the law at (r, uu = u + covfree):
 // rod (0, uu_n + k r_n, r_t, r_s); wire min(−r_n, −(uu_n + k r_n)) on n and (r_t, r_s); cohesive the
-// Signorini–Coulomb map of (rr, uu).
+// Signorini–Coulomb map of (rr, uu); glued uu.
 Eigen::Vector3d law_form_residual_3d(const Interaction3D& c, const Eigen::Vector3d& r,
                                      const Eigen::Vector3d& uu);
 

@@ -127,7 +127,7 @@ Matrix2d delassus_block(const Interaction2D& c, const std::vector<Vector3d>& inv
 }  // namespace
 
 NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vector<Interaction2D>& contacts,
-                         double h, double time, const NlgsOptions& options) {
+                         double h, double time, const NlgsOptions& options, bool first) {
   NlgsResult result;
   const std::size_t count = contacts.size();
   std::vector<Vector3d>& v = bodies.velocity;
@@ -141,7 +141,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     Interaction2D& c = contacts[a];
     const ContactLaw& law = scene.laws[static_cast<std::size_t>(c.law)].law;
     c.W = delassus_block(c, inverse_mass);
-    prepare_local_problem_2d(law, c, h);
+    prepare_local_problem_2d(law, c, h, first);
     if (c.inactive) c.r.setZero();
     HotContact2D& k = hot[a];
     k.cd = c.candidate_body;

@@ -165,3 +165,37 @@ TEST(Rigid2DAnalytic, HeadOnCollisionConservesMomentumAndReversesTimesE) {
 
 }  // namespace
 }  // namespace lmgc::solver
+
+namespace lmgc::solver {
+namespace {
+
+// A disk glued under a fixed JONCx by a sound IQS_MAC_CZM interface (β = 1 from the run's first
+// preparation, LMGC90's init_CZM): the cohesive traction holds its weight, so after 0.2 s it has
+// moved by less than 1e-4 m (free fall: 0.196 m) and β is still 1. The same disk created after the
+// first step (the interface is then born broken, β = 0) falls.
+TEST(Rigid2DAnalytic, SoundCohesiveInterfaceHoldsAHangingDiskFromTheFirstStepOnly) {
+  const double r = 0.1, h = 1e-3;
+  for (const bool from_start : {true, false}) {
+    SCOPED_TRACE(from_start ? "interface present at the first step" : "interface created later");
+    SceneBuilder2D b;
+    b.add_disk(0.0, -r, r, 1000.0);
+    b.add_fixed_joncx(0.0, 0.05, 0.0, 1.0, 0.05);
+    b.add_law("mac01", IqsMacCzm{0.3, 0.3, 1e9, 1e9, 0.0, 1e6});
+    b.see("DISKx", "BLEUx", "mac01", "JONCx", "WALLx", 0.01);
+    Scene2D scene = b.build();
+    RunState2D state = run_state(scene, h);
+    if (!from_start) state.laws_initialized = true;  // as if an earlier step had had contacts
+    for (int i = 0; i < 200; ++i) step_2d(scene, state, converged_options());
+    const double moved = std::abs(scene.bodies.displacement[0].y());
+    if (from_start) {
+      ASSERT_EQ(state.contacts.size(), 1u);
+      EXPECT_EQ(state.contacts.front().internal[3], 1.0);
+      EXPECT_LT(moved, 1e-4);
+    } else {
+      EXPECT_GT(moved, 0.15);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace lmgc::solver

@@ -535,3 +535,49 @@ TEST(Rigid3DAnalytic, WeakCohesiveZoneBreaksAndLetsTheSphereFall) {
 
 }  // namespace
 }  // namespace lmgc::solver
+
+namespace lmgc::solver {
+namespace {
+
+// ELASTIC_REPELL_CLB in 3D: a sphere on a plane sinks into its spring until k δ = m g (the implicit
+// impulse −h k γ_end carries the weight); started at δ = m g / k it stays there.
+TEST(Rigid3DAnalytic, ElasticRepellSphereRestsAtItsSpringPenetration) {
+  const double r = 0.1, k = 1e6, h = 1e-3;
+  const double m = 1000.0 * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  const double depth = m * g / k;
+  SceneBuilder3D b;
+  const int ball = b.add_sphere(Vector3d(0.0, 0.0, r - depth), r, 1000.0);
+  add_ground(b);
+  b.add_law("rep01", ElasticRepellClb{k, 0.3});
+  b.see("SPHER", "BLEUx", "rep01", "PLANx", "VERTx", 0.01);
+  Scene3D scene = b.build();
+  RunState3D state = run_state(h);
+  for (int i = 0; i < 500; ++i) step_3d(scene, state, converged_options());
+  ASSERT_EQ(state.contacts.size(), 1u);
+  EXPECT_NEAR(state.contacts.front().r(1) / h, m * g, 1e-6 * m * g);
+  EXPECT_NEAR(centre_of(scene, ball).z(), r - depth, 1e-10);
+}
+
+// COUPLED_DOF in 3D glues every component: a sphere glued under a plane stays put, the link pulling
+// with its weight.
+TEST(Rigid3DAnalytic, CoupledDofHoldsASphereUnderAPlane) {
+  const double r = 0.1, h = 1e-3;
+  const double m = 1000.0 * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  SceneBuilder3D b;
+  Matrix3d down;
+  down << 1, 0, 0, 0, -1, 0, 0, 0, -1;
+  b.add_fixed_plane(Vector3d(0.0, 0.0, 0.05), down, Vector3d(1.0, 1.0, 0.05));
+  const int ball = b.add_sphere(Vector3d(0.0, 0.0, -r), r, 1000.0);
+  b.add_law("glue1", CoupledDof{});
+  b.see("SPHER", "BLEUx", "glue1", "PLANx", "VERTx", 0.01);
+  Scene3D scene = b.build();
+  RunState3D state = run_state(h);
+  for (int i = 0; i < 200; ++i) step_3d(scene, state, converged_options());
+  ASSERT_EQ(state.contacts.size(), 1u);
+  EXPECT_EQ(state.contacts.front().status, ContactStatus::stick);
+  EXPECT_NEAR(state.contacts.front().r(1) / h, -m * g, 1e-9 * m * g);
+  EXPECT_NEAR(centre_of(scene, ball).z(), -r, 1e-12);
+}
+
+}  // namespace
+}  // namespace lmgc::solver

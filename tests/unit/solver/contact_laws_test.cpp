@@ -65,7 +65,9 @@ TEST(ContactLawTable, ThreeDimensionalFormsAreTheDocumentedOnes) {
   EXPECT_TRUE(provided_in_3d(IqsClb{0.3}));
   EXPECT_TRUE(provided_in_3d(IqsMohrDsClb{1.0, 1.0, 0.3, 0.3}));
   EXPECT_TRUE(provided_in_3d(IqsMacCzm{}));
-  EXPECT_FALSE(provided_in_3d(ElasticRepellClb{}));
+  EXPECT_TRUE(provided_in_3d(ElasticRepellClb{}));
+  EXPECT_TRUE(provided_in_3d(IqsClbG0{}));
+  EXPECT_FALSE(provided_in_3d(NoNlgsBranch{}));  // MD_JKRs: a smooth law, no NLGS branch in 3D
   EXPECT_TRUE(provided_in_3d(ElasticWire{}));
   EXPECT_TRUE(provided_in_3d(ElasticRod{}));
   // Rods and wires link PTPT3 points only: no 2D form (the 2D scene refuses them).
@@ -73,7 +75,7 @@ TEST(ContactLawTable, ThreeDimensionalFormsAreTheDocumentedOnes) {
   EXPECT_FALSE(provided_in_2d(ElasticRod{}));
   EXPECT_TRUE(provided_in_2d(IqsMacCzm{}));
   Interaction3D c = contact_3d(0.0);
-  EXPECT_FALSE(prepare_law(CoupledDof{}, c, LawStep{h, 0.0, true}));
+  EXPECT_FALSE(prepare_law(NoNlgsBranch{0.3}, c, LawStep{h, 0.0, true}));
 }
 
 TEST(IqsClb, ClosesAnOpenGapWithinTheStepButNeverPushesOut) {
@@ -99,13 +101,21 @@ TEST(IqsDsClb, UsesDynamicFrictionOnlyAfterSliding) {
 
 TEST(IqsClbG0, MeasuresTheGapFromItsValueAtTheFirstStep) {
   Interaction2D c = contact_2d(0.004);
-  prepare_law(IqsClbG0{0.3}, c, LawStep{h});
+  prepare_law(IqsClbG0{0.3}, c, LawStep{h, h, true});
   EXPECT_EQ(c.internal[0], 0.004);
   EXPECT_EQ(c.covfree(1), 0.0);
   c.status_begin = ContactStatus::stick;
   c.gap_begin = 0.005;
-  prepare_law(IqsClbG0{0.3}, c, LawStep{h});
+  prepare_law(IqsClbG0{0.3}, c, LawStep{h, 2 * h, false});
   EXPECT_NEAR(c.covfree(1), 0.001 / h, 1e-9);
+  // 3D alike; a contact created after the first step keeps g_ref = 0 (plain IQS_CLB).
+  Interaction3D c3 = contact_3d(0.004);
+  ASSERT_TRUE(prepare_law(IqsClbG0{0.3}, c3, LawStep{h, h, true}));
+  EXPECT_EQ(c3.internal[0], 0.004);
+  EXPECT_EQ(c3.covfree(1), 0.0);
+  Interaction3D late = contact_3d(0.004);
+  ASSERT_TRUE(prepare_law(IqsClbG0{0.3}, late, LawStep{h, 5 * h, false}));
+  EXPECT_NEAR(late.covfree(1), 0.004 / h, 1e-9);
 }
 
 TEST(RstClb, ScalesTheIncomingVelocityAndIgnoresOpenContacts) {
@@ -277,6 +287,22 @@ TEST(ElasticRod, IsTheBilateralSpring) {
   EXPECT_EQ(c.form, LocalForm3D::rod);
   EXPECT_DOUBLE_EQ(c.covfree(1), -0.1 / h);
   EXPECT_DOUBLE_EQ(c.normal_compliance, 1.0 / (500.0 * h * h));
+}
+
+TEST(ElasticRepellClb, ThreeDimensionalFormAddsTheSpringComplianceOnTheNormal) {
+  Interaction3D c = contact_3d(-0.001);
+  ASSERT_TRUE(prepare_law(ElasticRepellClb{1e6, 0.4}, c, LawStep{h}));
+  EXPECT_EQ(c.form, LocalForm3D::coulomb);
+  EXPECT_DOUBLE_EQ(c.normal_compliance, 1.0 / (1e6 * h * h));
+  EXPECT_DOUBLE_EQ(c.covfree(1), -0.001 / h);  // gap form: the penetration is pushed out
+  EXPECT_EQ(c.mu, 0.4);
+}
+
+TEST(CoupledDof, ThreeDimensionalFormGluesEveryComponent) {
+  Interaction3D c = contact_3d(0.002);
+  ASSERT_TRUE(prepare_law(CoupledDof{}, c, LawStep{h}));
+  EXPECT_EQ(c.form, LocalForm3D::glued);
+  EXPECT_EQ(c.covfree, Eigen::Vector3d::Zero());
 }
 
 TEST(CoupledDof, HasNoFriction) {
