@@ -1,5 +1,5 @@
 #pragma once
-// IQS_CLB_g0: IQS relative to the gap at the run's first step, kept as internal g_ref
+// IQS_CLB_g0: IQS relative to the gap at the run's first step with interactions, kept as internal g_ref
 // (contact-laws.md §3.1). 2D and 3D.
 #include "solver/laws/law_forms.hpp"
 

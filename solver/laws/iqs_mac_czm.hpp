@@ -18,7 +18,7 @@ struct IqsMacCzm {
 
 inline void prepare(const IqsMacCzm& law, Interaction2D& c, const LawStep& step) {
   const double h = step.h;
-  // Sound (β = 1) only at the run's first step; contacts created later start broken, β = 0
+  // Sound (β = 1) only at the run's first step with interactions; contacts created later start broken, β = 0
   // (mod_nlgs prep :2313-2330, init_CZM resets internals when Nstep = 1).
   if (step.first_step) {
     c.internal = {0.0, 0.0, 0.0, 1.0, -99.0, 0.0};
