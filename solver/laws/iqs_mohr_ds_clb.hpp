@@ -1,8 +1,8 @@
 #pragma once
 // IQS_MOHR_DS_CLB: Mohr–Coulomb cohesion until the contact first stops sticking, then IQS_DS_CLB
 // (contact-laws.md §3.2). 2D: cohesion c × the contact length. 3D (mod_nlgs_3D :1466-1520,
-// :4547-4552): cohesive (Mstck) only from the run's first step with interactions, cohesion c × the family's contact
-// surface, added only while the local status is not noctc.
+// :4547-4552): cohesive (Mstck) only from the run's first step with interactions, cohesion c × the family's
+// contact surface, added only while the local status is not noctc.
 #include "solver/laws/law_forms.hpp"
 
 namespace lmgc::solver {
