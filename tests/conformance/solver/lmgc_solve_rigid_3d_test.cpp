@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "grammar/dof/parser.hpp"
@@ -90,8 +91,8 @@ TEST(LmgcSolveRigid3D, PeriodicBoxFedByASourcePointFollowsLmgc90UntilTheFirstBod
 
 // Bridge_PR (an arch of 22 blocks loaded until it fails, diagonal resolution): over the 130 steps
 // LMGC90 wrote, every Vloc_Rloc.OUT.n it kept has its number of interactions (108) and the blocks are
-// within 1 mm of its positions (measured 0.57 mm at step 130; the arch then collapses, not step for
-// step alike).
+// within 0.2 mm of its positions (measured 0.077 mm over the 130 steps, printed; 0.57 mm with the stop-10
+// local solver; the arch then collapses, not step for step alike).
 TEST(LmgcSolveRigid3D, ArchFollowsLmgc90UntilItCollapses) {
   LMGC_REQUIRE_SHARED();
   const fs::path example = examples_dir() / "RIGID_3D" / "Bridge_PR";
@@ -99,6 +100,7 @@ TEST(LmgcSolveRigid3D, ArchFollowsLmgc90UntilItCollapses) {
   const ExampleRun r = run_example(example, 130 / kScale, "compare_");
   ASSERT_EQ(r.run.exit_code, 0);
   const fs::path outbox = r.case_dir / "OUTBOX";
+  double worst = 0.0;
   for (long n = 1; n <= r.steps / 10; ++n) {
     const std::string suffix = ".OUT." + std::to_string(n);
     if (fs::exists(reference / ("Vloc_Rloc" + suffix))) {  // the run kept 1 to 12
@@ -107,12 +109,13 @@ TEST(LmgcSolveRigid3D, ArchFollowsLmgc90UntilItCollapses) {
           << suffix;
     }
     // Translation dofs only, in metres.
-    EXPECT_LT(
+    const double largest =
         position_difference(read_dof(outbox / ("DOF" + suffix)), read_dof(reference / ("DOF" + suffix)), 3)
-            .largest,
-        1e-3)
-        << suffix;
+            .largest;
+    EXPECT_LT(largest, 2e-4) << suffix;
+    worst = std::max(worst, largest);
   }
+  std::printf("Bridge_PR: largest translation difference over the compared steps %.3g m\n", worst);
 }
 
 // Beam_ClusterPR (a cluster of two boxes and three boxes on a plane, PRPRx and PRPLx): BODIES.OUT
@@ -150,7 +153,9 @@ TEST(LmgcSolveRigid3D, BoxesOnAPlaneFollowLmgc90) {
   if (outputs == 30) {
     const grammar::DofFile a = read_dof(outbox / "DOF.OUT.30"), b = read_dof(reference / "DOF.OUT.30");
     // Measured 8.4e-3 of LMGC90's largest displacement (0.32 m): 2.7 mm.
-    EXPECT_LT(relative_position_difference(a, b), 1.5e-2);
+    const double relative = relative_position_difference(a, b);
+    EXPECT_LT(relative, 1.5e-2);
+    std::printf("Beam_ClusterPR step 1500: position difference %.3g of the largest displacement\n", relative);
   }
 }
 
