@@ -91,8 +91,8 @@ TEST(LmgcSolveRigid3D, PeriodicBoxFedByASourcePointFollowsLmgc90UntilTheFirstBod
 
 // Bridge_PR (an arch of 22 blocks loaded until it fails, diagonal resolution): over the 130 steps
 // LMGC90 wrote, every Vloc_Rloc.OUT.n it kept has its number of interactions (108) and the blocks are
-// within 0.2 mm of its positions (measured 0.077 mm over the 130 steps, printed; 0.57 mm with the stop-10
-// local solver; the arch then collapses, not step for step alike).
+// within 0.2 mm of its positions (measured 0.077 mm over the 130 steps, printed; 0.57 mm at stop 10;
+// the arch then collapses, not step for step alike).
 TEST(LmgcSolveRigid3D, ArchFollowsLmgc90UntilItCollapses) {
   LMGC_REQUIRE_SHARED();
   const fs::path example = examples_dir() / "RIGID_3D" / "Bridge_PR";
