@@ -81,14 +81,47 @@ void recup_rloc(RunState2D& state) {
   auto key = [](const Interaction2D& c) {
     return std::make_tuple(c.family, c.candidate, c.antagonist, c.candidate_vertex);
   };
+  const std::vector<Interaction2D>& previous = state.previous;
+  // PLPLx between two parallel faces: which polygon holds the vertices depends on round-off, so a
+  // pair may come back with its roles swapped (LMGC90's own detection keeps them; its
+  // recup_rloc_ByPosition_PLPLx matches either role by position). The swapped pair's previous
+  // point at the same place (within 1% of the distance between that pair's two points) is the match.
+  const auto swapped_match = [&](const Interaction2D& c) -> const Interaction2D* {
+    const auto first = std::lower_bound(previous.begin(), previous.end(),
+                                        std::make_tuple(c.family, c.antagonist, c.candidate),
+                                        [&](const Interaction2D& p, const auto& k) {
+                                          return std::make_tuple(p.family, p.candidate, p.antagonist) < k;
+                                        });
+    auto last = first;
+    while (last != previous.end() && last->family == c.family && last->candidate == c.antagonist &&
+           last->antagonist == c.candidate)
+      ++last;
+    if (last - first != 2) return nullptr;  // face against face: two points
+    const double spacing = (first->point - (first + 1)->point).norm();
+    for (auto p = first; p != last; ++p)
+      if ((p->point - c.point).norm() < 0.01 * spacing) return &*p;
+    return nullptr;
+  };
   std::size_t j = 0;
   for (Interaction2D& c : state.contacts) {
-    while (j < state.previous.size() && key(state.previous[j]) < key(c)) ++j;
-    if (j < state.previous.size() && key(state.previous[j]) == key(c)) {
-      const Interaction2D& p = state.previous[j];
-      c.r = p.r;
-      c.status_begin = p.status;
-      c.internal = p.internal;
+    while (j < previous.size() && key(previous[j]) < key(c)) ++j;
+    const Interaction2D* match = nullptr;
+    bool swapped = false;
+    if (j < previous.size() && key(previous[j]) == key(c)) {
+      match = &previous[j];
+    } else if (c.family == PairFamily2D::PLPLx) {
+      match = swapped_match(c);
+      swapped = match != nullptr;
+    }
+    if (match) {
+      c.r = match->r;
+      c.status_begin = match->status;
+      c.internal = match->internal;
+      if (swapped) {
+        // n and t turn over with the roles: r_t and a cohesive zone's tangential jump change sign.
+        c.r(0) = -c.r(0);
+        if (match->cohesive) c.internal[1] = -c.internal[1];
+      }
     } else {
       c.r.setZero();
       c.status_begin = ContactStatus::nknow;
@@ -100,7 +133,8 @@ void recup_rloc(RunState2D& state) {
 NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const bool first = !state.laws_initialized && !state.contacts.empty();
-  NlgsResult result = solve_nlgs_2d(scene, scene.bodies, state.contacts, state.h, state.time, options, first);
+  NlgsResult result = solve_nlgs_2d(scene, scene.bodies, state.contacts, state.h, state.time, options,
+                                    state.step == 1, first);
   if (!state.contacts.empty()) state.laws_initialized = true;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

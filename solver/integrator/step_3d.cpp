@@ -533,7 +533,8 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   if (!contacts.empty()) state.laws_initialized = true;
   for (Interaction3D& c : contacts) {
     // Each law's derived problem (its own file, solver/laws/*.hpp).
-    if (!prepare_law(scene.laws[static_cast<std::size_t>(c.law)].law, c, LawStep{state.h, state.time, first}))
+    if (!prepare_law(scene.laws[static_cast<std::size_t>(c.law)].law, c,
+                     LawStep{state.h, state.time, state.step == 1, first}))
       c.inactive = true;
     if (c.inactive) c.r.setZero();
     const Vector3d q = local_velocity(c, b.velocity_free) + c.covfree;
@@ -678,7 +679,8 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
       uu(1) += c.normal_compliance * rr(1);  // ELASTIC_REPELL_CLB's WW (0 for the other laws)
       residual_squared += natural_map_3d(swap_normal_first(rr), swap_normal_first(uu), c.mu).squaredNorm();
     }
-    finish_law(scene.laws[static_cast<std::size_t>(c.law)].law, c, LawStep{state.h, state.time, first});
+    finish_law(scene.laws[static_cast<std::size_t>(c.law)].law, c,
+               LawStep{state.h, state.time, state.step == 1, first});
   }
   result.residual_absolute = std::sqrt(residual_squared);
   result.residual_relative = result.free_velocity_norm > 0.0

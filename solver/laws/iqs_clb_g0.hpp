@@ -1,5 +1,5 @@
 #pragma once
-// IQS_CLB_g0: IQS relative to the gap at the run's first step with interactions, kept as internal g_ref
+// IQS_CLB_g0: IQS relative to the gap at the run's first preparation with interactions, kept as g_ref
 // (contact-laws.md §3.1). 2D and 3D.
 #include "solver/laws/law_forms.hpp"
 
@@ -16,7 +16,7 @@ struct IqsClbG0 {
 // contacts created later keep g_ref = 0, i.e. plain IQS_CLB.
 template <class Interaction>
 void prepare(const IqsClbG0& law, Interaction& c, const LawStep& step) {
-  if (step.first_step) c.internal[0] = positive(c.gap_begin);
+  if (step.first_preparation) c.internal[0] = positive(c.gap_begin);
   c.covfree(1) = positive(c.gap_begin - c.internal[0]) / step.h;
   c.mu = law.sfric;
 }

@@ -18,10 +18,11 @@ struct IqsMacCzm {
 
 inline void prepare(const IqsMacCzm& law, Interaction2D& c, const LawStep& step) {
   const double h = step.h;
-  // Sound (β = 1) only at the run's first step with interactions; contacts created later start broken, β = 0
-  // (mod_nlgs prep :2313-2330, init_CZM resets internals when Nstep = 1).
-  if (step.first_step) {
-    c.internal = {0.0, 0.0, 0.0, 1.0, -99.0, 0.0};
+  // At the run's first preparation with interactions (mod_nlgs prep :2313-2330) nknow becomes Cnnow,
+  // and init_CZM makes the interface sound (β = 1) if that is step 1; any other contact keeps its
+  // internals (β = 0 for one created later: broken from the start).
+  if (step.first_preparation) {
+    if (step.first_step) c.internal = {0.0, 0.0, 0.0, 1.0, -99.0, 0.0};
     if (c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Cnnow;
   }
   const double length = c.length;
@@ -59,14 +60,14 @@ inline void finish(const IqsMacCzm& law, Interaction2D& c, const LawStep& step) 
   if (c.internal[3] < 1.0 && c.internal[4] < 0.0) c.internal[4] = step.time;
 }
 
-// 3D (mod_nlgs_3D prep :1994-2040, mod_tact_behav init/prep/iter_CZM_3D :4352-4600): at the run's
-// first step every internal is reset and β = 1 (new contacts of later steps start broken, β = 0);
+// 3D (mod_nlgs_3D prep :1994-2040, mod_tact_behav init/prep/iter_CZM_3D :4352-4600): at step 1,
+// if it has interactions, every internal is reset and β = 1 (other contacts start broken, β = 0);
 // L = the pair's contact surface. While β > 1e-12 the cohesive impulse is −L β² h C (δ_begin + h uu)
 // componentwise, C = diag(ct, cn, ct); the normal δ_begin is folded into uu by the IQS covfree.
 inline void prepare(const IqsMacCzm& law, Interaction3D& c, const LawStep& step) {
   const double h = step.h;
-  if (step.first_step) {
-    c.internal = {0.0, 0.0, 0.0, 0.0, 1.0, -99.0};
+  if (step.first_preparation) {  // as in 2D (init_CZM_3D :4352-4444)
+    if (step.first_step) c.internal = {0.0, 0.0, 0.0, 0.0, 1.0, -99.0};
     if (c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Cnnow;
   }
   const double beta = c.internal[4];

@@ -1,7 +1,7 @@
 #pragma once
 // IQS_MOHR_DS_CLB: Mohr–Coulomb cohesion until the contact first stops sticking, then IQS_DS_CLB
 // (contact-laws.md §3.2). 2D: cohesion c × the contact length. 3D (mod_nlgs_3D :1466-1520,
-// :4547-4552): cohesive (Mstck) only from the run's first step with interactions, cohesion c × the family's
+// :4547-4552): cohesive (Mstck) only from step 1 (Nstep = 1, as in 2D), cohesion c × the family's
 // contact surface, added only while the local status is not noctc.
 #include "solver/laws/law_forms.hpp"
 
@@ -19,7 +19,8 @@ struct IqsMohrDsClb {
 };
 
 inline void prepare(const IqsMohrDsClb& law, Interaction2D& c, const LawStep& step) {
-  if (c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Mstck;
+  // Cohesive only for the contacts of step 1 (mod_nlgs prep: `Nstep == 1 .and. nknow`).
+  if (step.first_step && c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Mstck;
   iqs_form(c, step.h);
   if (c.status_begin == ContactStatus::Mstck) {
     add_cohesion(c, law.cohen * c.length, step.h);

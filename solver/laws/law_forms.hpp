@@ -18,12 +18,12 @@ namespace lmgc::solver {
 using LawParameters = std::function<double(std::string_view)>;
 
 struct LawStep {
-  double h = 0.0;     // time step [s]
-  double time = 0.0;  // end of the step [s]
-  // LMGC90's first NLGS preparation of the run that has interactions (its `is_initialized` turns
-  // true there): the laws that take a state from the start (IQS_MAC_CZM's sound interface,
-  // IQS_CLB_g0's reference gap, IQS_MOHR_DS_CLB 3D's cohesion) set it then.
-  bool first_step = false;
+  double h = 0.0;           // time step [s]
+  double time = 0.0;        // end of the step [s]
+  bool first_step = false;  // Nstep = 1 (IQS_MOHR_DS_CLB's Mstck, the CZMs' internals reset)
+  // LMGC90's first NLGS preparation of the run that has interactions (`.not. is_initialized`):
+  // IQS_CLB_g0's reference gap, the CZMs' Cnnow start.
+  bool first_preparation = false;
 };
 
 inline double positive(double x) {

@@ -16,13 +16,13 @@ bool is_wet_law(const ContactLaw& law) {
 
 }  // namespace
 
-void prepare_local_problem_2d(const ContactLaw& law, Interaction2D& c, double h, bool first) {
+void prepare_local_problem_2d(const ContactLaw& law, Interaction2D& c, const LawStep& step) {
   c.WW = c.W;
   c.covfree.setZero();
   c.correction.setZero();
   c.inactive = false;
   c.mu = 0.0;
-  prepare_law(law, c, LawStep{h, 0.0, first});  // each law's own file (solver/laws/*.hpp)
+  prepare_law(law, c, step);  // each law's own file (solver/laws/*.hpp)
   // Guard of the tangential term for degenerate blocks (§2).
   if (c.WW(0, 0) <= 1e-6 * c.WW(1, 1)) c.WW(0, 0) = 1e-6 * c.WW(1, 1);
 }

@@ -13,8 +13,8 @@ namespace lmgc::solver {
 
 // Sets c.WW, c.covfree, c.correction, c.mu, c.inactive from c.W, c.gap_begin, c.velocity_begin,
 // c.status_begin and the law (contact-laws.md §3). `h` is the time step.
-// `first`: LawStep::first_step.
-void prepare_local_problem_2d(const ContactLaw& law, Interaction2D& c, double h, bool first);
+// `step`: h and the first-step flags (LawStep).
+void prepare_local_problem_2d(const ContactLaw& law, Interaction2D& c, const LawStep& step);
 
 // The law's reaction for the current local free velocity (u = ufree_loc + W r), correction included.
 LocalSolution2D solve_local_problem_2d(const ContactLaw& law, const Interaction2D& c,

@@ -127,7 +127,8 @@ Matrix2d delassus_block(const Interaction2D& c, const std::vector<Vector3d>& inv
 }  // namespace
 
 NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vector<Interaction2D>& contacts,
-                         double h, double time, const NlgsOptions& options, bool first) {
+                         double h, double time, const NlgsOptions& options, bool first_step,
+                         bool first_preparation) {
   NlgsResult result;
   const std::size_t count = contacts.size();
   std::vector<Vector3d>& v = bodies.velocity;
@@ -141,7 +142,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     Interaction2D& c = contacts[a];
     const ContactLaw& law = scene.laws[static_cast<std::size_t>(c.law)].law;
     c.W = delassus_block(c, inverse_mass);
-    prepare_local_problem_2d(law, c, h, first);
+    prepare_local_problem_2d(law, c, LawStep{h, 0.0, first_step, first_preparation});
     if (c.inactive) c.r.setZero();
     HotContact2D& k = hot[a];
     k.cd = c.candidate_body;

@@ -12,9 +12,9 @@ namespace lmgc::solver {
 
 // Builds the Delassus blocks and local problems, starts from the reactions already in
 // `contacts` (warm start), iterates, then sets velocities (bodies.velocity = V_free + M⁻¹ H r),
-// relative velocities and statuses. `first`: the run's first preparation with interactions
-// (LawStep::first_step).
+// relative velocities and statuses. `first_step`, `first_preparation`: LawStep's.
 NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vector<Interaction2D>& contacts,
-                         double h, double time, const NlgsOptions& options, bool first = false);
+                         double h, double time, const NlgsOptions& options, bool first_step = false,
+                         bool first_preparation = false);
 
 }  // namespace lmgc::solver

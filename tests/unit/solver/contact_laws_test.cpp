@@ -101,7 +101,7 @@ TEST(IqsDsClb, UsesDynamicFrictionOnlyAfterSliding) {
 
 TEST(IqsClbG0, MeasuresTheGapFromItsValueAtTheFirstStep) {
   Interaction2D c = contact_2d(0.004);
-  prepare_law(IqsClbG0{0.3}, c, LawStep{h, h, true});
+  prepare_law(IqsClbG0{0.3}, c, LawStep{h, h, true, true});
   EXPECT_EQ(c.internal[0], 0.004);
   EXPECT_EQ(c.covfree(1), 0.0);
   c.status_begin = ContactStatus::stick;
@@ -110,7 +110,7 @@ TEST(IqsClbG0, MeasuresTheGapFromItsValueAtTheFirstStep) {
   EXPECT_NEAR(c.covfree(1), 0.001 / h, 1e-9);
   // 3D alike; a contact created after the first step keeps g_ref = 0 (plain IQS_CLB).
   Interaction3D c3 = contact_3d(0.004);
-  ASSERT_TRUE(prepare_law(IqsClbG0{0.3}, c3, LawStep{h, h, true}));
+  ASSERT_TRUE(prepare_law(IqsClbG0{0.3}, c3, LawStep{h, h, true, true}));
   EXPECT_EQ(c3.internal[0], 0.004);
   EXPECT_EQ(c3.covfree(1), 0.0);
   Interaction3D late = contact_3d(0.004);
@@ -185,12 +185,16 @@ TEST(IqsMohrDsClb, IsCohesiveFromTheFirstStepUntilItStopsSticking) {
   Interaction3D late = contact_3d(0.0);
   ASSERT_TRUE(prepare_law(IqsMohrDsClb{100.0, 50.0, 0.2, 0.3}, late, LawStep{h, 0.0, false}));
   EXPECT_EQ(late.correction, 0.0);
-  // 2D: cohesion × contact length, shifted through W.
+  // 2D: cohesion × contact length, shifted through W; also from step 1 only.
   Interaction2D c2 = contact_2d(0.0);
   c2.length = 2.0;
-  prepare_law(IqsMohrDsClb{100.0, 50.0, 0.2, 0.3}, c2, LawStep{h});
+  prepare_law(IqsMohrDsClb{100.0, 50.0, 0.2, 0.3}, c2, LawStep{h, 0.0, true});
+  EXPECT_EQ(c2.status_begin, ContactStatus::Mstck);
   EXPECT_DOUBLE_EQ(c2.correction(1), -200.0 * h);
   EXPECT_DOUBLE_EQ(c2.covfree(0), -200.0 * h * 0.5);
+  Interaction2D late2 = contact_2d(0.0);
+  prepare_law(IqsMohrDsClb{100.0, 50.0, 0.2, 0.3}, late2, LawStep{h, 0.0, false});
+  EXPECT_EQ(late2.correction(1), 0.0);
 }
 
 TEST(IqsWetDsClb, IsCohesiveInsideTheWetHaloOnly) {
@@ -207,7 +211,7 @@ TEST(IqsWetDsClb, IsCohesiveInsideTheWetHaloOnly) {
 TEST(IqsMacCzm, StartsUndamagedAndDamagesUnderOpening) {
   const IqsMacCzm law{0.3, 0.3, 1e6, 1e6, 0.0, 10.0};
   Interaction2D c = contact_2d(0.0);
-  prepare_law(law, c, LawStep{h, h, true});
+  prepare_law(law, c, LawStep{h, h, true, true});
   EXPECT_EQ(c.internal[3], 1.0);  // β
   EXPECT_TRUE(c.cohesive);
   EXPECT_EQ(c.mu, 0.0);              // friction × (1 − β)
@@ -235,7 +239,7 @@ TEST(IqsMacCzm, ContactsCreatedAfterTheFirstStepStartBroken) {
 TEST(IqsMacCzm, ThreeDimensionalFormIsTheCohesiveZoneOnTheContactSurface) {
   const IqsMacCzm law{0.3, 0.4, 2e6, 1e6, 0.0, 10.0};
   Interaction3D c = contact_3d(0.002);  // surface 0.5
-  ASSERT_TRUE(prepare_law(law, c, LawStep{h, h, true}));
+  ASSERT_TRUE(prepare_law(law, c, LawStep{h, h, true, true}));
   EXPECT_EQ(c.status_begin, ContactStatus::Cnnow);
   EXPECT_EQ(c.form, LocalForm3D::cohesive);
   EXPECT_EQ(c.internal[0], 0.5);    // L = surface

@@ -1,0 +1,65 @@
+// The 2D warm start between steps (solver/integrator/step_2d recup_rloc): each interaction takes the
+// reaction, status and internals of the previous step's interaction with its key (family,
+// candidate, antagonist, candidate vertex), and a PLPLx pair whose roles turned over (two parallel
+// faces) those of the previous point at the same place, with r_t and a cohesive jump turned over.
+#include <gtest/gtest.h>
+
+#include "solver/integrator/step_2d.hpp"
+
+namespace lmgc::solver {
+namespace {
+
+Interaction2D plplx(int candidate, int antagonist, int vertex, Eigen::Vector2d point) {
+  Interaction2D c;
+  c.family = PairFamily2D::PLPLx;
+  c.candidate = candidate;
+  c.antagonist = antagonist;
+  c.candidate_vertex = vertex;
+  c.point = point;
+  return c;
+}
+
+TEST(RecupRloc2D, SameKeyTakesTheReactionStatusAndInternals) {
+  RunState2D state;
+  Interaction2D p = plplx(0, 1, 2, Eigen::Vector2d(1.0, 0.0));
+  p.r = Eigen::Vector2d(0.1, 2.0);
+  p.status = ContactStatus::Cstck;
+  p.internal[3] = 1.0;
+  state.previous = {p};
+  state.contacts = {plplx(0, 1, 2, Eigen::Vector2d(1.0, 0.0)), plplx(0, 1, 3, Eigen::Vector2d(1.0, 1.0))};
+  recup_rloc(state);
+  EXPECT_EQ(state.contacts[0].r, p.r);
+  EXPECT_EQ(state.contacts[0].status_begin, ContactStatus::Cstck);
+  EXPECT_EQ(state.contacts[0].internal[3], 1.0);
+  EXPECT_EQ(state.contacts[1].r, Eigen::Vector2d::Zero());  // another vertex: a new contact
+  EXPECT_EQ(state.contacts[1].status_begin, ContactStatus::nknow);
+}
+
+TEST(RecupRloc2D, SwappedFaceAgainstFacePairMatchesByPositionAndTurnsTangentialOver) {
+  RunState2D state;
+  // Previous step: polygon 1's vertices 2 and 3 on polygon 0's face, cohesive (β = 1, δt = 0.01).
+  Interaction2D p1 = plplx(1, 0, 2, Eigen::Vector2d(0.0, 0.0)),
+                p2 = plplx(1, 0, 3, Eigen::Vector2d(1.0, 0.0));
+  for (Interaction2D* p : {&p1, &p2}) {
+    p->r = Eigen::Vector2d(0.2, 3.0);
+    p->status = ContactStatus::Cstck;
+    p->internal[1] = 0.01;
+    p->internal[3] = 1.0;
+    p->cohesive = true;
+  }
+  p2.r(1) = 4.0;
+  state.previous = {p1, p2};
+  // This step: polygon 0's vertices 1 and 4 on polygon 1's face, at the same two places (to 1e-5).
+  state.contacts = {plplx(0, 1, 1, Eigen::Vector2d(1.0, 1e-5)), plplx(0, 1, 4, Eigen::Vector2d(1e-5, 0.0)),
+                    plplx(0, 1, 5, Eigen::Vector2d(0.5, 0.0))};
+  recup_rloc(state);
+  EXPECT_EQ(state.contacts[0].r, Eigen::Vector2d(-0.2, 4.0));  // p2's, r_t turned over
+  EXPECT_EQ(state.contacts[0].internal[1], -0.01);
+  EXPECT_EQ(state.contacts[0].internal[3], 1.0);
+  EXPECT_EQ(state.contacts[0].status_begin, ContactStatus::Cstck);
+  EXPECT_EQ(state.contacts[1].r, Eigen::Vector2d(-0.2, 3.0));       // p1's
+  EXPECT_EQ(state.contacts[2].status_begin, ContactStatus::nknow);  // between the two: new
+}
+
+}  // namespace
+}  // namespace lmgc::solver
