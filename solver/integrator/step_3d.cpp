@@ -19,6 +19,7 @@
 #include "solver/detection/polyhedron_contact.hpp"
 #include "solver/nlgs/law_local_problem_3d.hpp"
 #include "solver/nlgs/local_solver_3d.hpp"
+#include "solver/nlgs/open_contact_visits.hpp"
 #include "spatial/multilevel_grid.hpp"
 
 namespace lmgc::solver {
@@ -251,11 +252,11 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
   std::vector<Interaction3D> found;
   // One interaction per contact point: local frame rows (t, n, s), lever rows, Delassus block.
   // `image`: the antagonist's periodic shift (zero but across a periodic side). The levers reach
-  // the contact point from both bodies, but PTPT3's reach each body's own point (`antagonist_point`).
+  // the contact point from both bodies, but PTPT3's reach each body's own point (the lever points).
   const auto add_point = [&](std::size_t i, std::size_t j, const Vector3d& image, int row, const Vector3d& t,
                              const Vector3d& normal, const Vector3d& s, const Vector3d& point, double gap,
-                             int vertex, double surface, const Vector3d* candidate_point = nullptr,
-                             const Vector3d* antagonist_point = nullptr) {
+                             int vertex, double surface, const Vector3d* candidate_lever_point = nullptr,
+                             const Vector3d* antagonist_lever_point = nullptr) {
     const Contactor3D& cd = scene.contactors[i];
     const Contactor3D& an = scene.contactors[j];
     const Visibility3D& v = scene.visibility[static_cast<std::size_t>(row)];
@@ -276,7 +277,7 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     c.gap_begin = gap;
     for (int side = 0; side < 2; ++side) {
       const auto body = static_cast<std::size_t>(side == 0 ? cd.body : an.body);
-      const Vector3d* own = side == 0 ? candidate_point : antagonist_point;
+      const Vector3d* own = side == 0 ? candidate_lever_point : antagonist_lever_point;
       const Vector3d lever =
           (own ? *own : point) - body_centre[body] - (side == 0 ? Vector3d::Zero() : image);
       Matrix3d& G = side == 0 ? c.lever_candidate : c.lever_antagonist;
@@ -593,29 +594,19 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   std::vector<std::size_t> order(contacts.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::mt19937 random(12345u);
-  std::vector<std::int32_t> skip_count(contacts.size(), 0), skip_threshold(contacts.size(), 1);
+  std::vector<OpenContactVisits> visits(contacts.size());
   for (int check = 0; check < max_checks; ++check) {
     if (options.quick_scramble) std::shuffle(order.begin(), order.end(), random);
-    // Contacts without reaction are visited on their 1st, 3rd, 6th, 10th... zero visits between two
-    // checks (as in 2D): most candidates of a granular step stay open, and the check pass below
-    // still solves every one, so a skipped contact that closes keeps the step from converging.
-    std::fill(skip_count.begin(), skip_count.end(), 0);
-    std::fill(skip_threshold.begin(), skip_threshold.end(), 1);
+    for (OpenContactVisits& v : visits) v.restart();  // open_contact_visits.hpp
     for (int sweep = 0; sweep < options.gs_it1; ++sweep) {
       for (const std::size_t k : order) {
         Interaction3D& c = contacts[k];
         if (c.inactive) continue;
-        if (c.r.isZero(0.0)) {
-          if (++skip_count[k] < skip_threshold[k] * (skip_threshold[k] + 1) / 2) continue;
-          ++skip_threshold[k];
-        }
+        if (c.r.isZero(0.0) && visits[k].skip()) continue;
         Vector3d q_local;
         Vector3d r_new = local_solve(k, q_local);
         if (options.relax != 1.0) r_new = options.relax * r_new + (1.0 - options.relax) * c.r;
-        if (!r_new.isZero(0.0)) {
-          skip_count[k] = 0;
-          skip_threshold[k] = 1;
-        }
+        if (!r_new.isZero(0.0)) visits[k].restart();
         if (r_new != c.r) inject(c, r_new - c.r, b, V);
         c.r = r_new;
       }

@@ -198,14 +198,15 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
   // The residual round-off allows at the scale of this contact: a tolerance below it (heavy bodies:
   // r of 1e4 against u of 1) cannot be met, and chasing it through the fallbacks below costs 10× a
   // Newton solve for nothing.
-  const auto attainable = [&](const Eigen::Vector3d& r) {
-    return std::max(tolerance, kRoundOff * (r.norm() + (W * r).norm() + q.norm()));
+  const auto bound_of = [&](const Eigen::Vector3d& r, const Eigen::Vector3d& Wr) {
+    return std::max(tolerance, kRoundOff * (r.norm() + Wr.norm() + q.norm()));
   };
-  // The natural-map residual of r and the bound round-off puts on it, from one product W r.
+  const auto attainable = [&](const Eigen::Vector3d& r) { return bound_of(r, W * r); };
+  // The natural-map residual of r and that bound, from one product W r.
   const auto evaluate = [&](const Eigen::Vector3d& r, double& residual, double& bound) {
     const Eigen::Vector3d Wr = W * r;
     residual = natural_map_3d(r, Wr + q, mu).norm();
-    bound = std::max(tolerance, kRoundOff * (r.norm() + Wr.norm() + q.norm()));
+    bound = bound_of(r, Wr);
   };
 
   // Sliding (or a near-singular block): generalised Newton on the Alart–Curnier map, from the
@@ -275,7 +276,7 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
     }
   }
   s.newton_iterations = iteration;
-  if (best_residual > attainable(best)) {
+  if (best_residual > best_bound) {
     // Near a direction where W_nn + mu W_nT d vanishes r_n is huge and the damped Newton does not
     // get there: enumerate the sliding directions instead.
     Eigen::Vector3d enumerated;

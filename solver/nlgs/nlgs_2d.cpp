@@ -11,6 +11,7 @@
 #include <random>
 
 #include "solver/laws/law_local_problem_2d.hpp"
+#include "solver/nlgs/open_contact_visits.hpp"
 
 namespace lmgc::solver {
 namespace {
@@ -21,7 +22,7 @@ using Eigen::Vector3d;
 
 struct HotContact2D {
   std::int32_t cd = 0, an = 0;  // body indices
-  std::int32_t skip_count = 0, skip_threshold = 1;
+  OpenContactVisits visits;
   std::uint8_t inactive = 0, glued = 0, wet = 0, cohesive = 0;
   ContactStatus status = ContactStatus::noctc;
   double nx = 0, ny = 0;                              // normal; t = (ny, -nx)
@@ -197,11 +198,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
         c.status = ContactStatus::noctc;
         continue;
       }
-      // Vanishing contacts are visited on their 1st, 3rd, 6th, 10th... zero visits.
-      if (!post && c.rt == 0.0 && c.rn == 0.0) {
-        if (++c.skip_count < c.skip_threshold * (c.skip_threshold + 1) / 2) continue;
-        ++c.skip_threshold;
-      }
+      if (!post && c.rt == 0.0 && c.rn == 0.0 && c.visits.skip()) continue;
       const Vector2d u = relative_velocity(c, v);
       const double uft = u(0) - (c.wtt * c.rt + c.wtn * c.rn);
       const double ufn = u(1) - (c.wtn * c.rt + c.wnn * c.rn);
@@ -217,10 +214,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       c.rt = rt;
       c.rn = rn;
       c.status = status;
-      if (rt != 0.0 || rn != 0.0) {
-        c.skip_count = 0;
-        c.skip_threshold = 1;
-      }
+      if (rt != 0.0 || rn != 0.0) c.visits.restart();
     }
     if (!post) ++result.iterations;
   };
@@ -250,8 +244,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     result.active = 0;
     const bool normal_only = options.norm == NlgsNorm::quad_normal;
     for (HotContact2D& c : hot) {
-      c.skip_count = 0;  // the skip heuristic restarts after every check
-      c.skip_threshold = 1;
+      c.visits.restart();  // after every check
       const Vector2d u = relative_velocity(c, v);
       const double uft = u(0) - (c.wtt * c.rt + c.wtn * c.rn);
       const double ufn = u(1) - (c.wtn * c.rt + c.wnn * c.rn);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "grammar/dof/parser.hpp"
+#include "grammar/vloc_rloc/parser.hpp"
 #include "tests/support/run_tool.hpp"
 #include "tests/support/shared_data.hpp"
 
@@ -111,10 +112,15 @@ inline ExampleRun run_example(const std::filesystem::path& example, long steps, 
   return result;
 }
 
-// LMGC90's RIGID_2D examples that have a reference run.
+// A DOF or Vloc_Rloc file of a run or of LMGC90's reference, parsed.
 inline grammar::DofFile read_dof(const std::filesystem::path& path) {
   grammar::DiagnosticSink sink;
   return grammar::parse_dof(grammar::SourceText(path.string(), read_file(path)), sink);
+}
+
+inline grammar::VlocRlocFile read_vloc_rloc(const std::filesystem::path& path) {
+  grammar::DiagnosticSink sink;
+  return grammar::parse_vloc_rloc(grammar::SourceText(path.string(), read_file(path)), sink);
 }
 
 // The X values of every body node of a DOF file, the first `dofs` of each node.

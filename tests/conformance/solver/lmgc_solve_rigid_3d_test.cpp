@@ -24,9 +24,7 @@ constexpr long kScale = 1;
 #endif
 
 std::size_t interaction_count(const fs::path& path) {
-  grammar::DiagnosticSink sink;
-  return grammar::parse_vloc_rloc(grammar::SourceText(path.string(), read_file(path)), sink)
-      .interactions.size();
+  return read_vloc_rloc(path).interactions.size();
 }
 
 TEST(LmgcSolveRigid3D, EveryExampleRuns) {

@@ -485,21 +485,22 @@ TEST(Rigid3DAnalytic, ElasticRodCarriesAMassInCompression) {
   EXPECT_NEAR(centre_of(s.scene, s.ball).z(), L0 - delta, 1e-10);
 }
 
-// A sphere glued under a fixed plane by IQS_MAC_CZM (SPPLx, contact surface π r²): a sound
-// interface (β = 1) holds the weight with the opening δn = m g / (π r² cn), where the cohesive
-// impulse −π r² cn h δn equals −m g h; started there, the sphere stays put and the interface stays
-// sound (its stored energy cn δn² is far below dupre).
-Scene3D sphere_under_a_plane(const IqsMacCzm& law, double opening, int& ball) {
+// A sphere of radius 0.1 m `opening` below the bottom face (z = 0) of a fixed plane, seen by it
+// with `law` (SPPLx, contact surface π r²).
+Scene3D sphere_under_a_plane(const ContactLaw& law, double opening, int& ball) {
   SceneBuilder3D b;
   Matrix3d down;  // plane axes (T, S, N) with N = −z: the bottom face at z = 0 faces down
   down << 1, 0, 0, 0, -1, 0, 0, 0, -1;
   b.add_fixed_plane(Vector3d(0.0, 0.0, 0.05), down, Vector3d(1.0, 1.0, 0.05));
   ball = b.add_sphere(Vector3d(0.0, 0.0, -0.1 - opening), 0.1, 1000.0);
-  b.add_law("mac01", law);
-  b.see("SPHER", "BLEUx", "mac01", "PLANx", "VERTx", 0.01);
+  b.add_law("law01", law);
+  b.see("SPHER", "BLEUx", "law01", "PLANx", "VERTx", 0.01);
   return b.build();
 }
 
+// IQS_MAC_CZM: a sound interface (β = 1) holds the weight with the opening δn = m g / (π r² cn), where
+// the cohesive impulse −π r² cn h δn equals −m g h; started there, the sphere stays put and the
+// interface stays sound (its stored energy cn δn² is far below dupre).
 TEST(Rigid3DAnalytic, SoundCohesiveZoneHoldsASphereUnderAPlaneAtItsElasticOpening) {
   const double r = 0.1, cn = 1e8, h = 1e-3;
   const double m = 1000.0 * 4.0 / 3.0 * std::numbers::pi * r * r * r;
@@ -563,14 +564,8 @@ TEST(Rigid3DAnalytic, ElasticRepellSphereRestsAtItsSpringPenetration) {
 TEST(Rigid3DAnalytic, CoupledDofHoldsASphereUnderAPlane) {
   const double r = 0.1, h = 1e-3;
   const double m = 1000.0 * 4.0 / 3.0 * std::numbers::pi * r * r * r;
-  SceneBuilder3D b;
-  Matrix3d down;
-  down << 1, 0, 0, 0, -1, 0, 0, 0, -1;
-  b.add_fixed_plane(Vector3d(0.0, 0.0, 0.05), down, Vector3d(1.0, 1.0, 0.05));
-  const int ball = b.add_sphere(Vector3d(0.0, 0.0, -r), r, 1000.0);
-  b.add_law("glue1", CoupledDof{});
-  b.see("SPHER", "BLEUx", "glue1", "PLANx", "VERTx", 0.01);
-  Scene3D scene = b.build();
+  int ball = 0;
+  Scene3D scene = sphere_under_a_plane(CoupledDof{}, 0.0, ball);
   RunState3D state = run_state(h);
   for (int i = 0; i < 200; ++i) step_3d(scene, state, converged_options());
   ASSERT_EQ(state.contacts.size(), 1u);

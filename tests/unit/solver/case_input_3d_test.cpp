@@ -19,14 +19,18 @@ fs::path case_copy(const std::string& reference_case, const std::string& name) {
   return dir;
 }
 
+// Loads the case folder and prepares its 3D run; false when either step refuses it.
+bool prepare_case(const fs::path& dir, Scene3D& scene, grammar::DiagnosticSink& sink) {
+  const auto files = validate::load_case(dir, sink);
+  RunOutputs3D outputs;
+  return files.has_value() && prepare_run_3d(*files, scene, outputs, sink);
+}
+
 TEST(CaseInput3D, PointBodiesOfTheWireCaseAreLinkedByTheirReferenceDistance) {
   const fs::path dir = case_copy("wire_hanging_mass_3d", "case_input_3d_wire");
   grammar::DiagnosticSink sink;
-  const auto files = validate::load_case(dir, sink);
-  ASSERT_TRUE(files.has_value());
   Scene3D scene;
-  RunOutputs3D outputs;
-  ASSERT_TRUE(prepare_run_3d(*files, scene, outputs, sink));
+  ASSERT_TRUE(prepare_case(dir, scene, sink));
   ASSERT_EQ(scene.contactors.size(), 4u);
   for (const Contactor3D& c : scene.contactors) EXPECT_EQ(c.shape, ContactorShape3D::point);
   // Each mass to the anchor above it (1 m); not to the other anchor (1.41 m > alert 1.1 m).
@@ -52,11 +56,8 @@ TEST(CaseInput3D, AWireOnAPairOtherThanPtpt3IsRefusedAtItsVisibilityRow) {
          " cdbdy  cdtac  cdcol  behav  anbdy  antac  ancol       alert\n"
          " RBDY3  SPHER  BLEUx  rst08  RBDY3  PLANx  VERTx       0.1000000D-01\n";
   grammar::DiagnosticSink sink;
-  const auto files = validate::load_case(dir, sink);
-  ASSERT_TRUE(files.has_value());
   Scene3D scene;
-  RunOutputs3D outputs;
-  EXPECT_FALSE(prepare_run_3d(*files, scene, outputs, sink));
+  EXPECT_FALSE(prepare_case(dir, scene, sink));
   bool found = false;
   for (const grammar::Diagnostic& d : sink.items())
     if (d.code == "L2018") {

@@ -1,0 +1,25 @@
+#pragma once
+// The NLGS sweeps' treatment of contacts without reaction (2D and 3D): most candidates of a
+// granular step stay open, so one that returned no reaction is visited again only on its 1st, 3rd,
+// 6th, 10th... zero visits; a reaction, or the next convergence check (which solves every contact),
+// restarts the count. Not LMGC90's (it solves every contact each sweep); the check keeps a skipped
+// contact that closes meanwhile from passing as converged.
+#include <cstdint>
+
+namespace lmgc::solver {
+
+struct OpenContactVisits {
+  std::int32_t count = 0, threshold = 1;
+  // Called for a contact without reaction at each sweep: true when this sweep passes it by.
+  bool skip() {
+    if (++count < threshold * (threshold + 1) / 2) return true;
+    ++threshold;
+    return false;
+  }
+  void restart() {
+    count = 0;
+    threshold = 1;
+  }
+};
+
+}  // namespace lmgc::solver
