@@ -163,12 +163,6 @@ TEST(Rigid2DAnalytic, HeadOnCollisionConservesMomentumAndReversesTimesE) {
   EXPECT_NEAR(v2 - v1, e * 3.0, 1e-10);
 }
 
-}  // namespace
-}  // namespace lmgc::solver
-
-namespace lmgc::solver {
-namespace {
-
 // A disk glued under a fixed JONCx by a sound IQS_MAC_CZM interface (β = 1 from the run's first
 // preparation, LMGC90's init_CZM): the cohesive traction holds its weight, so after 0.2 s it has
 // moved by less than 1e-4 m (free fall: 0.196 m) and β is still 1. The same disk created after the

@@ -196,12 +196,6 @@ TEST(Rigid3DAnalytic, TorqueFreeRotationKeepsEnergyThroughThePipeline) {
   EXPECT_NEAR(kinetic_energy(scene.bodies), e0, 3e-4 * e0);
 }
 
-}  // namespace
-}  // namespace lmgc::solver
-
-namespace lmgc::solver {
-namespace {
-
 // Source point (RBDY3_SetSourcePointWithIni): the first sphere starts at the point and falls
 // freely; the second waits, invisible, and enters at the point at the end of the first step where
 // the first one is farther than the radius R from it. With the θ-scheme (θ = 1/2) a free fall from
@@ -250,12 +244,6 @@ TEST(Rigid3DAnalytic, SpheresMeetAcrossAPeriodicSide) {
   EXPECT_NEAR(scene.bodies.velocity[static_cast<std::size_t>(moving)](0), 0.0, 1e-9);
   EXPECT_NEAR(scene.bodies.velocity[static_cast<std::size_t>(resting)](0), 1.0, 1e-9);
 }
-
-}  // namespace
-}  // namespace lmgc::solver
-
-namespace lmgc::solver {
-namespace {
 
 // A sphere hanging under a fixed plane (bottom face z = 0), released touching it. Cohesive laws
 // (contact-laws.md §3.2) hold it while their cohesion force exceeds its weight m g = 5.136 N
@@ -306,12 +294,6 @@ TEST(Rigid3DAnalytic, MohrCohesionHoldsAHangingSphereOnlyWhenStrongerThanItsWeig
   const Hanging fallen = hang_under_a_plane(IqsMohrDsClb{300.0, 300.0, 0.3, 0.3});
   EXPECT_LT(fallen.z_after, -0.1);
 }
-
-}  // namespace
-}  // namespace lmgc::solver
-
-namespace lmgc::solver {
-namespace {
 
 // Cylinders at rest (CYLND: CDPLx, SPCDx, CDCDx). Statics: every contact set carries the weight
 // of what lies on it. Tolerance 1e-6 relative: NLGS Quad 1e-10 after 200 steps at rest.
@@ -380,12 +362,6 @@ TEST(Rigid3DAnalytic, ParallelCylindersTouchAtTwoPointsSharingTheWeight) {
   EXPECT_NEAR(centre_of(scene, upper).z(), 3.0 * r, 1e-7);
 }
 
-}  // namespace
-}  // namespace lmgc::solver
-
-namespace lmgc::solver {
-namespace {
-
 // A sphere resting at the bottom of a fixed horizontal drum (DNLYC, SPDCx): the inner wall carries
 // its weight, the normal points from the wall to the axis (up), and it stays put.
 TEST(Rigid3DAnalytic, SphereInsideADrumRestsOnItsInnerWall) {
@@ -406,12 +382,6 @@ TEST(Rigid3DAnalytic, SphereInsideADrumRestsOnItsInnerWall) {
   EXPECT_NEAR(c.r(1) / h, weight, 1e-6 * weight);
   EXPECT_NEAR(centre_of(scene, ball).z(), -(R - r), 1e-8);
 }
-
-}  // namespace
-}  // namespace lmgc::solver
-
-namespace lmgc::solver {
-namespace {
 
 // A sphere of radius 0.1 m (density 1000) hanging by a PTPT3 link from a fixed point at the
 // origin: the anchor is a fixed PLANx body (not seen by anything) carrying a PT3Dx; the sphere
@@ -533,12 +503,6 @@ TEST(Rigid3DAnalytic, WeakCohesiveZoneBreaksAndLetsTheSphereFall) {
   EXPECT_LT(beta, 1e-2);
   EXPECT_LT(centre_of(scene, ball).z(), -r - 0.95 * 0.5 * g * 0.2 * 0.2);
 }
-
-}  // namespace
-}  // namespace lmgc::solver
-
-namespace lmgc::solver {
-namespace {
 
 // ELASTIC_REPELL_CLB in 3D: a sphere on a plane sinks into its spring until k δ = m g (the implicit
 // impulse −h k γ_end carries the weight); started at δ = m g / k it stays there.

@@ -152,12 +152,6 @@ TEST(PolyhedronPolyhedron, CrossedEdgesMeetAtOnePoint) {
   EXPECT_TRUE(contact.points[0].isApprox(Vector3d(0.0, 0.0, reach + 0.0005), 1e-6));
 }
 
-}  // namespace
-}  // namespace lmgc::solver
-
-namespace lmgc::solver {
-namespace {
-
 // SPPRx on a unit half-size cube at the origin: the nearest surface point, its distance and the
 // normal from the polyhedron to the sphere, for a centre in front of a face, of an edge and of a
 // vertex, and inside (least deep face); nothing beyond the alert.

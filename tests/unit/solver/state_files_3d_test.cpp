@@ -303,12 +303,6 @@ TEST(StateFiles3D, InternalVariablesOfTheLawAreWrittenWithTheirNames) {
   EXPECT_DOUBLE_EQ(warm[0].internal[0], 0.25);
 }
 
-}  // namespace
-}  // namespace lmgc::solver
-
-namespace lmgc::solver {
-namespace {
-
 TEST(StateFiles3D, EveryPairFamilyHasItsVlocRlocBlockInTheGrammar) {
   for (int k = 0; k < kPairFamily3DCount; ++k) {
     const std::string_view name = pair_family_name(static_cast<PairFamily3D>(k));
