@@ -79,14 +79,18 @@ int main(int argc, char** argv) {
   app.add_option("--relax", options.relax, "NLGS relaxation")->check(CLI::Range(0.0, 2.0));
   app.add_option("--order", order, "contact order: natural or shuffled (reshuffled every sweep)")
       ->check(CLI::IsMember({"natural", "shuffled"}));
-  std::string method = "nlgs+newton";
+  std::string method = "newton+nlgs";
   app.add_option(
          "--method", method,
-         "nlgs: Gauss-Seidel sweeps only; nlgs+newton: switch to semismooth Newton when the sweeps stall")
-      ->check(CLI::IsMember({"nlgs", "nlgs+newton"}));
-  app.add_option("--newton-steps", options.max_newton_steps_per_block,
-                 "Newton steps per phase, at most (a phase ends earlier when its line search stalls)")
+         "nlgs: Gauss-Seidel sweeps only; nlgs+newton: sweeps first, semismooth Newton when they stall; "
+         "newton+nlgs: a Newton phase first, then as nlgs+newton")
+      ->check(CLI::IsMember({"nlgs", "nlgs+newton", "newton+nlgs"}));
+  app.add_option("--newton-steps", options.max_newton_steps_per_phase,
+                 "Newton steps per phase, at most (a phase ends earlier when it stalls)")
       ->check(CLI::PositiveNumber);
+  app.add_option("--opening-sweeps", options.opening_sweeps,
+                 "newton+nlgs: NLGS sweeps before the first Newton phase")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--csv", csv_path, "also write the per-problem table to this CSV file");
   app.footer(
       "Error measure: natural-map residual / |q| (fc3d/FORMAT.md section 3), recomputed after the solve.\n"
@@ -97,7 +101,8 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
-  options.newton_when_stalled = method == "nlgs+newton";
+  options.newton_when_stalled = method != "nlgs";
+  options.newton_first = method == "newton+nlgs";
   options.order = order == "shuffled" ? ContactOrder::shuffled_each_sweep : ContactOrder::natural;
 
   std::vector<ProblemReport> reports;

@@ -19,11 +19,13 @@ struct LocalProblemNlgsOptions {
   double max_seconds = 60.0;  // wall-clock cap per problem
   double relax = 1.0;         // r <- relax r_local + (1 - relax) r (spec: contact-laws.md §2.4)
   ContactOrder order = ContactOrder::natural;
-  // When a block of sweeps reduces the error by less than a factor 2, switch to semismooth Newton
-  // (local_problem_newton.hpp) until its line search stalls, then sweep again.
+  // Start with a phase of semismooth Newton (local_problem_newton.hpp) before any sweep.
+  bool newton_first = true;
+  int opening_sweeps = 0;  // sweeps before that first Newton phase
+  // When a block of sweeps stalls, switch to a Newton phase until it stalls in turn, then sweep again.
   bool newton_when_stalled = true;
   int sweeps_per_block = 50;
-  int max_newton_steps_per_block = 50;
+  int max_newton_steps_per_phase = 1000;
   std::uint64_t seed = 1;
   // Errors whose first crossing time is recorded (e.g. 1e-4, 1e-6, 1e-8).
   std::vector<double> milestones;

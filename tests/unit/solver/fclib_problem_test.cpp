@@ -242,6 +242,7 @@ TEST(LocalProblemNlgs, RandomWellConditionedProblemConvergesInEveryVariant) {
         Variant{"shuffled", 1.0, ContactOrder::shuffled_each_sweep},
         Variant{"relax 0.8 shuffled", 0.8, ContactOrder::shuffled_each_sweep}}) {
     LocalProblemNlgsOptions options;
+    options.newton_first = false;  // the sweeps are under test
     options.tolerance = 1e-10;
     options.max_sweeps = 20000;
     options.relax = v.relax;
@@ -264,6 +265,19 @@ TEST(LocalProblemNlgs, RandomWellConditionedProblemConvergesInEveryVariant) {
           << v.name << " contact " << a;
     }
   }
+}
+
+TEST(LocalProblemNlgs, NewtonFirstSolvesARandomWellConditionedProblemWithoutASweep) {
+  const FrictionalContactProblem<3> p = random_problem(6, 7);
+  LocalProblemNlgsOptions options;
+  options.tolerance = 1e-12;
+  Eigen::VectorXd r;
+  const LocalProblemNlgsResult result = solve_local_problem_nlgs(p, r, options);
+  EXPECT_TRUE(result.converged) << "error " << result.error;
+  EXPECT_EQ(result.sweeps, 0);
+  EXPECT_GT(result.newton_steps, 0);
+  EXPECT_LT(result.newton_steps, 30);  // semismooth Newton on an SPD W: a few steps, not a crawl
+  EXPECT_NEAR(natural_map_error(p, r), result.error, 1e-15);
 }
 
 TEST(LocalProblemNlgs, ExactSolutionAsStartNeedsNoSweep) {
@@ -355,6 +369,32 @@ TEST(FclibReader, NlgsSolvesConfetiFourContactTo1e8) {
   const LocalProblemNlgsResult result = solve_local_problem_nlgs(p, r, options);
   EXPECT_TRUE(result.converged) << "error " << result.error << " after " << result.sweeps << " sweeps";
   EXPECT_LE(natural_map_error(p, r), 1e-8);
+}
+
+// spheres-in-a-box: the sweeps stall near 1e-6 (Siconos' NSGS too: 2.5e-6 after 100000 iterations);
+// Newton with its non-monotone line search solves it to 1e-8 in a few tens of steps.
+TEST(FclibReader, NewtonSolvesSpheresInABoxWhereTheSweepsStall) {
+  REQUIRE_FC3D();
+  const FclibLocalProblem f =
+      read_fclib_local(fc3d_dir() / "fc3d" / "spheres-in-a-box-98-i10000-256-10_local.hdf5");
+  const FrictionalContactProblem<3> p =
+      problem_from_scalar_rows<3>(f.size, f.row_pointer, f.column_index, f.value, f.q, f.mu);
+  LocalProblemNlgsOptions sweeps_only;
+  sweeps_only.newton_first = false;
+  sweeps_only.newton_when_stalled = false;
+  sweeps_only.max_sweeps = 2000;
+  Eigen::VectorXd r_sweeps;
+  const LocalProblemNlgsResult swept = solve_local_problem_nlgs(p, r_sweeps, sweeps_only);
+  EXPECT_FALSE(swept.converged) << "error " << swept.error;
+  EXPECT_GT(swept.error, 1e-7);
+
+  LocalProblemNlgsOptions options;
+  options.max_seconds = 60.0;
+  Eigen::VectorXd r;
+  const LocalProblemNlgsResult result = solve_local_problem_nlgs(p, r, options);
+  EXPECT_TRUE(result.converged) << "error " << result.error;
+  EXPECT_LE(natural_map_error(p, r), 1e-8);
+  EXPECT_LT(result.newton_steps, 200);
 }
 
 }  // namespace
