@@ -9,9 +9,10 @@ namespace lmgc::solver {
 namespace {
 
 constexpr int kMaxLineSearchHalvings = 40;
-// Merits the non-monotone line search compares with. Measured on the 17 FCLIB problems with a Newton
-// phase from r = 0: 1 (monotone) solves 13, 5 solves 15, 10 solves 16, 20 solves 17 (7.9 s in all),
-// 40 solves 17 in 26 s (bench/results/debian12-2core/fc3d_nlgs_newton.txt).
+// Merits the non-monotone line search compares with. Measured with a single Newton phase from r = 0,
+// 20 s cap: monotone (1) solves 13 of the 17 FCLIB problems; of the three hardest (RockPile,
+// spheres-in-a-box, fc2d_granularflowonwall_02020) 5 solves 1, 10 solves 2, 20 all three; 20 solves
+// all 17 in 8 s, 40 all 17 in 26 s.
 constexpr std::size_t kNonmonotoneMemory = 20;
 
 // phi_a and its derivatives with respect to r_a (A) and u_a (B), normal first:

@@ -23,6 +23,8 @@ constexpr double kNewtonPhaseGain = 0.1;
 // fc2d_granularflowonwall_02020 wanders between 1e-6 and 1e-5 for 320 steps before it finds the active
 // set and converges in one step; a window of 100 or 200 stops it first and leaves the problem unsolved.
 constexpr int kNewtonStallWindow = 400;
+// Share of the opening Newton phases' time given to the sweeps that race them.
+constexpr double kRaceShare = 0.25;
 // Opening Newton phases, each from the caller's reactions after one more sweep than the last.
 constexpr int kOpeningNewtonAttempts = 4;
 
@@ -78,7 +80,8 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
       }
   };
 
-  const auto sweep = [&] {
+  // One sweep over the contacts of reactions x (r, or the race's copy below).
+  const auto sweep_over = [&](Eigen::VectorXd& x) {
     if (options.order == ContactOrder::shuffled_each_sweep) std::shuffle(order.begin(), order.end(), random);
     int failures = 0;
     for (const int a : order) {
@@ -91,16 +94,17 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
       Local q_local = problem.q.template segment<Dim>(Dim * a);
       for (int k = problem.row_start[a]; k < problem.row_start[a + 1]; ++k)
         if (k != diagonal)
-          q_local.noalias() += problem.blocks[k] * r.template segment<Dim>(Dim * problem.column[k]);
-      Local r_a = r.template segment<Dim>(Dim * a);
+          q_local.noalias() += problem.blocks[k] * x.template segment<Dim>(Dim * problem.column[k]);
+      Local r_a = x.template segment<Dim>(Dim * a);
       const Local r_old = r_a;
       if (!solve_one_contact(problem.blocks[diagonal], q_local, problem.mu(a), r_a, local_tolerance))
         ++failures;
       if (options.relax != 1.0) r_a = options.relax * r_a + (1.0 - options.relax) * r_old;
-      r.template segment<Dim>(Dim * a) = r_a;
+      x.template segment<Dim>(Dim * a) = r_a;
     }
     result.local_failures = failures;
   };
+  const auto sweep = [&] { sweep_over(r); };
 
   // The best iterate so far is what the caller gets: Newton's merit is not the natural map.
   Eigen::VectorXd best = r;
@@ -116,19 +120,47 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
     }
   };
   const auto running = [&] {
-    return std::isfinite(result.error) && result.error > options.tolerance &&
+    return std::isfinite(result.error) && best_error > options.tolerance &&
            result.sweeps < options.max_sweeps && elapsed() < options.max_seconds;
   };
 
   // A Newton phase: steps until the tolerance, the step cap, a line search that finds no step, or
   // kNewtonStallWindow steps in a row without halving the phase's best error. Each phase starts a new
   // Newton object: the line search's memory of merits belongs to one unbroken run of steps.
+  //
+  // While `racing`, sweeps from the caller's reactions run beside the Newton steps on their own copy,
+  // given kRaceShare of the time Newton has taken: where the sweeps alone would finish first (small or
+  // easy problems: NESpheres in one sweep, FrictionContactProblem00727 in 700), they do, at the price of
+  // a quarter more time where Newton wins.
+  Eigen::VectorXd race = r;
+  double race_seconds = 0.0, newton_seconds = 0.0;
+  bool racing = false, race_started = false;
+  // The race's first sweep is free: a problem one sweep solves never waits for a Newton step.
+  const auto race_sweeps = [&] {
+    while (racing && running() && (race_seconds < kRaceShare * newton_seconds || !race_started)) {
+      const double sweep_start = elapsed();
+      sweep_over(race);
+      race_started = true;
+      ++result.sweeps;
+      const double race_error = natural_map_error(problem, race);
+      record(race_error, result.sweeps);
+      if (race_error < best_error) {
+        best_error = race_error;
+        best = race;
+      }
+      race_seconds += elapsed() - sweep_start;
+    }
+  };
   const auto newton_phase = [&] {
     AlartCurnierNewton<Dim> newton(problem);
     double reference = result.error;
     int steps_without_gain = 0;
     for (int k = 0; k < options.max_newton_steps_per_phase && running(); ++k) {
-      if (!newton.step(r).progressed) break;
+      const double step_start = elapsed();
+      const bool progressed = newton.step(r).progressed;
+      newton_seconds += elapsed() - step_start;
+      race_sweeps();
+      if (!progressed) break;
       ++result.newton_steps;
       evaluate();
       if (result.error < 0.5 * reference) {
@@ -162,7 +194,7 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
   };
 
   // Opening Newton phases. Where Newton converges it beats the sweeps by one to two orders of magnitude
-  // (bench/results/debian12-2core/fc3d_nlgs_newton.txt), but on the granular problems whether a phase
+  // (bench/results/debian12-2core/fc3d_newton_nlgs.txt), but on the granular problems whether a phase
   // finds the active set depends on its start: from r = 0 after 0 to 4 sweeps, a single phase solved
   // fc2d_granularflowonwall_02020 in 2 of 5 starts and RockPile in 4 of 5; four phases from successive
   // starts solved both in 5 of 5. Between phases a block of sweeps from the best iterate tells whether
@@ -170,6 +202,8 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
   // switching loop below takes over at once.
   if (options.newton_first && running()) {
     const Eigen::VectorXd start = r;
+    racing = true;
+    race_sweeps();
     for (int attempt = 0; attempt < kOpeningNewtonAttempts && running(); ++attempt) {
       if (attempt > 0) {
         resume_from_best();
@@ -182,6 +216,7 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
       sweep_block(options.opening_sweeps + attempt);
       if (running()) newton_phase();
     }
+    racing = false;
     resume_from_best();
   }
 

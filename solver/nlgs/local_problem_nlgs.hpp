@@ -1,8 +1,10 @@
 #pragma once
 // Non-linear Gauss–Seidel (Siconos calls it NSGS) on a frictional contact problem given in local
 // form (FrictionalContactProblem): sweep the contacts, solve each one exactly with the others'
-// reactions frozen, stop on the natural-map error ÷ |q| (fc3d/FORMAT.md §3). This is the solver
-// behind `lmgc-fc3d`; the scene NLGS of lmgc-solve works on bodies instead of an assembled W.
+// reactions frozen, stop on the natural-map error ÷ |q| (fc3d/FORMAT.md §3). By default it opens with
+// semismooth Newton phases on the whole problem (local_problem_newton.hpp), then alternates sweeps and
+// Newton by measured rate. This is the solver behind `lmgc-fc3d`; the scene NLGS of lmgc-solve works
+// on bodies instead of an assembled W, as LMGC90's does.
 #include <Eigen/Core>
 #include <cstdint>
 #include <vector>
