@@ -30,7 +30,7 @@ EXAMPLES = os.environ.get("LMGC_SHARED_DIR", os.path.join(os.path.dirname(ROOT),
 EXAMPLES = os.path.join(EXAMPLES, "lmgc90-examples")
 
 
-def script_flags(case):
+def script_flags(case, dimension):
     """lmgc-solve flags for the chipy calls of the example's command.py that change the run."""
     flags = []
     path = os.path.join(case, "command.py")
@@ -40,6 +40,11 @@ def script_flags(case):
     values = dict(re.findall(r"^(\w+)\s*=\s*([-+0-9.eE]+)\s*$", text, re.M))
     for line in text.splitlines():
         line = line.strip()
+        # At the top level or under `if "--norand" not in sys.argv:` (LMGC90's runs: scrambled).
+        if line.startswith(("chipy.nlgs_SetWithQuickScramble(", "chipy.nlgs_3D_SetWithQuickScramble(")):
+            flags.append("--quick-scramble")
+        if dimension != 3:
+            continue
         if line.startswith("chipy.RBDY3_NewRotationScheme()"):
             flags.append("--new-rotation-scheme")
         elif line.startswith("chipy.nlgs_3D_DiagonalResolution()"):
@@ -109,8 +114,7 @@ def main():
                 command += [flag, params[key]]
         if name == "BouncingBallsDK":
             command += ["--ymin-boundary", "0"]
-        if args.dimension == 3:
-            command += script_flags(case)
+        command += script_flags(case, args.dimension)
         command += args.extra.split()
         start = time.perf_counter()
         subprocess.run(command, check=True)

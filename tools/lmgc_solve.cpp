@@ -61,7 +61,9 @@ int main(int argc, char** argv) {
   app.add_option("--gs-it2", options.nlgs.gs_it2, "maximum number of convergence checks")
       ->check(CLI::PositiveNumber);
   app.add_flag("--quick-scramble", options.nlgs.quick_scramble,
-               "shuffle the contact order before each block of sweeps");
+               "scramble the contact order before each block of sweeps as LMGC90 does");
+  app.add_option("--scramble-seed", options.nlgs.scramble_seed,
+                 "seed of the quick scramble's random lists (LMGC90's differ from run to run)");
   app.add_flag("--diagonal-resolution", options.nlgs.diagonal_resolution,
                "3D: solve each contact with the diagonal of its Delassus block, then project on the "
                "Coulomb cone (nlgs_3D_DiagonalResolution)");

@@ -38,6 +38,7 @@ RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D&
   RunState2D state;
   state.h = options.dt;
   state.theta = options.theta;
+  state.scramble = QuickScramble(options.nlgs.scramble_seed);
   state.visibility = build_visibility_index(scene);
   if (outputs.warm_start) state.previous = warm_start_2d(*outputs.warm_start, scene, options.dt);
 

@@ -27,6 +27,7 @@ RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D&
   RunState3D state;
   state.h = options.dt;
   state.theta = options.theta;
+  state.scramble = QuickScramble(options.nlgs.scramble_seed);
   if (outputs.warm_start) state.previous = warm_start_3d(*outputs.warm_start, scene, options.dt);
 
   Postpro3D postpro;

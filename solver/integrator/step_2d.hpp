@@ -7,6 +7,7 @@
 #include "solver/detection/detection_2d.hpp"
 #include "solver/model/scene_2d.hpp"
 #include "solver/nlgs/nlgs_2d.hpp"
+#include "solver/nlgs/quick_scramble.hpp"
 
 namespace lmgc::solver {
 
@@ -19,6 +20,7 @@ struct RunState2D {
   std::vector<Interaction2D> previous;  // last step's (the "verlet" list used for warm start)
   bool laws_initialized = false;        // a step with interactions has been solved (LawStep::first_step)
   VisibilityIndex2D visibility;
+  QuickScramble scramble;  // the sweep order's random lists, step after step
 };
 
 void increment_step(Scene2D& scene, RunState2D& state);

@@ -7,7 +7,6 @@
 #include <limits>
 #include <map>
 #include <numeric>
-#include <random>
 #include <set>
 #include <span>
 #include <tuple>
@@ -589,14 +588,14 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   };
   const double tol = options.tolerance;
   const int max_checks = options.gs_it2;
-  // Sweep order: detection order, or reshuffled before each block of gs_it1 sweeps with quick
-  // scramble (nlgs_3D_SetWithQuickScramble), from a fixed seed so that runs repeat.
+  // Sweep order: detection order, or LMGC90's quick scramble before each block of gs_it1 sweeps
+  // (nlgs_3D_SetWithQuickScramble; quick_scramble.hpp).
   std::vector<std::size_t> order(contacts.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
-  std::mt19937 random(12345u);
+  if (options.quick_scramble) state.scramble.prepare(contacts.size());
   std::vector<OpenContactVisits> visits(contacts.size());
   for (int check = 0; check < max_checks; ++check) {
-    if (options.quick_scramble) std::shuffle(order.begin(), order.end(), random);
+    if (options.quick_scramble) state.scramble.scramble(order);
     for (OpenContactVisits& v : visits) v.restart();  // open_contact_visits.hpp
     for (int sweep = 0; sweep < options.gs_it1; ++sweep) {
       for (const std::size_t k : order) {

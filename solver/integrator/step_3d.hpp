@@ -5,6 +5,7 @@
 
 #include "solver/model/scene_3d.hpp"
 #include "solver/nlgs/nlgs_check.hpp"
+#include "solver/nlgs/quick_scramble.hpp"
 
 namespace lmgc::solver {
 
@@ -16,6 +17,7 @@ struct RunState3D {
   std::vector<Interaction3D> contacts;
   std::vector<Interaction3D> previous;
   bool laws_initialized = false;  // a step with interactions has been solved (LawStep::first_step)
+  QuickScramble scramble;         // the sweep order's random lists, step after step
 };
 
 void increment_step(Scene3D& scene, RunState3D& state);

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <random>
 
 #include "solver/laws/law_local_problem_2d.hpp"
 #include "solver/nlgs/open_contact_visits.hpp"
@@ -129,7 +128,7 @@ Matrix2d delassus_block(const Interaction2D& c, const std::vector<Vector3d>& inv
 
 NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vector<Interaction2D>& contacts,
                          double h, double time, const NlgsOptions& options, bool first_step,
-                         bool first_preparation) {
+                         bool first_preparation, QuickScramble* scramble) {
   NlgsResult result;
   const std::size_t count = contacts.size();
   std::vector<Vector3d>& v = bodies.velocity;
@@ -183,7 +182,9 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
 
   std::vector<std::uint32_t> order(count);
   std::iota(order.begin(), order.end(), 0u);
-  std::mt19937 random(12345u);
+  QuickScramble own_scramble(options.scramble_seed);
+  QuickScramble& scrambler = scramble ? *scramble : own_scramble;
+  if (options.quick_scramble) scrambler.prepare(count);
   const double relax = options.relax, keep = 1.0 - options.relax;
 
   // One Gauss–Seidel pass; the post pass never skips and is not counted as an iteration.
@@ -300,7 +301,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
 
   if (count > 0) {
     for (int block = 0; block < options.gs_it2; ++block) {
-      if (options.quick_scramble) std::shuffle(order.begin(), order.end(), random);
+      if (options.quick_scramble) scrambler.scramble(order);
       for (int i = 0; i < options.gs_it1; ++i) sweep(false);
       result.converged = check();
       if (result.converged || result.diverged) break;

@@ -7,14 +7,17 @@
 #include "solver/model/interaction_2d.hpp"
 #include "solver/model/scene_2d.hpp"
 #include "solver/nlgs/nlgs_check.hpp"
+#include "solver/nlgs/quick_scramble.hpp"
 
 namespace lmgc::solver {
 
 // Builds the Delassus blocks and local problems, starts from the reactions already in
 // `contacts` (warm start), iterates, then sets velocities (bodies.velocity = V_free + M⁻¹ H r),
-// relative velocities and statuses. `first_step`, `first_preparation`: LawStep's.
+// relative velocities and statuses. `first_step`, `first_preparation`: LawStep's. `scramble`: the
+// run's quick-scramble generator (options.quick_scramble; a fresh one from options.scramble_seed
+// when null).
 NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vector<Interaction2D>& contacts,
                          double h, double time, const NlgsOptions& options, bool first_step = false,
-                         bool first_preparation = false);
+                         bool first_preparation = false, QuickScramble* scramble = nullptr);
 
 }  // namespace lmgc::solver

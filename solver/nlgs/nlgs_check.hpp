@@ -3,6 +3,7 @@
 // (numerics.md §4.1: sums over the contacts → normalised norms → the test of the chosen norm),
 // and the result of a solve.
 #include <cstddef>
+#include <cstdint>
 
 namespace lmgc::solver {
 
@@ -17,6 +18,7 @@ struct NlgsOptions {
   int gs_it1 = 50;   // sweeps between two convergence checks
   int gs_it2 = 500;  // maximum number of checks
   bool quick_scramble = false;
+  std::uint64_t scramble_seed = 1;  // quick_scramble.hpp
   // 3D: nlgs_3D_DiagonalResolution — each contact solved with the diagonal of its block only (its
   // own off-diagonal couplings kept at the previous iterate), then projected on the Coulomb cone.
   bool diagonal_resolution = false;

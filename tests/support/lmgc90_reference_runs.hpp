@@ -59,7 +59,9 @@ inline bool dimension3(const std::filesystem::path& example) {
   return read_file(example / "DATBOX" / "BODIES.DAT").find("RBDY3") != std::string::npos;
 }
 
-inline ExampleRun run_example(const std::filesystem::path& example, long steps, const std::string& tag = "") {
+// `extra` is appended to the command line (flags override the script's).
+inline ExampleRun run_example(const std::filesystem::path& example, long steps, const std::string& tag = "",
+                              const std::string& extra = "") {
   namespace fs = std::filesystem;
   ExampleRun result;
   const auto p = script_parameters(example);
@@ -100,6 +102,13 @@ inline ExampleRun run_example(const std::filesystem::path& example, long steps, 
     while (std::getline(script, line)) {
       if (line.rfind("chipy.RBDY3_NewRotationScheme()", 0) == 0) args += " --new-rotation-scheme";
       if (line.rfind("chipy.nlgs_3D_DiagonalResolution()", 0) == 0) args += " --diagonal-resolution";
+      // At the top level or under the scripts' `if "--norand" not in sys.argv:` (LMGC90's reference
+      // runs ran the scripts unchanged, so scrambled).
+      const std::size_t indent = line.find_first_not_of(' ');
+      if (indent != std::string::npos &&
+          (line.compare(indent, 32, "chipy.nlgs_SetWithQuickScramble(") == 0 ||
+           line.compare(indent, 35, "chipy.nlgs_3D_SetWithQuickScramble(") == 0))
+        args += " --quick-scramble";
       if (const auto v = call_arguments("chipy.SetPeriodicCondition("); v.size() == 2 && dimension3(example))
         args += " --xperiod " + v[0] + " --yperiod " + v[1];
       if (const auto v = call_arguments("chipy.RBDY3_SetSourcePointWithIni("); v.size() == 5)
@@ -108,6 +117,7 @@ inline ExampleRun run_example(const std::filesystem::path& example, long steps, 
   }
   // BouncingBallsDK's script calls RBDY2_SetYminBoundary(-0.).
   if (example.filename() == "BouncingBallsDK") args += " --ymin-boundary 0";
+  if (!extra.empty()) args += " " + extra;
   result.run = run_tool("lmgc-solve", args);
   return result;
 }

@@ -1,0 +1,51 @@
+#pragma once
+// LMGC90's quick scramble of the NLGS sweep order (nlgs_SetWithQuickScramble,
+// nlgs_3D_SetWithQuickScramble; mod_nlgs.f90 and mod_nlgs_3D.f90, prep_nlgs and
+// quick_scramble_nlgs): each solve starts from the detection order and draws a random list of
+// n indices, l_i uniform in 1..n; before each block of gs_it1 sweeps, the order is scrambled in
+// place by swapping entry i with entry l_i for i = 1..n, the same list for every block of the
+// solve, so the blocks' orders differ.
+//
+// LMGC90 draws the list with Fortran's RANDOM_NUMBER and never calls RANDOM_SEED; gfortran (since
+// version 7) then seeds from the operating system, so two LMGC90 runs of one case sweep in different
+// orders. Here the generator is seeded (--scramble-seed) and its stream continues from step to step:
+// a run repeats exactly, and other seeds show how much a case depends on the order.
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace lmgc::solver {
+
+class QuickScramble {
+ public:
+  QuickScramble() = default;
+  explicit QuickScramble(std::uint64_t seed) : random_(seed) {}
+
+  // prep_nlgs: a new random list for a solve over n contacts.
+  void prepare(std::size_t n) {
+    random_list_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      // RA in [0, 1) with 53 random bits; IAL1 = int(RA n) + 1, clamped to 1..n (0-based here).
+      const double ra = static_cast<double>(random_() >> 11) * 0x1.0p-53;
+      const auto drawn = static_cast<std::size_t>(ra * static_cast<double>(n));
+      random_list_[i] = drawn < n ? drawn : n - 1;
+    }
+  }
+
+  // The list of the last prepare(), 0-based.
+  const std::vector<std::size_t>& random_list() const { return random_list_; }
+
+  // quick_scramble_nlgs: swaps entry i of `order` with entry l_i, i = 0..n-1, in place.
+  template <typename Index>
+  void scramble(std::vector<Index>& order) const {
+    const std::size_t n = std::min(order.size(), random_list_.size());
+    for (std::size_t i = 0; i < n; ++i) std::swap(order[i], order[random_list_[i]]);
+  }
+
+ private:
+  std::mt19937_64 random_{1};
+  std::vector<std::size_t> random_list_;
+};
+
+}  // namespace lmgc::solver
