@@ -37,7 +37,7 @@ ProblemReport solve(const FclibLocalProblem& input, const LocalProblemNlgsOption
   ProblemReport report;
   report.dimension = Dim;
   report.contacts = problem.contact_count;
-  report.sweeps = result.sweeps;
+  report.sweeps = result.sweeps + result.race_sweeps;  // all sweeps done, the race's included
   report.newton_steps = result.newton_steps;
   report.seconds = result.seconds;
   report.error = natural_map_error(problem, r);  // recomputed independently of the solver's test
@@ -83,13 +83,18 @@ int main(int argc, char** argv) {
   app.add_option(
          "--method", method,
          "nlgs: Gauss-Seidel sweeps only; nlgs+newton: sweeps first, semismooth Newton when they stall; "
-         "newton+nlgs: a Newton phase first, then as nlgs+newton")
+         "newton+nlgs: Newton phases first, raced by sweeps, then as nlgs+newton")
       ->check(CLI::IsMember({"nlgs", "nlgs+newton", "newton+nlgs"}));
   app.add_option("--newton-steps", options.max_newton_steps_per_phase,
                  "Newton steps per phase, at most (a phase ends earlier when it stalls)")
       ->check(CLI::PositiveNumber);
-  app.add_option("--opening-sweeps", options.opening_sweeps,
-                 "newton+nlgs: NLGS sweeps before the first Newton phase")
+  app.add_option(
+         "--race-share", options.race_share,
+         "newton+nlgs: share of the opening Newton phases' time given to sweeps racing them (0: none)")
+      ->check(CLI::Range(0.0, 10.0));
+  app.add_option(
+         "--opening-sweeps", options.opening_sweeps,
+         "newton+nlgs: sweeps before the first of the opening Newton phases (one more before each next)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--csv", csv_path, "also write the per-problem table to this CSV file");
   app.footer(

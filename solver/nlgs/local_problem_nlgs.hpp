@@ -21,9 +21,12 @@ struct LocalProblemNlgsOptions {
   double max_seconds = 60.0;  // wall-clock cap per problem
   double relax = 1.0;         // r <- relax r_local + (1 - relax) r (spec: contact-laws.md §2.4)
   ContactOrder order = ContactOrder::natural;
-  // Start with a phase of semismooth Newton (local_problem_newton.hpp) before any sweep.
+  // Open with up to four phases of semismooth Newton (local_problem_newton.hpp) from the given
+  // reactions, raced by sweeps on a copy, before the sweeps take over.
   bool newton_first = true;
-  int opening_sweeps = 0;  // sweeps before that first Newton phase
+  // Share of the opening phases' time given to the sweeps that race them on a copy (0: no race).
+  double race_share = 0.25;
+  int opening_sweeps = 0;  // sweeps of r before the first opening phase (one more before each next)
   // When a block of sweeps stalls, switch to a Newton phase until it stalls in turn, then sweep again.
   bool newton_when_stalled = true;
   int sweeps_per_block = 50;
@@ -34,14 +37,15 @@ struct LocalProblemNlgsOptions {
 };
 
 struct LocalProblemNlgsResult {
-  int sweeps = 0;
-  double error = 0.0;  // natural-map error ÷ |q| at the end
+  int sweeps = 0;       // sweeps of the returned iterate's line (max_sweeps caps these)
+  int race_sweeps = 0;  // sweeps of the race's copy beside the opening Newton phases
+  double error = 0.0;   // natural-map error ÷ |q| at the end
   double seconds = 0.0;
   bool converged = false;
   int newton_steps = 0;                   // accepted Newton steps
-  int local_failures = 0;                 // local solves that ended above their tolerance (last sweep)
+  int local_failures = 0;                 // local solves that ended above their tolerance (last sweep of r)
   std::vector<double> milestone_seconds;  // -1 where never reached
-  std::vector<int> milestone_sweeps;
+  std::vector<int> milestone_sweeps;      // sweeps + race_sweeps at that time
 };
 
 // Solves from the reactions in `r` (size Dim × contacts; zeros for a cold start).

@@ -10,9 +10,10 @@
 // version 7) then seeds from the operating system, so two LMGC90 runs of one case sweep in different
 // orders. Here the generator is seeded (--scramble-seed) and its stream continues from step to step:
 // a run repeats exactly, and other seeds show how much a case depends on the order.
-#include <algorithm>
 #include <cstdint>
 #include <random>
+#include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace lmgc::solver {
@@ -26,9 +27,10 @@ class QuickScramble {
   void prepare(std::size_t n) {
     random_list_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-      // RA in [0, 1) with 53 random bits; IAL1 = int(RA n) + 1, clamped to 1..n (0-based here).
-      const double ra = static_cast<double>(random_() >> 11) * 0x1.0p-53;
-      const auto drawn = static_cast<std::size_t>(ra * static_cast<double>(n));
+      // LMGC90's RA in [0, 1), here with 53 random bits; IAL1 = int(RA n) + 1, clamped to 1..n
+      // (0-based here).
+      const double uniform = static_cast<double>(random_() >> 11) * 0x1.0p-53;
+      const auto drawn = static_cast<std::size_t>(uniform * static_cast<double>(n));
       random_list_[i] = drawn < n ? drawn : n - 1;
     }
   }
@@ -36,11 +38,13 @@ class QuickScramble {
   // The list of the last prepare(), 0-based.
   const std::vector<std::size_t>& random_list() const { return random_list_; }
 
-  // quick_scramble_nlgs: swaps entry i of `order` with entry l_i, i = 0..n-1, in place.
+  // quick_scramble_nlgs: swaps entry i of `order` with entry l_i, i = 0..n-1, in place. `order` must
+  // have the n entries of the last prepare(n).
   template <typename Index>
   void scramble(std::vector<Index>& order) const {
-    const std::size_t n = std::min(order.size(), random_list_.size());
-    for (std::size_t i = 0; i < n; ++i) std::swap(order[i], order[random_list_[i]]);
+    if (order.size() != random_list_.size())
+      throw std::logic_error("QuickScramble: order size differs from the prepared list");
+    for (std::size_t i = 0; i < order.size(); ++i) std::swap(order[i], order[random_list_[i]]);
   }
 
  private:

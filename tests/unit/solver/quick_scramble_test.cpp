@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <stdexcept>
 #include <vector>
 
 namespace lmgc::solver {
@@ -54,6 +55,15 @@ TEST(QuickScramble, ASeedRepeatsItsListsAndTheStreamContinuesFromSolveToSolve) {
   const std::vector<std::size_t> first = a.random_list();
   a.prepare(30);
   EXPECT_NE(a.random_list(), first);
+}
+
+TEST(QuickScramble, AnOrderOfAnotherSizeThanThePreparedListThrows) {
+  QuickScramble scramble;
+  scramble.prepare(5);
+  std::vector<int> shorter = identity(4), longer = identity(6);
+  EXPECT_THROW(scramble.scramble(shorter), std::logic_error);
+  EXPECT_THROW(scramble.scramble(longer), std::logic_error);
+  EXPECT_EQ(shorter, identity(4));
 }
 
 TEST(QuickScramble, NoContactsAndOneContactAreHarmless) {
