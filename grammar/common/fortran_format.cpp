@@ -1,11 +1,33 @@
 #include "grammar/common/fortran_format.hpp"
 
+#include <cctype>
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <string>
 
 namespace lmgc::grammar {
+
+namespace {
+
+// printf's "%.*e" of `value` into `buffer` (std::to_chars writes the same digits, several times
+// faster: POSTPRO's per-step lines spent most of a small case's run in snprintf); returns the length.
+std::size_t scientific(char (&buffer)[64], double value, int digits_after_point) {
+  const auto [end, error] =
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::scientific, digits_after_point);
+  return error == std::errc() ? static_cast<std::size_t>(end - buffer) : 0;
+}
+
+// Two or three exponent digits, as printf's "%02ld" / "%03ld".
+void append_exponent_digits(std::string& out, long magnitude, int at_least) {
+  char digits[24];
+  const auto [end, error] = std::to_chars(digits, digits + sizeof digits, magnitude);
+  const auto length = error == std::errc() ? static_cast<int>(end - digits) : 0;
+  if (length < at_least) out.append(static_cast<std::size_t>(at_least - length), '0');
+  out.append(digits, static_cast<std::size_t>(length));
+}
+
+}  // namespace
 
 void append_fortran_d(std::string& out, double value, int width, int digits) {
   std::string field;
@@ -19,24 +41,24 @@ void append_fortran_d(std::string& out, double value, int width, int digits) {
     if (value != 0.0) {
       // printf rounds to `digits` significant digits: d.dddddde±x → 0.ddddddd × 10^(x+1).
       char buffer[64];
-      std::snprintf(buffer, sizeof buffer, "%.*e", digits - 1, std::fabs(value));
-      std::string text(buffer);
+      const std::string_view text(buffer, scientific(buffer, std::fabs(value), digits - 1));
       const std::size_t e = text.find('e');
       mantissa.clear();
       for (std::size_t i = 0; i < e; ++i)
         if (text[i] != '.') mantissa.push_back(text[i]);
-      exponent = std::strtol(text.c_str() + e + 1, nullptr, 10) + 1;
+      long written = 0;
+      const char* first = text.data() + e + 1;
+      if (*first == '+') ++first;  // from_chars takes '-' but not '+'
+      std::from_chars(first, text.data() + text.size(), written);
+      exponent = written + 1;
     }
     field.push_back(negative ? '-' : ' ');
     field += "0.";
     field += mantissa;
     const long magnitude = std::labs(exponent);
-    char exponent_text[32];
-    if (magnitude <= 99)
-      std::snprintf(exponent_text, sizeof exponent_text, "D%c%02ld", exponent < 0 ? '-' : '+', magnitude);
-    else
-      std::snprintf(exponent_text, sizeof exponent_text, "%c%03ld", exponent < 0 ? '-' : '+', magnitude);
-    field += exponent_text;
+    if (magnitude <= 99) field.push_back('D');
+    field.push_back(exponent < 0 ? '-' : '+');
+    append_exponent_digits(field, magnitude, magnitude <= 99 ? 2 : 3);
     // A positive value's leading blank is the optional sign position: drop it if too wide.
     if (static_cast<int>(field.size()) > width && field[0] == ' ') field.erase(0, 1);
   }
@@ -56,8 +78,8 @@ std::string fortran_d(double value, int width, int digits) {
 
 void append_fortran_es(std::string& out, double value, int width, int digits) {
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*E", digits, value);
-  std::string field(buffer);
+  std::string field(buffer, scientific(buffer, value, digits));
+  for (char& c : field) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));  // printf's %E
   // C prints at least two exponent digits, as Fortran does for |e| <= 99.
   if (static_cast<int>(field.size()) > width) {
     out.append(static_cast<std::size_t>(width), '*');

@@ -1,7 +1,7 @@
 #pragma once
 // What both run loops (2D and 3D) do after every step: the line of OUTBOX/run_report.csv
-// (flushed, so an interrupted run keeps what it did), the run summary's counters, and the
-// progress line on a terminal.
+// (flushed at least every kFlushSeconds, so an interrupted run keeps what it did), the run
+// summary's counters, and the progress line on a terminal (redrawn at most kProgressSeconds apart).
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -33,6 +33,7 @@ class StepLog {
   bool progress_;
   long recorded_ = 0;
   std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point last_flush_, last_progress_;
 };
 
 }  // namespace lmgc::solver

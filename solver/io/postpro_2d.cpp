@@ -21,7 +21,6 @@ void line(std::ofstream& out, double time, std::initializer_list<double> values)
   }
   text += '\n';
   out << text;
-  out.flush();
 }
 
 }  // namespace
@@ -121,7 +120,6 @@ void Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsR
       case PostproKind2D::solver_informations: {
         out << solver_informations_line(t, state.contacts.empty() ? 0 : solver.iterations, last_norms_,
                                         state.contacts.size());
-        out.flush();
         break;
       }
       case PostproKind2D::violation_evolution: {
@@ -214,7 +212,6 @@ void Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsR
           grammar::append_fortran_i(text, v, 7);
         }
         out << text << '\n';
-        out.flush();
         break;
       }
       case PostproKind2D::average_velocity_evolution: {
@@ -235,6 +232,8 @@ void Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsR
       }
     }
   }
+  if (flush_clock_.due())
+    for (Stream& s : streams_) s.file->flush();
 }
 
 void Postpro2D::close() {

@@ -17,7 +17,6 @@ void line(std::ofstream& out, double time, std::initializer_list<double> values)
   }
   text += '\n';
   out << text;
-  out.flush();
 }
 
 }  // namespace
@@ -68,7 +67,6 @@ void Postpro3D::write(const Scene3D& scene, const RunState3D& state, const NlgsR
       case PostproKind2D::solver_informations: {
         out << solver_informations_line(t, state.contacts.empty() ? 0 : solver.iterations, last_norms_,
                                         state.contacts.size());
-        out.flush();
         break;
       }
       case PostproKind2D::body_tracking: {
@@ -86,6 +84,8 @@ void Postpro3D::write(const Scene3D& scene, const RunState3D& state, const NlgsR
         break;  // not provided in 3D: no stream was opened for it
     }
   }
+  if (flush_clock_.due())
+    for (Stream& s : streams_) s.file->flush();
 }
 
 void Postpro3D::close() {

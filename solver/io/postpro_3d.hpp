@@ -35,6 +35,7 @@ class Postpro3D {
   std::vector<PostproCommand2D> commands_;
   std::vector<Stream> streams_;
   NlgsNorms last_norms_;  // kept when a step has no contact (as LMGC90 does)
+  PostproFlushClock flush_clock_;
 };
 
 }  // namespace lmgc::solver

@@ -2,6 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
 #include "grammar/common/fortran_format.hpp"
 
 namespace lmgc::grammar {
@@ -93,6 +101,72 @@ TEST(FortranEs, WritesScientific) {
   std::string s;
   append_fortran_es(s, 1.0e-3, 15, 8);
   EXPECT_EQ(s, " 1.00000000E-03");
+}
+
+// The writers format with std::to_chars; printf is the reference they must equal digit for digit.
+std::string printf_es(double value, int width, int digits) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*E", digits, value);
+  const std::string field(buffer);
+  if (static_cast<int>(field.size()) > width) return std::string(static_cast<std::size_t>(width), '*');
+  return std::string(static_cast<std::size_t>(width) - field.size(), ' ') + field;
+}
+
+std::string printf_d(double value, int width, int digits) {
+  if (std::isnan(value) || std::isinf(value)) return fortran_d(value, width, digits);
+  std::string mantissa(static_cast<std::size_t>(digits), '0');
+  long exponent = 0;
+  if (value != 0.0) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*e", digits - 1, std::fabs(value));
+    const std::string text(buffer);
+    const std::size_t e = text.find('e');
+    mantissa.clear();
+    for (std::size_t i = 0; i < e; ++i)
+      if (text[i] != '.') mantissa.push_back(text[i]);
+    exponent = std::strtol(text.c_str() + e + 1, nullptr, 10) + 1;
+  }
+  std::string field = std::signbit(value) ? "-0." : " 0.";
+  field += mantissa;
+  char exponent_text[32];
+  const long magnitude = std::labs(exponent);
+  if (magnitude <= 99)
+    std::snprintf(exponent_text, sizeof exponent_text, "D%c%02ld", exponent < 0 ? '-' : '+', magnitude);
+  else
+    std::snprintf(exponent_text, sizeof exponent_text, "%c%03ld", exponent < 0 ? '-' : '+', magnitude);
+  field += exponent_text;
+  if (static_cast<int>(field.size()) > width && field[0] == ' ') field.erase(0, 1);
+  if (static_cast<int>(field.size()) > width) return std::string(static_cast<std::size_t>(width), '*');
+  return std::string(static_cast<std::size_t>(width) - field.size(), ' ') + field;
+}
+
+TEST(FortranWriters, EqualPrintfOnRandomAndSpecialValues) {
+  std::vector<double> values = {0.0,
+                                -0.0,
+                                1.0,
+                                -1.0,
+                                0.99999999,
+                                9.9999999950e99,
+                                1e-100,
+                                -2.5e-308,
+                                4.9e-324,
+                                1.7976931348623157e308,
+                                std::numeric_limits<double>::infinity(),
+                                -std::numeric_limits<double>::infinity(),
+                                std::numeric_limits<double>::quiet_NaN()};
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> mantissa(-10.0, 10.0);
+  std::uniform_int_distribution<int> exponent(-320, 300);
+  for (int i = 0; i < 20000; ++i) values.push_back(mantissa(random) * std::pow(10.0, exponent(random)));
+  for (const double v : values) {
+    std::string es;
+    append_fortran_es(es, v, 15, 8);
+    ASSERT_EQ(es, printf_es(v, 15, 8)) << v;
+    es.clear();
+    append_fortran_es(es, v, 14, 7);
+    ASSERT_EQ(es, printf_es(v, 14, 7)) << v;
+    ASSERT_EQ(fortran_d(v), printf_d(v, 14, 7)) << v;
+  }
 }
 
 }  // namespace
