@@ -213,7 +213,7 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
   // previous reaction. In NLGS sweeps that start often already solves the problem (the others moved
   // little): then it is returned without building the map.
   Eigen::Vector3d r = r_start.allFinite() ? project_on_coulomb_cone(r_start, mu) : Eigen::Vector3d::Zero();
-  double best_residual, best_bound;
+  double best_residual = 0.0, best_bound = 0.0;  // set on both paths below
   if (r(0) > 0.0) {
     evaluate(r, best_residual, best_bound);
     if (best_residual <= best_bound) {
