@@ -134,7 +134,7 @@ NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& 
   const auto start = std::chrono::steady_clock::now();
   const bool first = !state.laws_initialized && !state.contacts.empty();
   NlgsResult result = solve_nlgs_2d(scene, scene.bodies, state.contacts, state.h, state.time, options,
-                                    state.step == 1, first, &state.scramble);
+                                    state.step == 1, first, state.scramble);
   if (!state.contacts.empty()) state.laws_initialized = true;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

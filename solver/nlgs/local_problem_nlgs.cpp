@@ -21,7 +21,8 @@ constexpr double kStalledBlockRatio = 0.8;
 constexpr double kNewtonPhaseGain = 0.1;
 // A Newton phase ends after this many steps without halving its best error. Newton from r = 0 on
 // fc2d_granularflowonwall_02020 wanders between 1e-6 and 1e-5 for 320 steps before it finds the active
-// set and converges in one step; a window of 100 or 200 stops it first and leaves the problem unsolved.
+// set and converges in one step; with a single opening phase, a window of 100 or 200 stopped it first
+// and left the problem unsolved.
 constexpr int kNewtonStallWindow = 400;
 // Opening Newton phases, each from the caller's reactions after one more sweep than the last.
 constexpr int kOpeningNewtonAttempts = 4;
@@ -111,13 +112,17 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
   double best_error = natural_map_error(problem, r);
   result.error = best_error;
   record(result.error, 0);
+  // Records the error of iterate x (r, or the race's copy) and keeps it when it is the best so far.
+  const auto consider = [&](const Eigen::VectorXd& x, double error) {
+    record(error, result.sweeps + result.race_sweeps);
+    if (error < best_error) {
+      best_error = error;
+      best = x;
+    }
+  };
   const auto evaluate = [&] {
     result.error = natural_map_error(problem, r);
-    record(result.error, result.sweeps + result.race_sweeps);
-    if (result.error < best_error) {
-      best_error = result.error;
-      best = r;
-    }
+    consider(r, result.error);
   };
   const auto running = [&] {
     return std::isfinite(result.error) && best_error > options.tolerance &&
@@ -130,7 +135,7 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
   //
   // While `racing`, sweeps from the caller's reactions run beside the Newton steps on their own copy
   // (own order and shuffle too), given options.race_share of the time Newton has taken: where the sweeps
-  // alone would finish first (NESpheres in one sweep, FrictionContactProblem00727 in 700), they do, at the
+  // alone would finish first (NESpheres in one sweep, FrictionContactProblem00727 in 679), they do, at the
   // price of a quarter more time where Newton wins; where they win, the Newton steps they waited for
   // cost up to 4 times their own time (FrictionContactProblem00727: 0.038 s, sweeps alone 0.0067 s).
   // The budget is wall-clock time, so how many race sweeps run (not what the solve converges to
@@ -147,12 +152,7 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
       sweep_over(race, race_order, race_shuffle);
       race_started = true;
       ++result.race_sweeps;
-      const double race_error = natural_map_error(problem, race);
-      record(race_error, result.sweeps + result.race_sweeps);
-      if (race_error < best_error) {
-        best_error = race_error;
-        best = race;
-      }
+      consider(race, natural_map_error(problem, race));
       race_seconds += elapsed() - sweep_start;
     }
   };
@@ -210,6 +210,7 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
   // switching loop below takes over at once.
   if (options.newton_first && running()) {
     const Eigen::VectorXd start = r;
+    const double start_error = result.error;
     racing = options.race_share > 0.0;
     race_sweeps();
     for (int attempt = 0; attempt < kOpeningNewtonAttempts && running(); ++attempt) {
@@ -219,7 +220,7 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
         sweep_block(options.sweeps_per_block);
         if (!running() || sweeps_steady(before, result.error)) break;
         r = start;
-        result.error = natural_map_error(problem, r);
+        result.error = start_error;
       }
       sweep_block(options.opening_sweeps + attempt);
       if (running()) newton_phase();

@@ -128,7 +128,7 @@ Matrix2d delassus_block(const Interaction2D& c, const std::vector<Vector3d>& inv
 
 NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vector<Interaction2D>& contacts,
                          double h, double time, const NlgsOptions& options, bool first_step,
-                         bool first_preparation, QuickScramble* scramble) {
+                         bool first_preparation, QuickScramble& scramble) {
   NlgsResult result;
   const std::size_t count = contacts.size();
   std::vector<Vector3d>& v = bodies.velocity;
@@ -182,9 +182,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
 
   std::vector<std::uint32_t> order(count);
   std::iota(order.begin(), order.end(), 0u);
-  QuickScramble own_scramble(options.scramble_seed);
-  QuickScramble& scrambler = scramble ? *scramble : own_scramble;
-  if (options.quick_scramble) scrambler.prepare(count);
+  if (options.quick_scramble) scramble.prepare(count);
   const double relax = options.relax, keep = 1.0 - options.relax;
 
   // One Gauss–Seidel pass; the post pass never skips and is not counted as an iteration.
@@ -301,7 +299,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
 
   if (count > 0) {
     for (int block = 0; block < options.gs_it2; ++block) {
-      if (options.quick_scramble) scrambler.scramble(order);
+      if (options.quick_scramble) scramble.scramble(order);
       for (int i = 0; i < options.gs_it1; ++i) sweep(false);
       result.converged = check();
       if (result.converged || result.diverged) break;

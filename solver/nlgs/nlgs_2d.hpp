@@ -14,10 +14,9 @@ namespace lmgc::solver {
 // Builds the Delassus blocks and local problems, starts from the reactions already in
 // `contacts` (warm start), iterates, then sets velocities (bodies.velocity = V_free + M⁻¹ H r),
 // relative velocities and statuses. `first_step`, `first_preparation`: LawStep's. `scramble`: the
-// run's quick-scramble generator (options.quick_scramble; a fresh one from options.scramble_seed
-// when null).
+// run's quick-scramble generator, used when options.quick_scramble.
 NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vector<Interaction2D>& contacts,
-                         double h, double time, const NlgsOptions& options, bool first_step = false,
-                         bool first_preparation = false, QuickScramble* scramble = nullptr);
+                         double h, double time, const NlgsOptions& options, bool first_step,
+                         bool first_preparation, QuickScramble& scramble);
 
 }  // namespace lmgc::solver
