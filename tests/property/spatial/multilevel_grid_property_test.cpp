@@ -1,5 +1,6 @@
 // The shared spatial grid finds every pair of items whose spheres, grown by the margin, overlap
-// (compared with the all-pairs search) and gives each candidate pair exactly once.
+// (compared with the all-pairs search) and gives each candidate pair exactly once, whether its
+// levels use the dense cell table or the sorted cell list.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -13,10 +14,12 @@ namespace {
 RC_GTEST_PROP(MultilevelGrid, FindsEveryOverlappingPairExactlyOnce, ()) {
   const int count = *rc::gen::inRange(0, 120);
   const bool flat = *rc::gen::arbitrary<bool>();  // 2D scenes pass z = 0
+  // Packed items take the grid's dense cell table, spread ones its sorted cell list.
+  const double spread = *rc::gen::element(0.2, 1.0, 100.0);
   std::vector<Eigen::Vector3d> centres;
   std::vector<double> radii;
   for (int i = 0; i < count; ++i) {
-    auto coordinate = [] { return *rc::gen::inRange(-1000, 1000) / 100.0; };
+    auto coordinate = [&] { return spread * *rc::gen::inRange(-1000, 1000) / 100.0; };
     centres.emplace_back(coordinate(), coordinate(), flat ? 0.0 : coordinate());
     // Mostly small items, a few very large ones (walls), some points.
     const int kind = *rc::gen::inRange(0, 10);
@@ -40,6 +43,20 @@ RC_GTEST_PROP(MultilevelGrid, FindsEveryOverlappingPairExactlyOnce, ()) {
       const double reach = radii[i] + radii[j] + margin;
       if ((centres[i] - centres[j]).norm() <= reach) RC_ASSERT(found.count({i, j}) == 1u);
     }
+}
+
+TEST(MultilevelGrid, PackedItemsGetTheDenseCellTableAndFarApartOnesTheSortedList) {
+  std::vector<Eigen::Vector3d> packed, spread;
+  for (int i = 0; i < 100; ++i) {
+    packed.emplace_back(i % 10, i / 10, 0.0);
+    spread.emplace_back(1e4 * (i % 10), 1e4 * (i / 10), 1e4 * i);
+  }
+  const std::vector<double> radii(100, 0.5);
+  MultilevelGrid grid;
+  grid.build(packed, radii, {}, 0.0);
+  EXPECT_TRUE(grid.has_dense_table(0));
+  grid.build(spread, radii, {}, 0.0);
+  EXPECT_FALSE(grid.has_dense_table(0));
 }
 
 }  // namespace
