@@ -595,6 +595,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   if (options.quick_scramble) state.scramble.prepare(contacts.size());
   std::vector<OpenContactVisits> visits(contacts.size());
   for (int check = 0; check < max_checks; ++check) {
+    const auto sweeps_start = std::chrono::steady_clock::now();
     if (options.quick_scramble) state.scramble.scramble(order);
     for (OpenContactVisits& v : visits) v.restart();  // open_contact_visits.hpp
     for (int sweep = 0; sweep < options.gs_it1; ++sweep) {
@@ -611,6 +612,8 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
       }
       ++result.iterations;
     }
+    result.sweep_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - sweeps_start).count();
     // Check pass (numerics.md §4.1): one more local solve per contact, r left unchanged.
     NlgsCheckSums sums;
     for (std::size_t k = 0; k < contacts.size(); ++k) {

@@ -6,6 +6,7 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numeric>
 
@@ -299,8 +300,11 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
 
   if (count > 0) {
     for (int block = 0; block < options.gs_it2; ++block) {
+      const auto sweeps_start = std::chrono::steady_clock::now();
       if (options.quick_scramble) scramble.scramble(order);
       for (int i = 0; i < options.gs_it1; ++i) sweep(false);
+      result.sweep_seconds +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - sweeps_start).count();
       result.converged = check();
       if (result.converged || result.diverged) break;
     }

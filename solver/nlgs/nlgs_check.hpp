@@ -48,6 +48,10 @@ struct NlgsResult {
   double free_velocity_norm = 0.0;
   std::size_t active = 0;  // interactions with a non-zero reaction
   double seconds = 0.0;    // wall time of the solve (set by the solve_contacts stage)
+  // Wall time of the blocks of sweeps alone (quick scramble included; set-up, checks and the post
+  // pass excluded): what LMGC90's "[NLGS2] iter" / "[NLGS3] iter" timer measures (wrap_nlgs.f90),
+  // so that sweep rates compare like with like.
+  double sweep_seconds = 0.0;
 };
 
 // The sums of one check pass over the contacts (numerics.md §4.1); `active` counts the contacts

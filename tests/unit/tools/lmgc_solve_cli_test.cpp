@@ -4,6 +4,8 @@
 
 #include <fstream>
 #include <map>
+#include <sstream>
+#include <vector>
 
 #include "grammar/dof/parser.hpp"
 #include "tests/support/run_tool.hpp"
@@ -47,6 +49,28 @@ TEST(LmgcSolve, FlagsOverrideTheCommandDatParameters) {
   EXPECT_EQ(run_tool("lmgc-solve", "'" + dir.string() + "' --quiet --steps 7 --write-every 0").exit_code, 0);
   EXPECT_EQ(last_step(dir), 7);
   EXPECT_FALSE(fs::exists(dir / "OUTBOX" / "DOF.OUT.1"));
+}
+
+// The run report's timing columns nest: the sweeps are part of the solve, the solve of the step.
+TEST(LmgcSolve, RunReportSweepTimeIsPartOfTheSolveTimeWhichIsPartOfTheStepTime) {
+  const fs::path dir = default_case_copy("solve_report");
+  ASSERT_EQ(run_tool("lmgc-solve", "'" + dir.string() + "' --quiet --steps 20 --write-every 0").exit_code, 0);
+  std::istringstream report(read_file(dir / "OUTBOX" / "run_report.csv"));
+  std::string line;
+  std::getline(report, line);
+  ASSERT_NE(line.find(",step_seconds,nlgs_seconds,sweep_seconds"), std::string::npos) << line;
+  int rows = 0;
+  while (std::getline(report, line)) {
+    std::vector<double> fields;
+    std::istringstream row(line);
+    for (std::string field; std::getline(row, field, ',');) fields.push_back(std::stod(field));
+    ASSERT_GE(fields.size(), 3u);
+    const double step = fields[fields.size() - 3], solve = fields[fields.size() - 2], sweeps = fields.back();
+    EXPECT_LE(sweeps, solve) << line;
+    EXPECT_LE(solve, step) << line;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 20);
 }
 
 TEST(LmgcSolve, InvalidDataExitsOneAndWritesNothing) {
