@@ -78,6 +78,13 @@ void augmentation_parameters(const Eigen::Matrix3d& W, double& rho_n, double& rh
     rho_t = lambda_min / (lambda_max * lambda_max);
 }
 
+// W_nt, W_ns, W_ts negligible and W_tt = W_ss, to 1e-12 of the diagonal (normal-first order).
+bool uncoupled_isotropic(const Eigen::Matrix3d& W) {
+  const double scale = 1e-12 * (std::fabs(W(0, 0)) + std::fabs(W(1, 1)));
+  return std::fabs(W(0, 1)) <= scale && std::fabs(W(0, 2)) <= scale && std::fabs(W(1, 2)) <= scale &&
+         std::fabs(W(1, 1) - W(2, 2)) <= scale;
+}
+
 LocalCase3D classify(const Eigen::Vector3d& r, double mu) {
   if (r(0) <= 0.0) return LocalCase3D::take_off;
   return r.tail<2>().norm() < mu * r(0) * (1.0 - 1e-10) ? LocalCase3D::stick : LocalCase3D::slide;
@@ -220,6 +227,24 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
       s.r = r;
       s.residual = best_residual;
       s.state = classify(r, mu);
+      return s;
+    }
+  }
+  // A block without normal–tangential coupling and with an isotropic tangential part (a sphere
+  // against a sphere or a plane: W_nT = 0, W_TT = α I up to round-off) slides in closed form:
+  // r_n = -q_n / W_nn and r_T on the cone's edge against q_T. Checked like any answer; 945_SP_Box_PL
+  // spends most of its sweeps in sliding Newton solves that this replaces.
+  if (uncoupled_isotropic(W) && W(0, 0) > 0.0) {
+    const double rn = -q(0) / W(0, 0);
+    const double qt_norm = q.tail<2>().norm();
+    Eigen::Vector3d slide(rn, 0.0, 0.0);
+    if (qt_norm > 0.0) slide.tail<2>() = (-mu * rn / qt_norm) * q.tail<2>();
+    double residual, bound;
+    evaluate(slide, residual, bound);
+    if (residual <= bound) {
+      s.r = slide;
+      s.residual = residual;
+      s.state = classify(slide, mu);
       return s;
     }
   }

@@ -140,6 +140,23 @@ RC_GTEST_PROP(SignoriniCoulomb3D, NonSymmetricPositiveDefiniteBlockStillSolvesTo
   check_solves(W, random_q(), in_range(0.0, 2.0));
 }
 
+// Sphere blocks (no normal–tangential coupling, isotropic tangential part, up to a round-off of
+// 1e-14) take the closed-form slide: solved to tolerance in the cone, without a Newton iteration.
+RC_GTEST_PROP(SignoriniCoulomb3D, UncoupledIsotropicBlockSlidesInClosedFormWithinTolerance, ()) {
+  const double normal = in_range(0.1, 10.0), tangential = normal * in_range(0.5, 4.0);
+  Matrix3d W = Matrix3d::Zero();
+  W.diagonal() << normal, tangential, tangential;
+  Matrix3d noise = Matrix3d::Zero();
+  noise(0, 1) = noise(1, 0) = in_range(-1.0, 1.0);
+  noise(1, 2) = noise(2, 1) = in_range(-1.0, 1.0);
+  W += 1e-14 * normal * noise;
+  const Vector3d q = random_q();
+  const double mu = in_range(0.0, 2.0);
+  check_solves(W, q, mu);
+  const LocalSolution3D s = solve_signorini_coulomb_3d(W, q, mu, Vector3d::Zero(), solver_tolerance(q));
+  RC_ASSERT(s.newton_iterations == 0);
+}
+
 // --- projection on the Coulomb cone, points computed by hand ---
 
 TEST(CoulombConeProjection, PointInsideTheConeIsUnchanged) {
