@@ -323,10 +323,21 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
   }
   if (std::is_sorted(keys.begin(), keys.end())) return;
   std::sort(keys.begin(), keys.end());
-  std::vector<Interaction2D> sorted;
-  sorted.reserve(out.size());
-  for (const SortKey& k : keys) sorted.push_back(out[k.index]);
-  out.swap(sorted);
+  // Permuted in place, cycle by cycle: `out` keeps its buffer from step to step (a new one each
+  // step took fresh pages from the system on large scenes).
+  for (std::size_t start = 0; start < keys.size(); ++start) {
+    if (keys[start].index == start) continue;
+    Interaction2D moving = std::move(out[start]);
+    std::size_t hole = start;
+    while (keys[hole].index != start) {
+      const std::size_t from = keys[hole].index;
+      out[hole] = std::move(out[from]);
+      keys[hole].index = static_cast<std::uint32_t>(hole);
+      hole = from;
+    }
+    out[hole] = std::move(moving);
+    keys[hole].index = static_cast<std::uint32_t>(hole);
+  }
 }
 
 }  // namespace lmgc::solver

@@ -248,7 +248,8 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     p.radius = c.bounding_radius;
   }
 
-  std::vector<Interaction3D> found;
+  std::vector<Interaction3D>& found = state.detected;
+  found.clear();
   // One interaction per contact point: local frame rows (t, n, s), lever rows, Delassus block.
   // `image`: the antagonist's periodic shift (zero but across a periodic side). The levers reach
   // the contact point from both bodies, but PTPT3's reach each body's own point (the lever points).

@@ -16,6 +16,10 @@ struct RunState3D {
   double theta = 0.5;
   std::vector<Interaction3D> contacts;
   std::vector<Interaction3D> previous;
+  // Detection's list before sorting, kept from step to step for its memory: a list built afresh took
+  // new pages from the system at every step on large scenes (64k spheres: 8% of a step in page
+  // faults and page clearing).
+  std::vector<Interaction3D> detected;
   bool laws_initialized = false;  // a step with interactions has been solved (LawStep::first_step)
   QuickScramble scramble;         // the sweep order's random lists, step after step
 };
