@@ -2,9 +2,8 @@
 // residual of every timing. Disks are first settled for a while, then timed.
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
-
 #include "bench/scenes/disk_box_2d.hpp"
+#include "bench/settled_steps.hpp"
 #include "solver/integrator/step_2d.hpp"
 
 namespace {
@@ -21,31 +20,10 @@ void BM_StepDiskBox(benchmark::State& state) {
   options.gs_it1 = 25;
   options.gs_it2 = 2;
   for (int i = 0; i < 100; ++i) solver::step_2d(scene, run, options);  // let the packing load
-  const solver::Scene2D settled = scene;
-  const solver::RunState2D settled_run = run;
-  double contacts = 0, residual = 0;
-  long steps = 0;
-  // Small scenes repeat their timed steps from the settled state (a 1k-body step takes milliseconds:
-  // a single window of steps varied by ±20% from run to run on this shared machine).
-  const int rounds = std::max(1, 16000 / static_cast<int>(state.range(0)));
-  for (auto _ : state)
-    for (int round = 0; round < rounds; ++round) {
-      state.PauseTiming();
-      scene = settled;
-      run = settled_run;
-      state.ResumeTiming();
-      for (int i = 0; i < 10; ++i) {
-        const auto r = solver::step_2d(scene, run, options);
-        contacts += static_cast<double>(run.contacts.size());
-        residual += r.residual_relative;
-        ++steps;
-      }
-    }
-  state.counters["contacts"] = contacts / static_cast<double>(steps);
-  state.counters["residual"] = residual / static_cast<double>(steps);
-  state.counters["s_per_step"] = benchmark::Counter(
-      static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.counters["contact_updates_per_s"] = benchmark::Counter(contacts * 50.0, benchmark::Counter::kIsRate);
+  bench::time_settled_steps(state, scene, run, 10, 50.0,
+                            [&](solver::Scene2D& timed, solver::RunState2D& timed_run) {
+                              return solver::step_2d(timed, timed_run, options);
+                            });
 }
 BENCHMARK(BM_StepDiskBox)
     ->Arg(1000)

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bench/settled_steps.hpp"
 #include "solver/integrator/step_3d.hpp"
 #include "solver/model/scene_builder_3d.hpp"
 
@@ -58,31 +59,10 @@ void BM_StepSphereBox(benchmark::State& state) {
   options.gs_it1 = 25;
   options.gs_it2 = 2;
   for (int i = 0; i < 50; ++i) solver::step_3d(scene, run, options);  // let the packing load
-  const solver::Scene3D settled = scene;
-  const solver::RunState3D settled_run = run;
-  double contacts = 0, residual = 0;
-  long steps = 0;
-  // Small scenes repeat their timed steps from the settled state (a 1k-body step takes milliseconds:
-  // a single window of steps varied by ±20% from run to run on this shared machine).
-  const int rounds = std::max(1, 16000 / static_cast<int>(state.range(0)));
-  for (auto _ : state)
-    for (int round = 0; round < rounds; ++round) {
-      state.PauseTiming();
-      scene = settled;
-      run = settled_run;
-      state.ResumeTiming();
-      for (int i = 0; i < 5; ++i) {
-        const auto r = solver::step_3d(scene, run, options);
-        contacts += static_cast<double>(run.contacts.size());
-        residual += r.residual_relative;
-        ++steps;
-      }
-    }
-  state.counters["contacts"] = contacts / static_cast<double>(steps);
-  state.counters["residual"] = residual / static_cast<double>(steps);
-  state.counters["s_per_step"] = benchmark::Counter(
-      static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.counters["contact_updates_per_s"] = benchmark::Counter(contacts * 55.0, benchmark::Counter::kIsRate);
+  bench::time_settled_steps(state, scene, run, 5, 55.0,
+                            [&](solver::Scene3D& timed, solver::RunState3D& timed_run) {
+                              return solver::step_3d(timed, timed_run, options);
+                            });
 }
 BENCHMARK(BM_StepSphereBox)
     ->Arg(1000)

@@ -219,17 +219,18 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
   // Sliding (or a near-singular block): generalised Newton on the Alart–Curnier map, from the
   // previous reaction. In NLGS sweeps that start often already solves the problem (the others moved
   // little): then it is returned without building the map.
+  // Evaluates x; when it solves the problem within its bound, it becomes the answer.
+  const auto answers = [&](const Eigen::Vector3d& x, double& residual, double& bound) {
+    evaluate(x, residual, bound);
+    if (residual > bound) return false;
+    s.r = x;
+    s.residual = residual;
+    s.state = classify(x, mu);
+    return true;
+  };
   Eigen::Vector3d r = r_start.allFinite() ? project_on_coulomb_cone(r_start, mu) : Eigen::Vector3d::Zero();
   double best_residual = 0.0, best_bound = 0.0;  // set on both paths below
-  if (r(0) > 0.0) {
-    evaluate(r, best_residual, best_bound);
-    if (best_residual <= best_bound) {
-      s.r = r;
-      s.residual = best_residual;
-      s.state = classify(r, mu);
-      return s;
-    }
-  }
+  if (r(0) > 0.0 && answers(r, best_residual, best_bound)) return s;
   // A block without normal–tangential coupling and with an isotropic tangential part (a sphere
   // against a sphere or a plane: W_nT = 0, W_TT = α I up to round-off) slides in closed form:
   // r_n = -q_n / W_nn and r_T on the cone's edge against q_T. Checked like any answer; 945_SP_Box_PL
@@ -240,13 +241,7 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
     Eigen::Vector3d slide(rn, 0.0, 0.0);
     if (qt_norm > 0.0) slide.tail<2>() = (-mu * rn / qt_norm) * q.tail<2>();
     double residual, bound;
-    evaluate(slide, residual, bound);
-    if (residual <= bound) {
-      s.r = slide;
-      s.residual = residual;
-      s.state = classify(slide, mu);
-      return s;
-    }
+    if (answers(slide, residual, bound)) return s;
   }
   double rho_n, rho_t;
   augmentation_parameters(W, rho_n, rho_t);

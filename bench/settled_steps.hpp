@@ -1,0 +1,43 @@
+#pragma once
+// The timing loop of the scaling benches: steps from a settled scene, with the counters they report
+// (contacts, achieved residual, seconds per step, contact updates per second).
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+
+namespace lmgc::bench {
+
+// Times `steps_per_round` calls of step(scene, run) from the settled `scene` and `run`. Small scenes
+// repeat the round from the settled state 16000/n times (n = state.range(0)): a 1k-body step takes
+// milliseconds, and a single round varied by ±20% from run to run on this shared machine.
+// `updates_per_contact` is the local solves per contact and step (sweeps, plus check passes if counted).
+template <class Scene, class Run, class Step>
+void time_settled_steps(benchmark::State& state, Scene& scene, Run& run, int steps_per_round,
+                        double updates_per_contact, Step&& step) {
+  const Scene settled = scene;
+  const Run settled_run = run;
+  double contacts = 0, residual = 0;
+  long steps = 0;
+  const int rounds = std::max(1, 16000 / static_cast<int>(state.range(0)));
+  for (auto _ : state)
+    for (int round = 0; round < rounds; ++round) {
+      state.PauseTiming();
+      scene = settled;
+      run = settled_run;
+      state.ResumeTiming();
+      for (int i = 0; i < steps_per_round; ++i) {
+        const auto result = step(scene, run);
+        contacts += static_cast<double>(run.contacts.size());
+        residual += result.residual_relative;
+        ++steps;
+      }
+    }
+  state.counters["contacts"] = contacts / static_cast<double>(steps);
+  state.counters["residual"] = residual / static_cast<double>(steps);
+  state.counters["s_per_step"] = benchmark::Counter(
+      static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["contact_updates_per_s"] =
+      benchmark::Counter(contacts * updates_per_contact, benchmark::Counter::kIsRate);
+}
+
+}  // namespace lmgc::bench
