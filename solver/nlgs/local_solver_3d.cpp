@@ -78,11 +78,14 @@ void augmentation_parameters(const Eigen::Matrix3d& W, double& rho_n, double& rh
     rho_t = lambda_min / (lambda_max * lambda_max);
 }
 
-// W_nt, W_ns, W_ts negligible and W_tt = W_ss, to 1e-12 of the diagonal (normal-first order).
+// Off-diagonal terms negligible (both triangles: FCLIB blocks need not be symmetric) and
+// W_tt = W_ss, to 1e-12 of the diagonal (normal-first order).
 bool uncoupled_isotropic(const Eigen::Matrix3d& W) {
   const double scale = 1e-12 * (std::fabs(W(0, 0)) + std::fabs(W(1, 1)));
-  return std::fabs(W(0, 1)) <= scale && std::fabs(W(0, 2)) <= scale && std::fabs(W(1, 2)) <= scale &&
-         std::fabs(W(1, 1) - W(2, 2)) <= scale;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (i != j && !(std::fabs(W(i, j)) <= scale)) return false;
+  return std::fabs(W(1, 1) - W(2, 2)) <= scale;
 }
 
 LocalCase3D classify(const Eigen::Vector3d& r, double mu) {
@@ -222,7 +225,7 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
   // Evaluates x; when it solves the problem within its bound, it becomes the answer.
   const auto answers = [&](const Eigen::Vector3d& x, double& residual, double& bound) {
     evaluate(x, residual, bound);
-    if (residual > bound) return false;
+    if (!(residual <= bound)) return false;  // NaN (an overflowing candidate) is no answer
     s.r = x;
     s.residual = residual;
     s.state = classify(x, mu);

@@ -157,6 +157,17 @@ RC_GTEST_PROP(SignoriniCoulomb3D, UncoupledIsotropicBlockSlidesInClosedFormWithi
   RC_ASSERT(s.newton_iterations == 0);
 }
 
+// A block whose W_nn is positive but so small that -q_n / W_nn overflows makes the closed-form
+// slide non-finite (inf × 0 = NaN in r_T): that candidate is not an answer, and whatever comes back
+// is either finite or flagged as failed.
+TEST(SignoriniCoulomb3D, OverflowingClosedFormSlideIsNeverReturnedAsSolved) {
+  Matrix3d W = Matrix3d::Zero();
+  W.diagonal() << 1e-320, 1.0, 1.0;
+  const Vector3d q(-1.0, 0.0, 1.0);
+  const LocalSolution3D s = solve_signorini_coulomb_3d(W, q, 0.5, Vector3d::Zero(), 1e-10);
+  EXPECT_TRUE(s.failed || s.r.allFinite()) << s.r.transpose();
+}
+
 // --- projection on the Coulomb cone, points computed by hand ---
 
 TEST(CoulombConeProjection, PointInsideTheConeIsUnchanged) {
