@@ -17,8 +17,8 @@ struct RunState3D {
   std::vector<Interaction3D> contacts;
   std::vector<Interaction3D> previous;
   // Detection's list before sorting, kept from step to step for its memory: a list built afresh took
-  // new pages from the system at every step on large scenes (64k spheres: 8% of a step in page
-  // faults and page clearing).
+  // new pages from the system at every step on large scenes (64k spheres: 9-12% of a step in kernel
+  // page handling, perf).
   std::vector<Interaction3D> detected;
   bool laws_initialized = false;  // a step with interactions has been solved (LawStep::first_step)
   QuickScramble scramble;         // the sweep order's random lists, step after step

@@ -219,9 +219,6 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
     bound = bound_of(r, Wr);
   };
 
-  // Sliding (or a near-singular block): generalised Newton on the Alart–Curnier map, from the
-  // previous reaction. In NLGS sweeps that start often already solves the problem (the others moved
-  // little): then it is returned without building the map.
   // Evaluates x; when it solves the problem within its bound, it becomes the answer.
   const auto answers = [&](const Eigen::Vector3d& x, double& residual, double& bound) {
     evaluate(x, residual, bound);
@@ -231,13 +228,16 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
     s.state = classify(x, mu);
     return true;
   };
+  // Sliding (or a near-singular block): generalised Newton on the Alart–Curnier map, from the
+  // previous reaction. In NLGS sweeps that start often already solves the problem (the others moved
+  // little): then it is returned without building the map.
   Eigen::Vector3d r = r_start.allFinite() ? project_on_coulomb_cone(r_start, mu) : Eigen::Vector3d::Zero();
   double best_residual = 0.0, best_bound = 0.0;  // set on both paths below
   if (r(0) > 0.0 && answers(r, best_residual, best_bound)) return s;
   // A block without normal–tangential coupling and with an isotropic tangential part (a sphere
   // against a sphere or a plane: W_nT = 0, W_TT = α I up to round-off) slides in closed form:
-  // r_n = -q_n / W_nn and r_T on the cone's edge against q_T. Checked like any answer; 945_SP_Box_PL
-  // spends most of its sweeps in sliding Newton solves that this replaces.
+  // r_n = -q_n / W_nn and r_T on the cone's edge against q_T. Checked like any answer; it replaces
+  // sliding Newton solves (945_SP_Box_PL: 0.222 -> 0.154 s/step).
   if (uncoupled_isotropic(W) && W(0, 0) > 0.0) {
     const double rn = -q(0) / W(0, 0);
     const double qt_norm = q.tail<2>().norm();
