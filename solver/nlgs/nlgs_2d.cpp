@@ -1,7 +1,10 @@
 // NLGS over 2D interactions. spec: numerics.md §3-§4, docs/lmgc90-facts/rigid-2d.md §5.
-// The sweeps run over a compact array of "hot" contacts (local frame, levers, Delassus block,
-// law shift, reaction): everything one local solve touches, in ~180 bytes, so a sweep streams
-// through memory; the full Interaction2D records are read before and written after.
+// The sweeps read a compact array of contacts (bodies, local frame, levers, Delassus block, free
+// velocity shift, μ: 112 bytes) and write a separate one of reactions (32 bytes). Laws that modify
+// the block or add a correction (cohesive, wet, glued, elastic...) keep those terms in a third
+// array that only they read. On a 64k-disk box the sweeps stream these arrays from L3: one 180-byte
+// record read and written back per update was twice the traffic. The full Interaction2D records
+// are read before and written after.
 #include "solver/nlgs/nlgs_2d.hpp"
 
 #include <Eigen/LU>
@@ -20,23 +23,34 @@ using Eigen::Matrix2d;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 
-struct HotContact2D {
+// Read by every sweep.
+struct SweepContact2D {
   std::int32_t cd = 0, an = 0;  // body indices
-  OpenContactVisits visits;
-  std::uint8_t inactive = 0, glued = 0, wet = 0, cohesive = 0;
-  ContactStatus status = ContactStatus::noctc;
+  std::int32_t law_terms = -1;  // index into the LawTerms2D array; -1: plain (WW = W, no correction)
+  std::uint8_t inactive = 0;
   double nx = 0, ny = 0;                              // normal; t = (ny, -nx)
   double gcd_t = 0, gcd_n = 0, gan_t = 0, gan_n = 0;  // ℓ×t, ℓ×n of each body
   double wtt = 0, wtn = 0, wnn = 0;                   // Delassus block W
-  double wwtt = 0, wwnn = 0;                          // modified diagonal of the law (WW off-diagonal = W's)
   double cov_t = 0, cov_n = 0;                        // law shift of the free velocity
-  double cor_t = 0, cor_n = 0;                        // law correction added to the reaction
   double mu = 0;
-  double rt = 0, rn = 0;              // impulse
+};
+
+// Written by every sweep.
+struct ContactReaction2D {
+  double rt = 0, rn = 0;  // impulse
+  OpenContactVisits visits;
+  ContactStatus status = ContactStatus::noctc;
+};
+
+// The terms of a law beyond plain Signorini–Coulomb on W (contact-laws.md §2-§3).
+struct LawTerms2D {
+  std::uint8_t glued = 0, wet = 0, cohesive = 0;
+  double wwtt = 0, wwnn = 0;          // modified diagonal of the law (WW off-diagonal = W's)
+  double cor_t = 0, cor_n = 0;        // law correction added to the reaction
   double kt = 0, kn = 0, radh_t = 0;  // cohesive zone: r_coh = (radh_t, 0) + diag(kt, kn) uu
 };
 
-inline Vector2d relative_velocity(const HotContact2D& c, const std::vector<Vector3d>& v) {
+inline Vector2d relative_velocity(const SweepContact2D& c, const std::vector<Vector3d>& v) {
   const Vector3d& a = v[static_cast<std::size_t>(c.cd)];
   const Vector3d& b = v[static_cast<std::size_t>(c.an)];
   const double tx = c.ny, ty = -c.nx;
@@ -45,7 +59,7 @@ inline Vector2d relative_velocity(const HotContact2D& c, const std::vector<Vecto
   return Vector2d(ut, un);
 }
 
-[[gnu::always_inline]] inline void inject(const HotContact2D& c, double dt_, double dn,
+[[gnu::always_inline]] inline void inject(const SweepContact2D& c, double dt_, double dn,
                                           const std::vector<Vector3d>& inverse_mass,
                                           std::vector<Vector3d>& v) {
   const double tx = c.ny, ty = -c.nx;
@@ -74,55 +88,61 @@ Matrix2d delassus_block(const Interaction2D& c, const std::vector<Vector3d>& inv
 
 // The cohesive-zone reaction (contact-laws.md §3.5): with A = (I − WW K)⁻¹ the auxiliary
 // problem is uu = A (v + WW radh) + A WW rr, solved for rr; then r = rr + radh + K uu.
-// Out of line: rare, and its 2×2 inverse would bloat the sweep's hot loop.
-[[gnu::noinline]] void cohesive_solve(const HotContact2D& c, double vt, double vn, double& rt, double& rn,
-                                      ContactStatus& status) {
+void cohesive_solve(const SweepContact2D& c, const LawTerms2D& l, double vt, double vn, double& rt,
+                    double& rn, ContactStatus& status) {
   Matrix2d WW;
-  WW << c.wwtt, c.wtn, c.wtn, c.wwnn;
+  WW << l.wwtt, c.wtn, c.wtn, l.wwnn;
   Matrix2d M = Matrix2d::Identity();
-  M(0, 0) -= c.wwtt * c.kt;
-  M(0, 1) -= c.wtn * c.kn;
-  M(1, 0) -= c.wtn * c.kt;
-  M(1, 1) -= c.wwnn * c.kn;
+  M(0, 0) -= l.wwtt * l.kt;
+  M(0, 1) -= c.wtn * l.kn;
+  M(1, 0) -= c.wtn * l.kt;
+  M(1, 1) -= l.wwnn * l.kn;
   const Matrix2d A = M.inverse();
-  const Vector2d shifted = Vector2d(vt, vn) + WW * Vector2d(c.radh_t, 0.0);
+  const Vector2d shifted = Vector2d(vt, vn) + WW * Vector2d(l.radh_t, 0.0);
   const Vector2d uf = A * shifted;
   const Matrix2d Wp = A * WW;
   const LocalSolution2D s = solve_signorini_coulomb_2d(Wp, uf, c.mu);
   const Vector2d uu = uf + Wp * s.r;
-  rt = s.r(0) + c.radh_t + c.kt * uu(0);
-  rn = s.r(1) + c.kn * uu(1);
+  rt = s.r(0) + l.radh_t + l.kt * uu(0);
+  rn = s.r(1) + l.kn * uu(1);
   status = cohesive_status(s.status);
   if (s.status == ContactStatus::noctc && rn != 0.0) status = ContactStatus::Cstck;
 }
 
-// Bilateral glue: WW r = -v.
-[[gnu::noinline]] void glued_solve(const HotContact2D& c, double vt, double vn, double& rt, double& rn,
-                                   ContactStatus& status) {
-  const double det = c.wwtt * c.wwnn - c.wtn * c.wtn;
-  rt = -(c.wwnn * vt - c.wtn * vn) / det;
-  rn = -(-c.wtn * vt + c.wwtt * vn) / det;
-  status = ContactStatus::stick;
+// The law's reaction (correction included) for the shifted local free velocity (vt, vn), when
+// the law has terms beyond W. Out of line: rare, and it would bloat the sweep's hot loop.
+[[gnu::noinline]] void law_terms_solve(const SweepContact2D& c, const LawTerms2D& l, double vt, double vn,
+                                       double& rt, double& rn, ContactStatus& status) {
+  if (l.glued) {
+    // Bilateral glue: WW r = -v.
+    const double det = l.wwtt * l.wwnn - c.wtn * c.wtn;
+    rt = -(l.wwnn * vt - c.wtn * vn) / det;
+    rn = -(-c.wtn * vt + l.wwtt * vn) / det;
+    status = ContactStatus::stick;
+    return;
+  }
+  if (l.cohesive) {
+    cohesive_solve(c, l, vt, vn, rt, rn, status);
+    return;
+  }
+  ContactStatus plain = ContactStatus::noctc;
+  solve_signorini_coulomb_2d(l.wwtt, c.wtn, l.wwnn, vt, vn, c.mu, rt, rn, plain);
+  rt += l.cor_t;
+  rn += l.cor_n;
+  status = l.wet && (l.cor_n != 0.0 || l.cor_t != 0.0) ? wet_status(plain) : plain;
 }
 
 // The law's reaction (correction included) for the local free velocity ufree_loc. The plain
 // Signorini–Coulomb path, taken by almost every contact, is inlined in the sweep.
-[[gnu::always_inline]] inline void local_solve(const HotContact2D& c, double uft, double ufn, double& rt,
-                                               double& rn, ContactStatus& status) {
+[[gnu::always_inline]] inline void local_solve(const SweepContact2D& c, const std::vector<LawTerms2D>& terms,
+                                               double uft, double ufn, double& rt, double& rn,
+                                               ContactStatus& status) {
   const double vt = uft + c.cov_t, vn = ufn + c.cov_n;
-  if (c.glued) [[unlikely]] {
-    glued_solve(c, vt, vn, rt, rn, status);
+  if (c.law_terms >= 0) [[unlikely]] {
+    law_terms_solve(c, terms[static_cast<std::size_t>(c.law_terms)], vt, vn, rt, rn, status);
     return;
   }
-  if (c.cohesive) [[unlikely]] {
-    cohesive_solve(c, vt, vn, rt, rn, status);
-    return;
-  }
-  ContactStatus plain = ContactStatus::noctc;
-  solve_signorini_coulomb_2d(c.wwtt, c.wtn, c.wwnn, vt, vn, c.mu, rt, rn, plain);
-  rt += c.cor_t;
-  rn += c.cor_n;
-  status = c.wet && (c.cor_n != 0.0 || c.cor_t != 0.0) ? wet_status(plain) : plain;
+  solve_signorini_coulomb_2d(c.wtt, c.wtn, c.wnn, vt, vn, c.mu, rt, rn, status);
 }
 
 }  // namespace
@@ -135,8 +155,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   std::vector<Vector3d>& v = bodies.velocity;
   const std::vector<Vector3d>& inverse_mass = bodies.inverse_mass;
 
-  // Prep: Delassus blocks, the laws' local problems, the hot array; V = V_free + M⁻¹ H r_warm.
-  std::vector<HotContact2D> hot(count);
+  // Prep: Delassus blocks, the laws' local problems, the sweep arrays; V = V_free + M⁻¹ H r_warm.
+  std::vector<SweepContact2D> hot(count);
+  std::vector<ContactReaction2D> reaction(count);
+  std::vector<LawTerms2D> terms;
   v = bodies.velocity_free;
   double q2 = 0.0;
   for (std::size_t a = 0; a < count; ++a) {
@@ -145,13 +167,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     c.W = delassus_block(c, inverse_mass);
     prepare_local_problem_2d(law, c, LawStep{h, 0.0, first_step, first_preparation});
     if (c.inactive) c.r.setZero();
-    HotContact2D& k = hot[a];
+    SweepContact2D& k = hot[a];
     k.cd = c.candidate_body;
     k.an = c.antagonist_body;
     k.inactive = c.inactive;
-    k.glued = std::holds_alternative<CoupledDof>(law);
-    k.wet = std::holds_alternative<IqsWetDsClb>(law);
-    k.status = c.status;
     k.nx = c.normal.x();
     k.ny = c.normal.y();
     k.gcd_t = c.lever_candidate(0);
@@ -161,25 +180,44 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     k.wtt = c.W(0, 0);
     k.wtn = c.W(0, 1);
     k.wnn = c.W(1, 1);
-    k.wwtt = c.WW(0, 0);
-    k.wwnn = c.WW(1, 1);
     k.cov_t = c.covfree(0);
     k.cov_n = c.covfree(1);
-    k.cor_t = c.correction(0);
-    k.cor_n = c.correction(1);
     k.mu = c.mu;
-    k.rt = c.r(0);
-    k.rn = c.r(1);
-    k.cohesive = c.cohesive;
-    k.kt = c.cohesive_slope(0);
-    k.kn = c.cohesive_slope(1);
-    k.radh_t = c.cohesive_shift_t;
+    LawTerms2D l;
+    l.glued = std::holds_alternative<CoupledDof>(law);
+    l.wet = std::holds_alternative<IqsWetDsClb>(law);
+    l.cohesive = c.cohesive;
+    l.wwtt = c.WW(0, 0);
+    l.wwnn = c.WW(1, 1);
+    l.cor_t = c.correction(0);
+    l.cor_n = c.correction(1);
+    l.kt = c.cohesive_slope(0);
+    l.kn = c.cohesive_slope(1);
+    l.radh_t = c.cohesive_shift_t;
+    const bool plain = !l.glued && !l.wet && !l.cohesive && l.wwtt == k.wtt && l.wwnn == k.wnn &&
+                       l.cor_t == 0.0 && l.cor_n == 0.0;
+    if (!plain) {
+      k.law_terms = static_cast<std::int32_t>(terms.size());
+      terms.push_back(l);
+    }
+    reaction[a].rt = c.r(0);
+    reaction[a].rn = c.r(1);
+    reaction[a].status = c.status;
     // ‖q‖: free local velocities of the problem (law shifts included), fc3d/FORMAT.md §3.
     q2 += (relative_velocity(k, bodies.velocity_free) + Vector2d(k.cov_t, k.cov_n)).squaredNorm();
   }
-  for (const HotContact2D& k : hot)
-    if (k.rt != 0.0 || k.rn != 0.0) inject(k, k.rt, k.rn, inverse_mass, v);
+  for (std::size_t a = 0; a < count; ++a)
+    if (reaction[a].rt != 0.0 || reaction[a].rn != 0.0)
+      inject(hot[a], reaction[a].rt, reaction[a].rn, inverse_mass, v);
   result.free_velocity_norm = std::sqrt(q2);
+  // A plain contact's law terms: WW = W, no correction.
+  auto law_terms_of = [&](const SweepContact2D& c) {
+    if (c.law_terms >= 0) return terms[static_cast<std::size_t>(c.law_terms)];
+    LawTerms2D l;
+    l.wwtt = c.wtt;
+    l.wwnn = c.wnn;
+    return l;
+  };
 
   std::vector<std::uint32_t> order(count);
   std::iota(order.begin(), order.end(), 0u);
@@ -189,50 +227,52 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   // One Gauss–Seidel pass; the post pass never skips and is not counted as an iteration.
   auto sweep = [&](bool post) {
     for (std::uint32_t index : order) {
-      HotContact2D& c = hot[index];
+      const SweepContact2D& c = hot[index];
+      ContactReaction2D& s = reaction[index];
       if (c.inactive) {
-        if (c.rt != 0.0 || c.rn != 0.0) {
-          inject(c, -c.rt, -c.rn, inverse_mass, v);
-          c.rt = c.rn = 0.0;
+        if (s.rt != 0.0 || s.rn != 0.0) {
+          inject(c, -s.rt, -s.rn, inverse_mass, v);
+          s.rt = s.rn = 0.0;
         }
-        c.status = ContactStatus::noctc;
+        s.status = ContactStatus::noctc;
         continue;
       }
-      if (!post && c.rt == 0.0 && c.rn == 0.0 && c.visits.skip()) continue;
+      if (!post && s.rt == 0.0 && s.rn == 0.0 && s.visits.skip()) continue;
       const Vector2d u = relative_velocity(c, v);
-      const double uft = u(0) - (c.wtt * c.rt + c.wtn * c.rn);
-      const double ufn = u(1) - (c.wtn * c.rt + c.wnn * c.rn);
+      const double uft = u(0) - (c.wtt * s.rt + c.wtn * s.rn);
+      const double ufn = u(1) - (c.wtn * s.rt + c.wnn * s.rn);
       double rt, rn;
       ContactStatus status;
-      local_solve(c, uft, ufn, rt, rn, status);
-      rt = relax * rt + keep * c.rt;
-      rn = relax * rn + keep * c.rn;
+      local_solve(c, terms, uft, ufn, rt, rn, status);
+      rt = relax * rt + keep * s.rt;
+      rn = relax * rn + keep * s.rn;
       if (std::fabs(rt) < 1e-24) rt = 0.0;
       if (std::fabs(rn) < 1e-24) rn = 0.0;
-      const double drt = rt - c.rt, drn = rn - c.rn;
+      const double drt = rt - s.rt, drn = rn - s.rn;
       if (drt != 0.0 || drn != 0.0) inject(c, drt, drn, inverse_mass, v);
-      c.rt = rt;
-      c.rn = rn;
-      c.status = status;
-      if (rt != 0.0 || rn != 0.0) c.visits.restart();
+      s.rt = rt;
+      s.rn = rn;
+      s.status = status;
+      if (rt != 0.0 || rn != 0.0) s.visits.restart();
     }
     if (!post) ++result.iterations;
   };
 
-  // Natural-map residual of one hot contact at the current state (law in auxiliary variables).
-  auto residual2_of = [&](const HotContact2D& c, double uft, double ufn) {
-    if (c.inactive) return c.rt * c.rt + c.rn * c.rn;
-    if (c.cohesive) {
+  // Natural-map residual of one contact at the current state (law in auxiliary variables).
+  auto residual2_of = [&](const SweepContact2D& c, const ContactReaction2D& s, double uft, double ufn) {
+    if (c.inactive) return s.rt * s.rt + s.rn * s.rn;
+    const LawTerms2D l = law_terms_of(c);
+    if (l.cohesive) {
       // Natural map of the auxiliary problem: uu = v + WW r, rr = r − radh − K uu.
-      const double ut = uft + c.cov_t + c.wwtt * c.rt + c.wtn * c.rn;
-      const double un = ufn + c.cov_n + c.wtn * c.rt + c.wwnn * c.rn;
-      const double rrt = c.rt - c.radh_t - c.kt * ut, rrn = c.rn - c.kn * un;
+      const double ut = uft + c.cov_t + l.wwtt * s.rt + c.wtn * s.rn;
+      const double un = ufn + c.cov_n + c.wtn * s.rt + l.wwnn * s.rn;
+      const double rrt = s.rt - l.radh_t - l.kt * ut, rrn = s.rn - l.kn * un;
       return natural_map_residual_squared_2d(Vector2d(rrt, rrn), Vector2d(ut, un), c.mu);
     }
-    const double rrt = c.rt - c.cor_t, rrn = c.rn - c.cor_n;
-    const double ut = uft + c.cov_t + c.wwtt * rrt + c.wtn * rrn;
-    const double un = ufn + c.cov_n + c.wtn * rrt + c.wwnn * rrn;
-    if (c.glued) return ut * ut + un * un;
+    const double rrt = s.rt - l.cor_t, rrn = s.rn - l.cor_n;
+    const double ut = uft + c.cov_t + l.wwtt * rrt + c.wtn * rrn;
+    const double un = ufn + c.cov_n + c.wtn * rrt + l.wwnn * rrn;
+    if (l.glued) return ut * ut + un * un;
     return natural_map_residual_squared_2d(Vector2d(rrt, rrn), Vector2d(ut, un), c.mu);
   };
 
@@ -243,16 +283,18 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     std::size_t vanishing = 0;
     result.active = 0;
     const bool normal_only = options.norm == NlgsNorm::quad_normal;
-    for (HotContact2D& c : hot) {
-      c.visits.restart();  // after every check
+    for (std::size_t a = 0; a < count; ++a) {
+      const SweepContact2D& c = hot[a];
+      ContactReaction2D& s = reaction[a];
+      s.visits.restart();  // after every check
       const Vector2d u = relative_velocity(c, v);
-      const double uft = u(0) - (c.wtt * c.rt + c.wtn * c.rn);
-      const double ufn = u(1) - (c.wtn * c.rt + c.wnn * c.rn);
-      residual2 += residual2_of(c, uft, ufn);
-      double r1t = c.rt, r1n = c.rn, r2t = 0, r2n = 0;
+      const double uft = u(0) - (c.wtt * s.rt + c.wtn * s.rn);
+      const double ufn = u(1) - (c.wtn * s.rt + c.wnn * s.rn);
+      residual2 += residual2_of(c, s, uft, ufn);
+      double r1t = s.rt, r1n = s.rn, r2t = 0, r2n = 0;
       if (!c.inactive) {
         ContactStatus status;
-        local_solve(c, uft, ufn, r2t, r2n, status);
+        local_solve(c, terms, uft, ufn, r2t, r2n, status);
       } else {
         r1t = r1n = 0.0;
       }
@@ -260,7 +302,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       const double mt = 0.5 * (r1t + r2t), mn = 0.5 * (r1n + r2n);
       const double dvt = u(0) - u2t, dvn = u(1) - u2n;
       if (mt == 0.0 && mn == 0.0) ++vanishing;
-      if (c.rt != 0.0 || c.rn != 0.0) ++result.active;
+      if (s.rt != 0.0 || s.rn != 0.0) ++result.active;
       if (normal_only) {
         // 'QuaN ': normal components only.
         const double dvdv = dvn * dvn, wrr = 0.5 * c.wnn * (r1n * r1n + r2n * r2n);
@@ -315,27 +357,32 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   // Post (docs/lmgc90-facts/rigid-2d.md §5.3): velocities rebuilt from scratch (Rnod = H r),
   // one more relaxed sweep, then the final local velocities and statuses.
   v = bodies.velocity_free;
-  for (const HotContact2D& k : hot)
-    if (k.rt != 0.0 || k.rn != 0.0) inject(k, k.rt, k.rn, inverse_mass, v);
+  for (std::size_t a = 0; a < count; ++a)
+    if (reaction[a].rt != 0.0 || reaction[a].rn != 0.0)
+      inject(hot[a], reaction[a].rt, reaction[a].rn, inverse_mass, v);
   if (count > 0) sweep(true);
   // The achieved error is the one of the reactions actually returned (after the post sweep).
   double residual2 = 0.0;
   result.active = 0;
   std::fill(bodies.impulse.begin(), bodies.impulse.end(), Vector3d::Zero());
   for (std::size_t a = 0; a < count; ++a) {
-    const HotContact2D& k = hot[a];
+    const SweepContact2D& k = hot[a];
+    const ContactReaction2D& s = reaction[a];
     Interaction2D& c = contacts[a];
     const Vector2d u = relative_velocity(k, v);
-    residual2 += residual2_of(k, u(0) - (k.wtt * k.rt + k.wtn * k.rn), u(1) - (k.wtn * k.rt + k.wnn * k.rn));
-    if (k.rt != 0.0 || k.rn != 0.0) ++result.active;
-    c.r = Vector2d(k.rt, k.rn);
+    residual2 +=
+        residual2_of(k, s, u(0) - (k.wtt * s.rt + k.wtn * s.rn), u(1) - (k.wtn * s.rt + k.wnn * s.rn));
+    if (s.rt != 0.0 || s.rn != 0.0) ++result.active;
+    c.r = Vector2d(s.rt, s.rn);
     c.u = u;
-    c.status = (k.rt == 0.0 && k.rn == 0.0 && !k.wet && !k.cohesive) ? ContactStatus::noctc : k.status;
+    const bool wet_or_cohesive = k.law_terms >= 0 && (terms[static_cast<std::size_t>(k.law_terms)].wet ||
+                                                      terms[static_cast<std::size_t>(k.law_terms)].cohesive);
+    c.status = (s.rt == 0.0 && s.rn == 0.0 && !wet_or_cohesive) ? ContactStatus::noctc : s.status;
     // Contact impulses of every body (Ireac = Σ H r), driven dofs included (TORQUE EVOLUTION).
     const double tx = k.ny, ty = -k.nx;
-    const Vector3d f(k.rt * tx + k.rn * k.nx, k.rt * ty + k.rn * k.ny, 0.0);
-    bodies.impulse[static_cast<std::size_t>(k.cd)] += f + Vector3d(0, 0, k.rt * k.gcd_t + k.rn * k.gcd_n);
-    bodies.impulse[static_cast<std::size_t>(k.an)] -= f + Vector3d(0, 0, k.rt * k.gan_t + k.rn * k.gan_n);
+    const Vector3d f(s.rt * tx + s.rn * k.nx, s.rt * ty + s.rn * k.ny, 0.0);
+    bodies.impulse[static_cast<std::size_t>(k.cd)] += f + Vector3d(0, 0, s.rt * k.gcd_t + s.rn * k.gcd_n);
+    bodies.impulse[static_cast<std::size_t>(k.an)] -= f + Vector3d(0, 0, s.rt * k.gan_t + s.rn * k.gan_n);
     finish_step_2d(scene.laws[static_cast<std::size_t>(c.law)].law, c, h, time);
   }
   result.residual_absolute = std::sqrt(residual2);
