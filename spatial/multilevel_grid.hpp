@@ -15,12 +15,16 @@
 
 namespace lmgc::spatial {
 
-// The cell index of coordinate x, clamped so that absurd coordinates cannot overflow.
+// The cell index of coordinate x, clamped so that absurd coordinates cannot overflow. Floor by
+// truncation: std::floor is a library call on the baseline x86-64 target, and it was a sixth of the
+// candidate-pair loop of a 64k-disk box in perf.
 inline std::int64_t grid_index(double x, double cell) {
   constexpr double kLimit = 1099511627776.0;  // 2^40
-  const double q = std::floor(x / cell);
+  const double q = x / cell;
   if (!(q == q)) return 0;
-  return static_cast<std::int64_t>(std::max(-kLimit, std::min(kLimit, q)));
+  const double clamped = std::max(-kLimit, std::min(kLimit, q));
+  const auto truncated = static_cast<std::int64_t>(clamped);
+  return static_cast<double>(truncated) > clamped ? truncated - 1 : truncated;
 }
 
 class MultilevelGrid {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <cmath>
 #include <set>
 
 #include "spatial/multilevel_grid.hpp"
@@ -43,6 +44,23 @@ RC_GTEST_PROP(MultilevelGrid, FindsEveryOverlappingPairExactlyOnce, ()) {
       const double reach = radii[i] + radii[j] + margin;
       if ((centres[i] - centres[j]).norm() <= reach) RC_ASSERT(found.count({i, j}) == 1u);
     }
+}
+
+RC_GTEST_PROP(MultilevelGrid, CellIndexIsTheFloorOfTheQuotientWithinTheClamp, ()) {
+  // Integers and their neighbours (exact multiples of the cell are the edge cases), and arbitrary values.
+  const double whole = *rc::gen::inRange(-100000, 100000);
+  const double x = *rc::gen::element(whole, std::nextafter(whole, -1e9), std::nextafter(whole, 1e9),
+                                     whole / 7.0, *rc::gen::arbitrary<double>());
+  const double cell = *rc::gen::element(1.0, 0.25, 3e-3, 1e5);
+  const double q = std::floor(x / cell);
+  const std::int64_t index = grid_index(x, cell);
+  if (std::isnan(q)) {
+    RC_ASSERT(index == 0);
+  } else if (std::fabs(q) <= 1099511627776.0) {
+    RC_ASSERT(static_cast<double>(index) == q);
+  } else {
+    RC_ASSERT(std::llabs(index) == 1099511627776LL);  // clamped at 2^40
+  }
 }
 
 TEST(MultilevelGrid, PackedItemsGetTheDenseCellTableAndFarApartOnesTheSortedList) {
