@@ -78,18 +78,18 @@ void select_prox_tactors(Scene2D& scene, RunState2D& state) {
 
 void recup_rloc(RunState2D& state) {
   // Both lists are sorted by the same key: a merge finds the matches in linear time.
-  auto key = [](const Interaction2D& c) {
+  auto key = [](const auto& c) {
     return std::make_tuple(c.family, c.candidate, c.antagonist, c.candidate_vertex);
   };
-  const std::vector<Interaction2D>& previous = state.previous;
+  const std::vector<StoredInteraction2D>& previous = state.previous;
   // PLPLx between two parallel faces: which polygon holds the vertices depends on round-off, so a
   // pair may come back with its roles swapped (LMGC90's own detection keeps them; its
   // recup_rloc_ByPosition_PLPLx matches either role by position). The swapped pair's previous
   // point at the same place (within 1% of the distance between that pair's two points) is the match.
-  const auto swapped_match = [&](const Interaction2D& c) -> const Interaction2D* {
+  const auto swapped_match = [&](const Interaction2D& c) -> const StoredInteraction2D* {
     const auto first = std::lower_bound(previous.begin(), previous.end(),
                                         std::make_tuple(c.family, c.antagonist, c.candidate),
-                                        [&](const Interaction2D& p, const auto& k) {
+                                        [&](const StoredInteraction2D& p, const auto& k) {
                                           return std::make_tuple(p.family, p.candidate, p.antagonist) < k;
                                         });
     auto last = first;
@@ -105,7 +105,7 @@ void recup_rloc(RunState2D& state) {
   std::size_t j = 0;
   for (Interaction2D& c : state.contacts) {
     while (j < previous.size() && key(previous[j]) < key(c)) ++j;
-    const Interaction2D* match = nullptr;
+    const StoredInteraction2D* match = nullptr;
     bool swapped = false;
     if (j < previous.size() && key(previous[j]) == key(c)) {
       match = &previous[j];
@@ -141,7 +141,8 @@ NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& 
 }
 
 void stock_rloc(RunState2D& state) {
-  state.previous = state.contacts;
+  state.previous.clear();  // keeps its buffer
+  for (const Interaction2D& c : state.contacts) state.previous.emplace_back(c);
 }
 
 void compute_dof(Scene2D& scene, const RunState2D& state) {

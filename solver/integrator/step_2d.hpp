@@ -16,9 +16,9 @@ struct RunState2D {
   long step = 0;      // Nstep
   double h = 1e-3;    // time step
   double theta = 0.5;
-  std::vector<Interaction2D> contacts;  // this step's interactions
-  std::vector<Interaction2D> previous;  // last step's (the "verlet" list used for warm start)
-  bool laws_initialized = false;        // a step with interactions has been solved (LawStep::first_step)
+  std::vector<Interaction2D> contacts;        // this step's interactions
+  std::vector<StoredInteraction2D> previous;  // last step's (the "verlet" list used for warm start)
+  bool laws_initialized = false;  // a step with interactions has been solved (LawStep::first_step)
   VisibilityIndex2D visibility;
   QuickScramble scramble;  // the sweep order's random lists, step after step
 };

@@ -491,25 +491,38 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
   for (const std::uint32_t k : sorted) state.contacts.push_back(std::move(found[k]));
 }
 
+namespace {
+template <class Interaction>
+auto recup_key(const Interaction& c) {
+  return std::tuple(c.candidate, c.antagonist, c.vertex);
+}
+}  // namespace
+
+void store_interactions(RunState3D& state, const std::vector<Interaction3D>& interactions) {
+  std::vector<StoredInteraction3D>& stored = state.previous;
+  stored.clear();  // keeps its buffer
+  for (const Interaction3D& c : interactions) stored.emplace_back(c);
+  const auto by_key = [](const StoredInteraction3D& a, const StoredInteraction3D& b) {
+    return recup_key(a) < recup_key(b);
+  };
+  if (!std::is_sorted(stored.begin(), stored.end(), by_key))
+    std::stable_sort(stored.begin(), stored.end(), by_key);
+}
+
 void recup_rloc(RunState3D& state) {
   // Key: the contactor pair and, for PRPLx, the candidate vertex; PRPRx points of a pair are then
-  // told apart by position (numerics.md §4, recup_rloc_PRPRx / recup_rloc_PRPLx).
-  // The previous interactions by key through a sorted index (equal keys keep their order).
-  const std::vector<Interaction3D>& previous = state.previous;
-  const auto key = [](const Interaction3D& c) { return std::tuple(c.candidate, c.antagonist, c.vertex); };
-  std::vector<std::uint32_t> by_key(previous.size());
-  std::iota(by_key.begin(), by_key.end(), 0u);
-  std::stable_sort(by_key.begin(), by_key.end(),
-                   [&](std::uint32_t a, std::uint32_t b) { return key(previous[a]) < key(previous[b]); });
+  // told apart by position (numerics.md §4, recup_rloc_PRPRx / recup_rloc_PRPLx). `previous` is
+  // sorted by key (store_interactions).
+  const std::vector<StoredInteraction3D>& previous = state.previous;
   for (Interaction3D& c : state.contacts) {
-    const Interaction3D* match = nullptr;
-    const auto wanted = key(c);
-    auto it = std::lower_bound(by_key.begin(), by_key.end(), wanted,
-                               [&](std::uint32_t a, const auto& k) { return key(previous[a]) < k; });
-    for (; it != by_key.end() && key(previous[*it]) == wanted && !match; ++it)
+    const StoredInteraction3D* match = nullptr;
+    const auto wanted = recup_key(c);
+    auto it = std::lower_bound(previous.begin(), previous.end(), wanted,
+                               [&](const StoredInteraction3D& p, const auto& k) { return recup_key(p) < k; });
+    for (; it != previous.end() && recup_key(*it) == wanted && !match; ++it)
       if (c.family != PairFamily3D::PRPRx ||
-          (previous[*it].candidate_point - c.candidate_point).squaredNorm() < kRecupSquaredDistance)
-        match = &previous[*it];
+          (it->candidate_point - c.candidate_point).squaredNorm() < kRecupSquaredDistance)
+        match = &*it;
     if (!match) {
       c.r.setZero();
       c.status_begin = ContactStatus::nknow;
@@ -708,7 +721,7 @@ void update_step(Scene3D& scene, RunState3D& state) {
     b.frame_initial[i] = b.frame[i];
   }
   for (Interaction3D& c : state.contacts) c.status_begin = c.status;
-  state.previous = state.contacts;
+  store_interactions(state, state.contacts);
 }
 
 namespace {

@@ -15,7 +15,7 @@ struct RunState3D {
   double h = 1e-3;
   double theta = 0.5;
   std::vector<Interaction3D> contacts;
-  std::vector<Interaction3D> previous;
+  std::vector<StoredInteraction3D> previous;  // last step's, by recup_rloc's key (store_interactions)
   // Detection's list before sorting, kept from step to step for its memory: a list built afresh took
   // new pages from the system at every step on large scenes (64k spheres: 9-12% of a step in kernel
   // page handling, perf).
@@ -32,6 +32,9 @@ void compute_free_velocity(Scene3D& scene, const RunState3D& state);
 // from the begin frame by (1-θ) ω_begin.
 void select_prox_tactors(Scene3D& scene, RunState3D& state);
 void recup_rloc(RunState3D& state);
+// The verlet list the next recup_rloc reads: `interactions` stored by its key (candidate, antagonist,
+// vertex), equal keys in their order.
+void store_interactions(RunState3D& state, const std::vector<Interaction3D>& interactions);
 // NLGS in LMGC90's Exchange_Local_Global form: every local solve sees the bodies' current velocities
 // and injects its impulse increment at once (numerics.md §3).
 NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& options);

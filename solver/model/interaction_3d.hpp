@@ -137,4 +137,26 @@ struct Interaction3D {
   Eigen::Vector3d cohesive_shift = Eigen::Vector3d::Zero();  // cohesive: (radh_t, 0, radh_s)
 };
 
+// What the next step's warm start (recup_rloc) reads of an interaction: LMGC90's verlet list entry.
+// Kept apart from Interaction3D (640 bytes) because the whole list is stored every step.
+struct StoredInteraction3D {
+  PairFamily3D family = PairFamily3D::SPSPx;
+  ContactStatus status = ContactStatus::nknow;
+  std::int32_t candidate = 0, antagonist = 0, vertex = 0;  // the key
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();
+  Eigen::Vector3d candidate_point = Eigen::Vector3d::Zero();  // PRPRx points of a pair match by place
+  std::array<double, 6> internal{};
+
+  StoredInteraction3D() = default;
+  explicit StoredInteraction3D(const Interaction3D& c)
+      : family(c.family),
+        status(c.status),
+        candidate(c.candidate),
+        antagonist(c.antagonist),
+        vertex(c.vertex),
+        r(c.r),
+        candidate_point(c.candidate_point),
+        internal(c.internal) {}
+};
+
 }  // namespace lmgc::solver

@@ -25,7 +25,7 @@ TEST(RecupRloc2D, SameKeyTakesTheReactionStatusAndInternals) {
   p.r = Eigen::Vector2d(0.1, 2.0);
   p.status = ContactStatus::Cstck;
   p.internal[3] = 1.0;
-  state.previous = {p};
+  state.previous = {StoredInteraction2D(p)};
   state.contacts = {plplx(0, 1, 2, Eigen::Vector2d(1.0, 0.0)), plplx(0, 1, 3, Eigen::Vector2d(1.0, 1.0))};
   recup_rloc(state);
   EXPECT_EQ(state.contacts[0].r, p.r);
@@ -48,7 +48,7 @@ TEST(RecupRloc2D, SwappedFaceAgainstFacePairMatchesByPositionAndTurnsTangentialO
     p->cohesive = true;
   }
   p2.r(1) = 4.0;
-  state.previous = {p1, p2};
+  state.previous = {StoredInteraction2D(p1), StoredInteraction2D(p2)};
   // This step: polygon 0's vertices 1 and 4 on polygon 1's face, at the same two places (to 1e-5).
   state.contacts = {plplx(0, 1, 1, Eigen::Vector2d(1.0, 1e-5)), plplx(0, 1, 4, Eigen::Vector2d(1e-5, 0.0)),
                     plplx(0, 1, 5, Eigen::Vector2d(0.5, 0.0))};

@@ -256,7 +256,7 @@ TEST(StateFiles3D, WarmStartGivesBackTheReactionsAndStatuses) {
 
   // Restarting from the warm start gives the step the run itself takes next.
   SceneRun restarted{r.scene, r.state};
-  restarted.state.previous = warm;
+  store_interactions(restarted.state, warm);
   step_3d(r.scene, r.state, converged_options());
   step_3d(restarted.scene, restarted.state, converged_options());
   ASSERT_EQ(restarted.state.contacts.size(), r.state.contacts.size());
