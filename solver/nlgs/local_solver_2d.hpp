@@ -63,6 +63,51 @@ inline bool solve_signorini_coulomb_2d(double wtt, double wtn, double wnn, doubl
   return true;
 }
 
+// The reciprocals of the block that the enumeration divides by: the NLGS sweeps compute them once
+// per contact and step and multiply at every visit (siloDK_hoperJC: 6.9e7 -> 8.4e7 contact updates/s).
+// 0 where the division is not taken (a singular block, a slide denominator <= 1e-18).
+struct SignoriniCoulombReciprocals2D {
+  double det = 0.0, forward = 0.0, backward = 0.0;
+};
+
+inline SignoriniCoulombReciprocals2D signorini_coulomb_reciprocals_2d(double wtt, double wtn, double wnn,
+                                                                      double mu) {
+  const double det = wtt * wnn - wtn * wtn, forward = wnn - mu * wtn, backward = wnn + mu * wtn;
+  return {det != 0.0 ? 1.0 / det : 0.0, forward > 1e-18 ? 1.0 / forward : 0.0,
+          backward > 1e-18 ? 1.0 / backward : 0.0};
+}
+
+// The enumeration above with the reciprocals `inverse` of (wtt, wtn, wnn, mu): the same case, and
+// the same reaction up to round-off. A case whose reciprocal is 0, or NaN data, takes the dividing
+// version (its fallbacks and its r = 0 on NaN).
+inline bool solve_signorini_coulomb_2d(double wtt, double wtn, double wnn,
+                                       const SignoriniCoulombReciprocals2D& inverse, double qt, double qn,
+                                       double mu, double& rt, double& rn, ContactStatus& status) {
+  rt = rn = 0.0;
+  status = ContactStatus::noctc;
+  if (qn >= 0.0) return true;
+  const double dft = -(wnn * qt - wtn * qn);
+  const double dfn = -(-wtn * qt + wtt * qn);
+  const double cf = dft + mu * dfn;
+  const double cb = dft - mu * dfn;
+  if (cf < 0.0 && inverse.forward != 0.0) {
+    rn = -qn * inverse.forward;
+    rt = -mu * rn;
+    status = ContactStatus::slifw;
+  } else if (cf >= 0.0 && cb > 0.0 && inverse.backward != 0.0) {
+    rn = -qn * inverse.backward;
+    rt = mu * rn;
+    status = ContactStatus::slibw;
+  } else if (cf >= 0.0 && cb <= 0.0 && inverse.det != 0.0) {
+    rn = dfn * inverse.det;
+    rt = dft * inverse.det;
+    status = ContactStatus::stick;
+  } else {
+    return solve_signorini_coulomb_2d(wtt, wtn, wnn, qt, qn, mu, rt, rn, status);
+  }
+  return true;
+}
+
 // Natural-map residual of one contact (fc3d/FORMAT.md §3, scalar tangent), for u = W r + q:
 // F = r - P_K(r - u - (mu |u_t|) e_n), returned as |F|^2.
 double natural_map_residual_squared_2d(const Eigen::Vector2d& r, const Eigen::Vector2d& u, double mu);

@@ -1,8 +1,8 @@
 // NLGS over 2D interactions. spec: numerics.md §3-§4, docs/lmgc90-facts/rigid-2d.md §5.
 // The sweeps read a compact array of contacts (bodies, local frame, levers, Delassus block, free
-// velocity shift, μ: 112 bytes) and write a separate one of reactions (32 bytes). Laws that modify
-// the block or add a correction (cohesive, wet, glued, elastic...) keep those terms in a third
-// array that only they read. On a 64k-disk box the sweeps stream these arrays from L3: one 180-byte
+// velocity shift, μ, the block's reciprocals: 136 bytes) and write a separate one of reactions (32 bytes).
+// Laws that modify the block or add a correction (cohesive, wet, glued, elastic...) keep those terms in a
+// third array that only they read. On a 64k-disk box the sweeps stream these arrays from L3: one 180-byte
 // record read and written back per update was twice the traffic. The full Interaction2D records
 // are read before and written after.
 #include "solver/nlgs/nlgs_2d.hpp"
@@ -33,6 +33,7 @@ struct SweepContact2D {
   double wtt = 0, wtn = 0, wnn = 0;                   // Delassus block W
   double cov_t = 0, cov_n = 0;                        // law shift of the free velocity
   double mu = 0;
+  SignoriniCoulombReciprocals2D inverse;  // of (W, mu): the sweeps multiply instead of dividing
 };
 
 // Written by every sweep.
@@ -142,7 +143,7 @@ void cohesive_solve(const SweepContact2D& c, const LawTerms2D& l, double vt, dou
     law_terms_solve(c, terms[static_cast<std::size_t>(c.law_terms)], vt, vn, rt, rn, status);
     return;
   }
-  solve_signorini_coulomb_2d(c.wtt, c.wtn, c.wnn, vt, vn, c.mu, rt, rn, status);
+  solve_signorini_coulomb_2d(c.wtt, c.wtn, c.wnn, c.inverse, vt, vn, c.mu, rt, rn, status);
 }
 
 }  // namespace
@@ -183,6 +184,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     k.cov_t = c.covfree(0);
     k.cov_n = c.covfree(1);
     k.mu = c.mu;
+    k.inverse = signorini_coulomb_reciprocals_2d(k.wtt, k.wtn, k.wnn, k.mu);
     LawTerms2D l;
     l.glued = std::holds_alternative<CoupledDof>(law);
     l.wet = std::holds_alternative<IqsWetDsClb>(law);
@@ -223,6 +225,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   std::iota(order.begin(), order.end(), 0u);
   if (options.quick_scramble) scramble.prepare(count);
   const double relax = options.relax, keep = 1.0 - options.relax;
+  const bool relaxed = relax != 1.0;  // RELAX 1 (every example): the blend is skipped, not multiplied out
 
   // One Gauss–Seidel pass; the post pass never skips and is not counted as an iteration.
   auto sweep = [&](bool post) {
@@ -244,8 +247,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       double rt, rn;
       ContactStatus status;
       local_solve(c, terms, uft, ufn, rt, rn, status);
-      rt = relax * rt + keep * s.rt;
-      rn = relax * rn + keep * s.rn;
+      if (relaxed) {
+        rt = relax * rt + keep * s.rt;
+        rn = relax * rn + keep * s.rn;
+      }
       if (std::fabs(rt) < 1e-24) rt = 0.0;
       if (std::fabs(rn) < 1e-24) rn = 0.0;
       const double drt = rt - s.rt, drn = rn - s.rn;

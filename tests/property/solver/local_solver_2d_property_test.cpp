@@ -41,6 +41,38 @@ RC_GTEST_PROP(SignoriniCoulomb2D, SolutionSatisfiesComplementarityWithinRoundOff
   RC_ASSERT(std::fabs(s.r(1) * u(1)) <= 1e-10 * scale * scale);
 }
 
+RC_GTEST_PROP(SignoriniCoulomb2D, ReciprocalsGiveTheSameCaseAndTheReactionToRoundOff, ()) {
+  const Matrix2d W = random_spd();
+  const Vector2d q(in_range(-5.0, 5.0), in_range(-5.0, 5.0));
+  const double mu = *rc::gen::element(0.0, in_range(0.0, 2.0));
+  double rt, rn, rt_inverse, rn_inverse;
+  ContactStatus status, status_inverse;
+  const bool solved = solve_signorini_coulomb_2d(W(0, 0), W(0, 1), W(1, 1), q(0), q(1), mu, rt, rn, status);
+  const SignoriniCoulombReciprocals2D inverse =
+      signorini_coulomb_reciprocals_2d(W(0, 0), W(0, 1), W(1, 1), mu);
+  RC_ASSERT(solve_signorini_coulomb_2d(W(0, 0), W(0, 1), W(1, 1), inverse, q(0), q(1), mu, rt_inverse,
+                                       rn_inverse, status_inverse) == solved);
+  RC_ASSERT(status_inverse == status);
+  const double scale = 1e-14 * (1.0 + std::fabs(rt) + std::fabs(rn));
+  RC_ASSERT(std::fabs(rt_inverse - rt) <= scale);
+  RC_ASSERT(std::fabs(rn_inverse - rn) <= scale);
+}
+
+TEST(SignoriniCoulomb2D, ReciprocalsKeepTheFallbacksAndReturnNoReactionOnNaN) {
+  // The forward slide's denominator is negative here (see the test below): the backward slide.
+  const double wtt = 5.18966, wtn = 0.837049, wnn = 0.278671, mu = 0.45707;
+  const SignoriniCoulombReciprocals2D inverse = signorini_coulomb_reciprocals_2d(wtt, wtn, wnn, mu);
+  EXPECT_EQ(inverse.forward, 0.0);
+  double rt, rn;
+  ContactStatus status;
+  ASSERT_TRUE(solve_signorini_coulomb_2d(wtt, wtn, wnn, inverse, -5.0, -0.3385, mu, rt, rn, status));
+  EXPECT_EQ(status, ContactStatus::slibw);
+  EXPECT_GT(rn, 0.0);
+  EXPECT_FALSE(solve_signorini_coulomb_2d(wtt, wtn, wnn, inverse, std::nan(""), -1.0, mu, rt, rn, status));
+  EXPECT_EQ(rt, 0.0);
+  EXPECT_EQ(rn, 0.0);
+}
+
 RC_GTEST_PROP(SignoriniCoulomb2D, FrictionDissipatesRtTimesUtIsNonPositive, ()) {
   const Matrix2d W = random_spd();
   const Vector2d q(in_range(-5.0, 5.0), in_range(-5.0, 0.0));
