@@ -49,7 +49,23 @@ struct LawTerms2D {
   double wwtt = 0, wwnn = 0;          // modified diagonal of the law (WW off-diagonal = W's)
   double cor_t = 0, cor_n = 0;        // law correction added to the reaction
   double kt = 0, kn = 0, radh_t = 0;  // cohesive zone: r_coh = (radh_t, 0) + diag(kt, kn) uu
+  // Cohesive zone: A = (I − WW K)⁻¹ and A WW, fixed within a step (cohesive_solve).
+  Matrix2d A = Matrix2d::Zero(), A_WW = Matrix2d::Zero();
 };
+
+// The cohesive zone's fixed matrices (contact-laws.md §3.5), once per contact and step: inverting
+// and multiplying them at every visit was most of BridgePL_GroundJC's sweep time (perf).
+void prepare_cohesive_terms(double wtn, LawTerms2D& l) {
+  Matrix2d WW;
+  WW << l.wwtt, wtn, wtn, l.wwnn;
+  Matrix2d M = Matrix2d::Identity();
+  M(0, 0) -= l.wwtt * l.kt;
+  M(0, 1) -= wtn * l.kn;
+  M(1, 0) -= wtn * l.kt;
+  M(1, 1) -= l.wwnn * l.kn;
+  l.A = M.inverse();
+  l.A_WW = l.A * WW;
+}
 
 inline Vector2d relative_velocity(const SweepContact2D& c, const std::vector<Vector3d>& v) {
   const Vector3d& a = v[static_cast<std::size_t>(c.cd)];
@@ -91,19 +107,10 @@ Matrix2d delassus_block(const Interaction2D& c, const std::vector<Vector3d>& inv
 // problem is uu = A (v + WW radh) + A WW rr, solved for rr; then r = rr + radh + K uu.
 void cohesive_solve(const SweepContact2D& c, const LawTerms2D& l, double vt, double vn, double& rt,
                     double& rn, ContactStatus& status) {
-  Matrix2d WW;
-  WW << l.wwtt, c.wtn, c.wtn, l.wwnn;
-  Matrix2d M = Matrix2d::Identity();
-  M(0, 0) -= l.wwtt * l.kt;
-  M(0, 1) -= c.wtn * l.kn;
-  M(1, 0) -= c.wtn * l.kt;
-  M(1, 1) -= l.wwnn * l.kn;
-  const Matrix2d A = M.inverse();
-  const Vector2d shifted = Vector2d(vt, vn) + WW * Vector2d(l.radh_t, 0.0);
-  const Vector2d uf = A * shifted;
-  const Matrix2d Wp = A * WW;
-  const LocalSolution2D s = solve_signorini_coulomb_2d(Wp, uf, c.mu);
-  const Vector2d uu = uf + Wp * s.r;
+  const Vector2d shifted(vt + l.wwtt * l.radh_t, vn + c.wtn * l.radh_t);  // v + WW (radh_t, 0)
+  const Vector2d uf = l.A * shifted;
+  const LocalSolution2D s = solve_signorini_coulomb_2d(l.A_WW, uf, c.mu);
+  const Vector2d uu = uf + l.A_WW * s.r;
   rt = s.r(0) + l.radh_t + l.kt * uu(0);
   rn = s.r(1) + l.kn * uu(1);
   status = cohesive_status(s.status);
@@ -198,6 +205,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     l.radh_t = c.cohesive_shift_t;
     const bool plain = !l.glued && !l.wet && !l.cohesive && l.wwtt == k.wtt && l.wwnn == k.wnn &&
                        l.cor_t == 0.0 && l.cor_n == 0.0;
+    if (l.cohesive) prepare_cohesive_terms(k.wtn, l);
     if (!plain) {
       k.law_terms = static_cast<std::int32_t>(terms.size());
       terms.push_back(l);
