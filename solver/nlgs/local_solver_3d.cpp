@@ -171,7 +171,7 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
 
 LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen::Matrix3d* W_inverse_given,
                                            const Eigen::Vector3d& q, double mu,
-                                           const Eigen::Vector3d& r_start, double tolerance) {
+                                           const Eigen::Vector3d& r_start, double tolerance, double forcing) {
   LocalSolution3D s;
   // A caller's inverse is all NaN when W is singular or not finite (then W is checked here); the
   // caller computed it once per step, so W needs no check per call.
@@ -253,12 +253,15 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
     r = Eigen::Vector3d(-q(0) * rho_n, 0.0, 0.0);
     evaluate(r, best_residual, best_bound);
   }
+  // Inexact solve: also done once the residual is `forcing` times the start's (0: off).
+  const double forced = forcing * best_residual;
+  const auto done = [&](double residual, double bound) { return residual <= std::max(bound, forced); };
   Eigen::Vector3d best = r;
   Eigen::Matrix3d J;
   Eigen::Vector3d phi = map.value(r, &J);
   double merit = phi.squaredNorm();
   int iteration = 0;
-  for (; iteration < kMaxNewtonIterations && best_residual > best_bound; ++iteration) {
+  for (; iteration < kMaxNewtonIterations && !done(best_residual, best_bound); ++iteration) {
     // Newton step by cofactors (J is 3×3); a singular J falls back to the steepest descent.
     const Eigen::Vector3d c0 = J.row(1).cross(J.row(2)).transpose();
     const double det = J.row(0).dot(c0.transpose());
@@ -299,7 +302,7 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
     }
   }
   s.newton_iterations = iteration;
-  if (best_residual > best_bound) {
+  if (!done(best_residual, best_bound)) {
     // Near a direction where W_nn + mu W_nT d vanishes r_n is huge and the damped Newton does not
     // get there: enumerate the sliding directions instead.
     Eigen::Vector3d enumerated;
@@ -311,10 +314,10 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
   }
 
   // Fallback: the projected fixed point r <- P_K(r - rho (u + mu |u_T| e_n)), keeping the best iterate.
-  if (best_residual > attainable(best)) {
+  if (!done(best_residual, attainable(best))) {
     const double rho = 1.0 / std::max(W.norm(), 1e-300);
     r = best;
-    for (int k = 0; k < kMaxFixedPointIterations && best_residual > attainable(best); ++k) {
+    for (int k = 0; k < kMaxFixedPointIterations && !done(best_residual, attainable(best)); ++k) {
       const Eigen::Vector3d u = W * r + q;
       Eigen::Vector3d x = r - rho * u;
       x(0) -= rho * mu * u.tail<2>().norm();
@@ -332,7 +335,7 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
   s.r = best;
   s.residual = best_residual;
   s.state = classify(best, mu);
-  s.failed = !(best_residual <= attainable(best));
+  s.failed = !done(best_residual, attainable(best));
   return s;
 }
 

@@ -30,10 +30,13 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
                                            const Eigen::Vector3d& r_start, double tolerance);
 
 // The same, with W⁻¹ computed by the caller (NaN entries when W is singular): the scene NLGS
-// inverts each block once per step instead of once per sweep.
+// inverts each block once per step instead of once per sweep. With `forcing` > 0 the iterative
+// cases also stop once the residual is below `forcing` times the residual of their start (the
+// previous reaction): an inexact solve, for sweeps far from convergence.
 LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen::Matrix3d* W_inverse,
                                            const Eigen::Vector3d& q, double mu,
-                                           const Eigen::Vector3d& r_start, double tolerance);
+                                           const Eigen::Vector3d& r_start, double tolerance,
+                                           double forcing = 0.0);
 
 // LMGC90's (t, n, s) order <-> the solver's normal-first (n, t, s): swapping the first two entries
 // (rows and columns of a block) is its own inverse.

@@ -157,6 +157,32 @@ RC_GTEST_PROP(SignoriniCoulomb3D, UncoupledIsotropicBlockSlidesInClosedFormWithi
   RC_ASSERT(s.newton_iterations == 0);
 }
 
+// An inexact solve (forcing > 0, as the scene NLGS asks) stops within forcing times its start's
+// residual, or the tolerance; it is never flagged as failed for stopping there, and the exact solve
+// of the same data still meets the tolerance.
+RC_GTEST_PROP(SignoriniCoulomb3D, InexactSolveEndsWithinForcingTimesTheStartResidual, ()) {
+  const Matrix3d W = random_spd();
+  const Vector3d q = random_q();
+  const double mu = in_range(0.0, 2.0);
+  const Vector3d start(in_range(0.01, 2.0), in_range(-1.0, 1.0), in_range(-1.0, 1.0));
+  const Vector3d r_start = project_on_coulomb_cone(start, mu);
+  RC_PRE(r_start(0) > 0.0);  // the solver's start (a zero one is replaced)
+  const double forcing = *rc::gen::element(1e-1, 1e-2, 1e-4);
+  const Matrix3d W_inverse = W.inverse();
+  const double tolerance = solver_tolerance(q);
+  RC_LOG() << describe(W, q, mu) << "\n";
+  const LocalSolution3D inexact =
+      solve_signorini_coulomb_3d(W, &W_inverse, q, mu, r_start, tolerance, forcing);
+  const LocalSolution3D exact = solve_signorini_coulomb_3d(W, &W_inverse, q, mu, r_start, tolerance);
+  const double start_residual = natural_map_3d(r_start, W * r_start + q, mu).norm();
+  const double residual = natural_map_3d(inexact.r, W * inexact.r + q, mu).norm();
+  RC_ASSERT(!inexact.failed);
+  RC_ASSERT(residual <= std::max(1e-9 * (1.0 + q.norm()), forcing * start_residual * (1.0 + 1e-9)));
+  RC_ASSERT(in_cone(inexact.r, mu));
+  RC_ASSERT(inexact.newton_iterations <= exact.newton_iterations);
+  RC_ASSERT(natural_map_3d(exact.r, W * exact.r + q, mu).norm() <= 1e-9 * (1.0 + q.norm()));
+}
+
 // A block whose W_nn is positive but so small that -q_n / W_nn overflows makes the closed-form
 // slide non-finite (inf × 0 = NaN in r_T): that candidate is not an answer, and whatever comes back
 // is either finite or flagged as failed.
