@@ -492,9 +492,11 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
 }
 
 namespace {
+// The pair (its family first, as detection sorts interactions: the verlet list of a step is then
+// stored without sorting); the PRPLx vertex and the PRPRx point are matched within the pair.
 template <class Interaction>
 auto recup_key(const Interaction& c) {
-  return std::tuple(c.candidate, c.antagonist, c.vertex);
+  return std::tuple(c.family, c.candidate, c.antagonist);
 }
 }  // namespace
 
@@ -512,7 +514,7 @@ void store_interactions(RunState3D& state, const std::vector<Interaction3D>& int
 void recup_rloc(RunState3D& state) {
   // Key: the contactor pair and, for PRPLx, the candidate vertex; PRPRx points of a pair are then
   // told apart by position (numerics.md §4, recup_rloc_PRPRx / recup_rloc_PRPLx). `previous` is
-  // sorted by key (store_interactions).
+  // sorted by pair (store_interactions); the first entry of the pair that matches is taken.
   const std::vector<StoredInteraction3D>& previous = state.previous;
   for (Interaction3D& c : state.contacts) {
     const StoredInteraction3D* match = nullptr;
@@ -520,8 +522,9 @@ void recup_rloc(RunState3D& state) {
     auto it = std::lower_bound(previous.begin(), previous.end(), wanted,
                                [&](const StoredInteraction3D& p, const auto& k) { return recup_key(p) < k; });
     for (; it != previous.end() && recup_key(*it) == wanted && !match; ++it)
-      if (c.family != PairFamily3D::PRPRx ||
-          (it->candidate_point - c.candidate_point).squaredNorm() < kRecupSquaredDistance)
+      if (it->vertex == c.vertex &&
+          (c.family != PairFamily3D::PRPRx ||
+           (it->candidate_point - c.candidate_point).squaredNorm() < kRecupSquaredDistance))
         match = &*it;
     if (!match) {
       c.r.setZero();

@@ -32,8 +32,8 @@ void compute_free_velocity(Scene3D& scene, const RunState3D& state);
 // from the begin frame by (1-θ) ω_begin.
 void select_prox_tactors(Scene3D& scene, RunState3D& state);
 void recup_rloc(RunState3D& state);
-// The verlet list the next recup_rloc reads: `interactions` stored by its key (candidate, antagonist,
-// vertex), equal keys in their order.
+// The verlet list the next recup_rloc reads: `interactions` stored by pair (family, candidate,
+// antagonist), equal pairs in their order (a step's interactions are already in that order).
 void store_interactions(RunState3D& state, const std::vector<Interaction3D>& interactions);
 // NLGS in LMGC90's Exchange_Local_Global form: every local solve sees the bodies' current velocities
 // and injects its impulse increment at once (numerics.md §3).
