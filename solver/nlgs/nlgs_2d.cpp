@@ -235,11 +235,31 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   const double relax = options.relax, keep = 1.0 - options.relax;
   const bool relaxed = relax != 1.0;  // RELAX 1 (every example): the blend is skipped, not multiplied out
 
-  // One Gauss–Seidel pass; the post pass never skips and is not counted as an iteration.
+  // A scrambled order is swept through copies of the two arrays laid out in that order (gathered
+  // before each block, reactions scattered back after it): the sweep then reads memory in sequence
+  // instead of at random (1024DK_BoxJC, quick scramble, 930 steps: 0.0330 -> 0.0272 s/step).
+  std::vector<SweepContact2D> hot_in_order;
+  std::vector<ContactReaction2D> reaction_in_order;
+  auto gather = [&] {
+    hot_in_order.resize(count);
+    reaction_in_order.resize(count);
+    for (std::size_t p = 0; p < count; ++p) {
+      hot_in_order[p] = hot[order[p]];
+      reaction_in_order[p] = reaction[order[p]];
+    }
+  };
+  auto scatter = [&] {
+    for (std::size_t p = 0; p < count; ++p) reaction[order[p]] = reaction_in_order[p];
+  };
+
+  // One Gauss–Seidel pass in sweep order; the post pass never skips and is not counted as an iteration.
   auto sweep = [&](bool post) {
-    for (std::uint32_t index : order) {
-      const SweepContact2D& c = hot[index];
-      ContactReaction2D& s = reaction[index];
+    const bool scrambled = options.quick_scramble;
+    const SweepContact2D* sweep_hot = scrambled ? hot_in_order.data() : hot.data();
+    ContactReaction2D* sweep_reaction = scrambled ? reaction_in_order.data() : reaction.data();
+    for (std::size_t index = 0; index < count; ++index) {
+      const SweepContact2D& c = sweep_hot[index];
+      ContactReaction2D& s = sweep_reaction[index];
       if (c.inactive) {
         if (s.rt != 0.0 || s.rn != 0.0) {
           inject(c, -s.rt, -s.rn, inverse_mass, v);
@@ -356,8 +376,12 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   if (count > 0) {
     for (int block = 0; block < options.gs_it2; ++block) {
       const auto sweeps_start = std::chrono::steady_clock::now();
-      if (options.quick_scramble) scramble.scramble(order);
+      if (options.quick_scramble) {
+        scramble.scramble(order);
+        gather();
+      }
       for (int i = 0; i < options.gs_it1; ++i) sweep(false);
+      if (options.quick_scramble) scatter();
       result.sweep_seconds +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() - sweeps_start).count();
       result.converged = check();
@@ -373,7 +397,11 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   for (std::size_t a = 0; a < count; ++a)
     if (reaction[a].rt != 0.0 || reaction[a].rn != 0.0)
       inject(hot[a], reaction[a].rt, reaction[a].rn, inverse_mass, v);
-  if (count > 0) sweep(true);
+  if (count > 0) {
+    if (options.quick_scramble) gather();
+    sweep(true);
+    if (options.quick_scramble) scatter();
+  }
   // The achieved error is the one of the reactions actually returned (after the post sweep).
   double residual2 = 0.0;
   result.active = 0;
