@@ -229,29 +229,15 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     return l;
   };
 
-  // Sweep order. With the quick scramble: LMGC90's, scrambled from the detection order. Without
-  // it: the detection order interleaved with stride 16 (contacts 0, 16, 32, ..., then 1, 17, ...),
-  // so that consecutive updates seldom share a body and the processor overlaps them; in detection
-  // order each update waited on the previous one's velocities (contacts are sorted by candidate).
-  // Measured on LMGC90's RIGID_2D examples against the detection order, same day: sweep rate
-  // +7% to +30% (siloDK_hoperJC 8.2e7 -> 9.3e7, 500PL_PerioBoxJC 1.06e8 -> 1.55e8), and as many
-  // sweeps or fewer (siloDK_hoperJC 1371 -> 1265 per step).
   std::vector<std::uint32_t> order(count);
-  if (options.quick_scramble) {
-    std::iota(order.begin(), order.end(), 0u);
-    scramble.prepare(count);
-  } else {
-    constexpr std::size_t stride = 16;
-    std::size_t position = 0;
-    for (std::size_t first = 0; first < stride; ++first)
-      for (std::size_t k = first; k < count; k += stride) order[position++] = static_cast<std::uint32_t>(k);
-  }
+  std::iota(order.begin(), order.end(), 0u);
+  if (options.quick_scramble) scramble.prepare(count);
   const double relax = options.relax, keep = 1.0 - options.relax;
   const bool relaxed = relax != 1.0;  // RELAX 1 (every example): the blend is skipped, not multiplied out
 
-  // The sweeps run over copies of the two arrays laid out in sweep order (gathered before each
-  // block, reactions scattered back after it): they then read memory in sequence. A scrambled order
-  // read at random was slower (1024DK_BoxJC, quick scramble, 930 steps: 0.0330 -> 0.0272 s/step).
+  // A scrambled order is swept through copies of the two arrays laid out in that order (gathered
+  // before each block, reactions scattered back after it): the sweep then reads memory in sequence
+  // instead of at random (1024DK_BoxJC, quick scramble, 930 steps: 0.0330 -> 0.0272 s/step).
   std::vector<SweepContact2D> hot_in_order;
   std::vector<ContactReaction2D> reaction_in_order;
   auto gather = [&] {
@@ -268,9 +254,12 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
 
   // One Gauss–Seidel pass in sweep order; the post pass never skips and is not counted as an iteration.
   auto sweep = [&](bool post) {
+    const bool scrambled = options.quick_scramble;
+    const SweepContact2D* sweep_hot = scrambled ? hot_in_order.data() : hot.data();
+    ContactReaction2D* sweep_reaction = scrambled ? reaction_in_order.data() : reaction.data();
     for (std::size_t index = 0; index < count; ++index) {
-      const SweepContact2D& c = hot_in_order[index];
-      ContactReaction2D& s = reaction_in_order[index];
+      const SweepContact2D& c = sweep_hot[index];
+      ContactReaction2D& s = sweep_reaction[index];
       if (c.inactive) {
         if (s.rt != 0.0 || s.rn != 0.0) {
           inject(c, -s.rt, -s.rn, inverse_mass, v);
@@ -387,10 +376,12 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   if (count > 0) {
     for (int block = 0; block < options.gs_it2; ++block) {
       const auto sweeps_start = std::chrono::steady_clock::now();
-      if (options.quick_scramble) scramble.scramble(order);
-      gather();
+      if (options.quick_scramble) {
+        scramble.scramble(order);
+        gather();
+      }
       for (int i = 0; i < options.gs_it1; ++i) sweep(false);
-      scatter();
+      if (options.quick_scramble) scatter();
       result.sweep_seconds +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() - sweeps_start).count();
       result.converged = check();
@@ -407,9 +398,9 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     if (reaction[a].rt != 0.0 || reaction[a].rn != 0.0)
       inject(hot[a], reaction[a].rt, reaction[a].rn, inverse_mass, v);
   if (count > 0) {
-    gather();
+    if (options.quick_scramble) gather();
     sweep(true);
-    scatter();
+    if (options.quick_scramble) scatter();
   }
   // The achieved error is the one of the reactions actually returned (after the post sweep).
   double residual2 = 0.0;
