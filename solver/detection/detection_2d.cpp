@@ -158,6 +158,7 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
     const double band = 2.0 * widest + index.max_alert;
     std::vector<std::size_t> left, right;
     for (std::size_t k = 0; k < n; ++k) {
+      if (!in_grid[k]) continue;  // invisible bodies have no pairs, periodic ones included
       const ContactorShape2D shape = scene.contactors[k].shape;
       if (shape != ContactorShape2D::disk && shape != ContactorShape2D::polygon) continue;
       if (centre[k].x() < band) left.push_back(k);
@@ -165,7 +166,7 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
     }
     for (std::size_t a : right)
       for (std::size_t b : left) {
-        if (a == b || scene.contactors[a].body == scene.contactors[b].body) continue;
+        if (a == b || body_of[a] == body_of[b]) continue;
         const std::int32_t ca = index.contactor_class[a], cb = index.contactor_class[b];
         if (index.row[static_cast<std::size_t>(ca * index.class_count + cb)] < 0 &&
             index.row[static_cast<std::size_t>(cb * index.class_count + ca)] < 0)

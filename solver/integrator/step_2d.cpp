@@ -140,9 +140,13 @@ NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& 
   return result;
 }
 
-void stock_rloc(RunState2D& state) {
+void store_interactions(RunState2D& state, const std::vector<Interaction2D>& interactions) {
   state.previous.clear();  // keeps its buffer
-  for (const Interaction2D& c : state.contacts) state.previous.emplace_back(c);
+  for (const Interaction2D& c : interactions) state.previous.emplace_back(c);
+}
+
+void stock_rloc(RunState2D& state) {
+  store_interactions(state, state.contacts);
 }
 
 void compute_dof(Scene2D& scene, const RunState2D& state) {

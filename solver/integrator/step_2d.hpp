@@ -32,6 +32,9 @@ void select_prox_tactors(Scene2D& scene, RunState2D& state);
 void recup_rloc(RunState2D& state);
 NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& options);
 void stock_rloc(RunState2D& state);
+// The verlet list the next recup_rloc reads (stock_rloc's, or a warm start's from Vloc_Rloc.INI):
+// sorted like detection's interactions, by (family, candidate, antagonist, vertex).
+void store_interactions(RunState2D& state, const std::vector<Interaction2D>& interactions);
 // X = X_begin + h((1-θ) V_begin + θ V).
 void compute_dof(Scene2D& scene, const RunState2D& state);
 // Bodies out of the scene's bounds become invisible (frozen at the bound, zero velocity).

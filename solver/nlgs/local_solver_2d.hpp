@@ -4,6 +4,7 @@
 //   u = W r + q,  u_n >= 0, r_n >= 0, u_n r_n = 0,  |r_t| <= mu r_n, Coulomb on (u_t, r_t)
 // Vectors are ordered (t, n) as in LMGC90.
 #include <Eigen/Core>
+#include <cmath>
 
 #include "solver/model/contact_status.hpp"
 
@@ -73,8 +74,13 @@ struct SignoriniCoulombReciprocals2D {
 inline SignoriniCoulombReciprocals2D signorini_coulomb_reciprocals_2d(double wtt, double wtn, double wnn,
                                                                       double mu) {
   const double det = wtt * wnn - wtn * wtn, forward = wnn - mu * wtn, backward = wnn + mu * wtn;
-  return {det != 0.0 ? 1.0 / det : 0.0, forward > 1e-18 ? 1.0 / forward : 0.0,
-          backward > 1e-18 ? 1.0 / backward : 0.0};
+  // A reciprocal that overflows (a subnormal determinant) is not taken either.
+  const auto reciprocal = [](double x, bool taken) {
+    const double inverse = taken ? 1.0 / x : 0.0;
+    return std::isfinite(inverse) ? inverse : 0.0;
+  };
+  return {reciprocal(det, det != 0.0), reciprocal(forward, forward > 1e-18),
+          reciprocal(backward, backward > 1e-18)};
 }
 
 // The enumeration above with the reciprocals `inverse` of (wtt, wtn, wnn, mu): the same case, and

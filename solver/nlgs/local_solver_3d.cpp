@@ -254,7 +254,7 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
     evaluate(r, best_residual, best_bound);
   }
   // Inexact solve: also done once the residual is `forcing` times the start's (0: off).
-  const double forced = forcing * best_residual;
+  const double forced = std::isfinite(best_residual) ? forcing * best_residual : 0.0;
   const auto done = [&](double residual, double bound) { return residual <= std::max(bound, forced); };
   Eigen::Vector3d best = r;
   Eigen::Matrix3d J;

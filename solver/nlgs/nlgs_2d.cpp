@@ -2,9 +2,9 @@
 // The sweeps read a compact array of contacts (bodies, local frame, levers, Delassus block, free
 // velocity shift, μ, the block's reciprocals: 136 bytes) and write a separate one of reactions (32 bytes).
 // Laws that modify the block or add a correction (cohesive, wet, glued, elastic...) keep those terms in a
-// third array that only they read. On a 64k-disk box the sweeps stream these arrays from L3: one 180-byte
-// record read and written back per update was twice the traffic. The full Interaction2D records
-// are read before and written after.
+// third array that only they read. On a 64k-disk box the sweeps stream these arrays from L3: one
+// 192-byte record read and written back per update was nearly twice the traffic. The full
+// Interaction2D records are read before and written after.
 #include "solver/nlgs/nlgs_2d.hpp"
 
 #include <Eigen/LU>
@@ -54,7 +54,7 @@ struct LawTerms2D {
 };
 
 // The cohesive zone's fixed matrices (contact-laws.md §3.5), once per contact and step: inverting
-// and multiplying them at every visit was most of BridgePL_GroundJC's sweep time (perf).
+// and multiplying them at every visit took BridgePL_GroundJC's sweeps 0.226 s instead of 0.186 s.
 void prepare_cohesive_terms(double wtn, LawTerms2D& l) {
   Matrix2d WW;
   WW << l.wwtt, wtn, wtn, l.wwnn;
@@ -220,13 +220,9 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     if (reaction[a].rt != 0.0 || reaction[a].rn != 0.0)
       inject(hot[a], reaction[a].rt, reaction[a].rn, inverse_mass, v);
   result.free_velocity_norm = std::sqrt(q2);
-  // A plain contact's law terms: WW = W, no correction.
-  auto law_terms_of = [&](const SweepContact2D& c) {
-    if (c.law_terms >= 0) return terms[static_cast<std::size_t>(c.law_terms)];
-    LawTerms2D l;
-    l.wwtt = c.wtt;
-    l.wwnn = c.wnn;
-    return l;
+  const LawTerms2D plain_terms;  // WW = W, no correction (wwtt, wwnn unused: W's are read)
+  auto law_terms_of = [&](const SweepContact2D& c) -> const LawTerms2D& {
+    return c.law_terms >= 0 ? terms[static_cast<std::size_t>(c.law_terms)] : plain_terms;
   };
 
   std::vector<std::uint32_t> order(count);
@@ -294,17 +290,18 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   // Natural-map residual of one contact at the current state (law in auxiliary variables).
   auto residual2_of = [&](const SweepContact2D& c, const ContactReaction2D& s, double uft, double ufn) {
     if (c.inactive) return s.rt * s.rt + s.rn * s.rn;
-    const LawTerms2D l = law_terms_of(c);
+    const LawTerms2D& l = law_terms_of(c);
+    const double wwtt = c.law_terms >= 0 ? l.wwtt : c.wtt, wwnn = c.law_terms >= 0 ? l.wwnn : c.wnn;
     if (l.cohesive) {
       // Natural map of the auxiliary problem: uu = v + WW r, rr = r − radh − K uu.
-      const double ut = uft + c.cov_t + l.wwtt * s.rt + c.wtn * s.rn;
-      const double un = ufn + c.cov_n + c.wtn * s.rt + l.wwnn * s.rn;
+      const double ut = uft + c.cov_t + wwtt * s.rt + c.wtn * s.rn;
+      const double un = ufn + c.cov_n + c.wtn * s.rt + wwnn * s.rn;
       const double rrt = s.rt - l.radh_t - l.kt * ut, rrn = s.rn - l.kn * un;
       return natural_map_residual_squared_2d(Vector2d(rrt, rrn), Vector2d(ut, un), c.mu);
     }
     const double rrt = s.rt - l.cor_t, rrn = s.rn - l.cor_n;
-    const double ut = uft + c.cov_t + l.wwtt * rrt + c.wtn * rrn;
-    const double un = ufn + c.cov_n + c.wtn * rrt + l.wwnn * rrn;
+    const double ut = uft + c.cov_t + wwtt * rrt + c.wtn * rrn;
+    const double un = ufn + c.cov_n + c.wtn * rrt + wwnn * rrn;
     if (l.glued) return ut * ut + un * un;
     return natural_map_residual_squared_2d(Vector2d(rrt, rrn), Vector2d(ut, un), c.mu);
   };
@@ -416,8 +413,8 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     if (s.rt != 0.0 || s.rn != 0.0) ++result.active;
     c.r = Vector2d(s.rt, s.rn);
     c.u = u;
-    const bool wet_or_cohesive = k.law_terms >= 0 && (terms[static_cast<std::size_t>(k.law_terms)].wet ||
-                                                      terms[static_cast<std::size_t>(k.law_terms)].cohesive);
+    const LawTerms2D& l = law_terms_of(k);
+    const bool wet_or_cohesive = l.wet || l.cohesive;
     c.status = (s.rt == 0.0 && s.rn == 0.0 && !wet_or_cohesive) ? ContactStatus::noctc : s.status;
     // Contact impulses of every body (Ireac = Σ H r), driven dofs included (TORQUE EVOLUTION).
     const double tx = k.ny, ty = -k.nx;
