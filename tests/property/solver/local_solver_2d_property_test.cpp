@@ -73,6 +73,22 @@ TEST(SignoriniCoulomb2D, ReciprocalsKeepTheFallbacksAndReturnNoReactionOnNaN) {
   EXPECT_EQ(rn, 0.0);
 }
 
+TEST(SignoriniCoulomb2D, ReciprocalThatOverflowsIsNotTaken) {
+  // det = 1e-320 (subnormal): 1/det overflows, so the stick case divides as the enumeration does.
+  const double wtt = 1e-160, wtn = 0.0, wnn = 1e-160, mu = 0.3;
+  const SignoriniCoulombReciprocals2D inverse = signorini_coulomb_reciprocals_2d(wtt, wtn, wnn, mu);
+  EXPECT_EQ(inverse.det, 0.0);
+  double rt, rn, rt_dividing, rn_dividing;
+  ContactStatus status, status_dividing;
+  const bool solved = solve_signorini_coulomb_2d(wtt, wtn, wnn, inverse, 0.0, -1e-170, mu, rt, rn, status);
+  EXPECT_EQ(solved, solve_signorini_coulomb_2d(wtt, wtn, wnn, 0.0, -1e-170, mu, rt_dividing, rn_dividing,
+                                               status_dividing));
+  EXPECT_EQ(status, status_dividing);
+  EXPECT_EQ(rt, rt_dividing);
+  EXPECT_EQ(rn, rn_dividing);
+  EXPECT_TRUE(std::isfinite(rn));
+}
+
 RC_GTEST_PROP(SignoriniCoulomb2D, FrictionDissipatesRtTimesUtIsNonPositive, ()) {
   const Matrix2d W = random_spd();
   const Vector2d q(in_range(-5.0, 5.0), in_range(-5.0, 0.0));
