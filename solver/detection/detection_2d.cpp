@@ -5,6 +5,7 @@
 #include <map>
 
 #include "solver/detection/pair_geometry_2d.hpp"
+#include "solver/detection/sort_interactions.hpp"
 #include "spatial/multilevel_grid.hpp"
 
 namespace lmgc::solver {
@@ -303,40 +304,10 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
       out.push_back(c);
     }
   }
-  // Sorted by (family, candidate, antagonist, vertex) through 24-byte keys: an interaction is ~380
-  // bytes, and moving those in the sort was an eighth of a 64k-disk step. Equal keys keep their
-  // detection order.
-  struct SortKey {
-    std::uint64_t high, low;
-    std::uint32_t index;
-    bool operator<(const SortKey& o) const {
-      return std::tie(high, low, index) < std::tie(o.high, o.low, o.index);
-    }
-  };
-  std::vector<SortKey> keys(out.size());
-  for (std::size_t k = 0; k < out.size(); ++k) {
-    const Interaction2D& c = out[k];
-    keys[k] = {(std::uint64_t(c.family) << 32) | std::uint32_t(c.candidate),
-               (std::uint64_t(std::uint32_t(c.antagonist)) << 32) | std::uint32_t(c.candidate_vertex),
-               static_cast<std::uint32_t>(k)};
-  }
-  if (std::is_sorted(keys.begin(), keys.end())) return;
-  std::sort(keys.begin(), keys.end());
-  // Permuted in place, cycle by cycle: `out` keeps its buffer from step to step (a new one each
-  // step took fresh pages from the system on large scenes).
-  for (std::size_t start = 0; start < keys.size(); ++start) {
-    if (keys[start].index == start) continue;
-    Interaction2D moving = std::move(out[start]);
-    std::size_t hole = start;
-    while (keys[hole].index != start) {
-      const std::size_t from = keys[hole].index;
-      out[hole] = std::move(out[from]);
-      keys[hole].index = static_cast<std::uint32_t>(hole);
-      hole = from;
-    }
-    out[hole] = std::move(moving);
-    keys[hole].index = static_cast<std::uint32_t>(hole);
-  }
+  sort_interactions(out, [](const Interaction2D& c) {
+    return std::pair{(std::uint64_t(c.family) << 32) | std::uint32_t(c.candidate),
+                     (std::uint64_t(std::uint32_t(c.antagonist)) << 32) | std::uint32_t(c.candidate_vertex)};
+  });
 }
 
 }  // namespace lmgc::solver

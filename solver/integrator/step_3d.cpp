@@ -16,6 +16,7 @@
 #include "solver/detection/pair_geometry_3d.hpp"
 #include "solver/detection/point_contact.hpp"
 #include "solver/detection/polyhedron_contact.hpp"
+#include "solver/detection/sort_interactions.hpp"
 #include "solver/nlgs/law_local_problem_3d.hpp"
 #include "solver/nlgs/local_solver_3d.hpp"
 #include "solver/nlgs/open_contact_visits.hpp"
@@ -477,40 +478,20 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
               0, 0.0, &centre[i], &centre[j]);  // centre[k]: lever point about the (wrapped) centre
     found.back().reference_gap = link.reference_length;
   }
-  // LMGC90 writes and sweeps interactions family by family, then by candidate. Sorted through
-  // 16-byte keys (an interaction is 640 bytes: a comparison reading two of them, or moving them in
-  // the sort, cost more than the fine detection on large scenes); equal pairs keep their order.
-  struct SortKey {
-    std::uint64_t pair;  // family, candidate, antagonist
-    std::uint32_t index;
-    bool operator<(const SortKey& o) const { return pair < o.pair || (pair == o.pair && index < o.index); }
-  };
-  std::vector<SortKey> keys(found.size());
-  const bool fits = scene.contactors.size() < (std::size_t{1} << 29);
-  for (std::size_t k = 0; k < found.size(); ++k) {
-    const Interaction3D& c = found[k];
-    keys[k] = {(std::uint64_t(c.family) << 58) | (std::uint64_t(std::uint32_t(c.candidate)) << 29) |
-                   std::uint64_t(std::uint32_t(c.antagonist)),
-               static_cast<std::uint32_t>(k)};
-  }
-  if (!fits) {  // 2^29 contactors or more: compare the records themselves
-    std::vector<std::uint32_t> sorted(found.size());
-    std::iota(sorted.begin(), sorted.end(), 0u);
-    std::stable_sort(sorted.begin(), sorted.end(), [&](std::uint32_t a, std::uint32_t b) {
-      const Interaction3D &x = found[a], &y = found[b];
-      return std::tie(x.family, x.candidate, x.antagonist) < std::tie(y.family, y.candidate, y.antagonist);
-    });
-    for (std::size_t k = 0; k < sorted.size(); ++k) keys[k].index = sorted[k];
-  } else if (std::is_sorted(keys.begin(), keys.end())) {
-    // Already in order: the list becomes this step's, and the old one detection's buffer.
+  // By (family, candidate, antagonist); the points of a pair stay in detection order. Gathered into
+  // this step's list (faster than permuting in place here: 64k spheres 0.42-0.45 s/step against
+  // 0.45-0.46), or swapped in when already in order, the previous list becoming detection's buffer.
+  const std::vector<std::uint32_t> order = interaction_order(found, [](const Interaction3D& c) {
+    return std::pair{(std::uint64_t(c.family) << 32) | std::uint32_t(c.candidate),
+                     std::uint64_t(std::uint32_t(c.antagonist)) << 32};
+  });
+  if (order.empty()) {
     std::swap(state.contacts, found);
     return;
-  } else {
-    std::sort(keys.begin(), keys.end());
   }
   state.contacts.clear();
   state.contacts.reserve(found.size());
-  for (const SortKey& k : keys) state.contacts.push_back(std::move(found[k.index]));
+  for (const std::uint32_t k : order) state.contacts.push_back(std::move(found[k]));
 }
 
 namespace {
