@@ -199,6 +199,48 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
     }
     return PolygonView{vertices, normals, centre[k]};
   };
+  // Rough pairs in the order the interactions are kept (family, candidate, antagonist; periodic
+  // images of one pair by shift, as before): fine detection then reads contactors in sequence and
+  // writes the list already sorted, so the sort below only checks it (a 64k-disk step permuted 48 MB of
+  // interactions at random). Roles as the fine loop takes them; a pair no row sees sorts last.
+  {
+    struct Keyed {
+      std::uint64_t high, low;
+      int shift;
+      std::uint32_t index;
+      bool operator<(const Keyed& o) const {
+        return std::tie(high, low, shift, index) < std::tie(o.high, o.low, o.shift, o.index);
+      }
+    };
+    std::vector<Keyed> keys(rough.size());
+    for (std::size_t k = 0; k < rough.size(); ++k) {
+      const std::size_t i = rough[k].i, j = rough[k].j;
+      const std::int32_t ci = index.contactor_class[i], cj = index.contactor_class[j];
+      std::size_t pair = static_cast<std::size_t>(ci * index.class_count + cj);
+      std::size_t cd = i, an = j;
+      if (index.row[pair] < 0 || index.family[pair] < 0) {
+        pair = static_cast<std::size_t>(cj * index.class_count + ci);
+        cd = j;
+        an = i;
+      }
+      const std::uint64_t family =
+          index.row[pair] < 0 || index.family[pair] < 0 ? 0xffffffffu : std::uint32_t(index.family[pair]);
+      keys[k] = {(family << 32) | std::uint32_t(cd), std::uint64_t(an), rough[k].shift, std::uint32_t(k)};
+    }
+    if (!std::is_sorted(keys.begin(), keys.end())) {
+      std::sort(keys.begin(), keys.end());
+      std::vector<RoughPair> sorted(rough.size());
+      for (std::size_t k = 0; k < keys.size(); ++k) sorted[k] = rough[keys[k].index];
+      rough.swap(sorted);
+    }
+  }
+
+  const auto key_of = [](const Interaction2D& c) {
+    return std::pair{(std::uint64_t(c.family) << 32) | std::uint32_t(c.candidate),
+                     (std::uint64_t(std::uint32_t(c.antagonist)) << 32) | std::uint32_t(c.candidate_vertex)};
+  };
+  bool in_order = true;
+  const std::vector<Vector3d>& velocity_begin = scene.bodies.velocity_begin;
   for (const RoughPair& rp : rough) {
     const std::size_t i = rp.i, j = rp.j;
     if (rp.shift != 0) {
@@ -273,7 +315,7 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
       const std::size_t ccd = f.swapped ? an : cd, can = f.swapped ? cd : an;
       const Contactor2D& Ccd = scene.contactors[ccd];
       const Contactor2D& Can = scene.contactors[can];
-      Interaction2D c;
+      Interaction2D& c = out.emplace_back();
       c.family = family;
       c.candidate = static_cast<std::int32_t>(ccd);
       c.antagonist = static_cast<std::int32_t>(can);
@@ -301,13 +343,20 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
       const Vector2d lever_an = f.antagonist_lever + offset_an;
       c.lever_candidate = Vector2d(cross_2d(lever_cd, c.tangent), cross_2d(lever_cd, c.normal));
       c.lever_antagonist = Vector2d(cross_2d(lever_an, c.tangent), cross_2d(lever_an, c.normal));
-      out.push_back(c);
+      // Local relative velocity at the beginning of the step (restitution laws), while the record is
+      // at hand: a pass of its own over a large list went to memory again.
+      const Vector3d& vc = velocity_begin[static_cast<std::size_t>(c.candidate_body)];
+      const Vector3d& va = velocity_begin[static_cast<std::size_t>(c.antagonist_body)];
+      const Vector3d tc(c.tangent.x(), c.tangent.y(), c.lever_candidate(0)),
+          nc(c.normal.x(), c.normal.y(), c.lever_candidate(1));
+      const Vector3d ta(c.tangent.x(), c.tangent.y(), c.lever_antagonist(0)),
+          na(c.normal.x(), c.normal.y(), c.lever_antagonist(1));
+      c.velocity_begin = Vector2d(tc.dot(vc) - ta.dot(va), nc.dot(vc) - na.dot(va));
+      if (out.size() > 1 && in_order && key_of(c) < key_of(out[out.size() - 2])) in_order = false;
     }
   }
-  sort_interactions(out, [](const Interaction2D& c) {
-    return std::pair{(std::uint64_t(c.family) << 32) | std::uint32_t(c.candidate),
-                     (std::uint64_t(std::uint32_t(c.antagonist)) << 32) | std::uint32_t(c.candidate_vertex)};
-  });
+  // Written in order unless a pair's roles turned over in the fine test: sorted only then.
+  if (!in_order) sort_interactions(out, key_of);
 }
 
 }  // namespace lmgc::solver

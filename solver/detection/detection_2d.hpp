@@ -28,9 +28,9 @@ VisibilityIndex2D build_visibility_index(const Scene2D& scene);
 bool pair_family_of(const std::string& candidate_type, const std::string& antagonist_type,
                     PairFamily2D& family);
 
-// Detects the interactions at `coordinates` (per body: x, y, θ in the world frame). The result
-// is sorted by (family, candidate, antagonist, candidate vertex): the order of the NLGS sweep and
-// of Vloc_Rloc files.
+// Detects the interactions at `coordinates` (per body: x, y, θ in the world frame), with their
+// local relative velocity at the bodies' velocity_begin. The result is sorted by (family,
+// candidate, antagonist, candidate vertex): the order of the NLGS sweep and of Vloc_Rloc files.
 void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
                         std::span<const Eigen::Vector3d> coordinates, std::vector<Interaction2D>& out);
 

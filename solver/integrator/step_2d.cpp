@@ -64,16 +64,6 @@ void select_prox_tactors(Scene2D& scene, RunState2D& state) {
   if (scene.x_period > 0.0)
     for (auto& c : coordinates) c.x() -= scene.x_period * std::floor(c.x() / scene.x_period);
   detect_contacts_2d(scene, state.visibility, coordinates, state.contacts);
-  // Local relative velocity at the beginning of the step (used by restitution laws).
-  for (Interaction2D& c : state.contacts) {
-    const Vector3d& vc = b.velocity_begin[static_cast<std::size_t>(c.candidate_body)];
-    const Vector3d& va = b.velocity_begin[static_cast<std::size_t>(c.antagonist_body)];
-    const Vector3d tc(c.tangent.x(), c.tangent.y(), c.lever_candidate(0)),
-        nc(c.normal.x(), c.normal.y(), c.lever_candidate(1));
-    const Vector3d ta(c.tangent.x(), c.tangent.y(), c.lever_antagonist(0)),
-        na(c.normal.x(), c.normal.y(), c.lever_antagonist(1));
-    c.velocity_begin = Vector2d(tc.dot(vc) - ta.dot(va), nc.dot(vc) - na.dot(va));
-  }
 }
 
 void recup_rloc(RunState2D& state) {

@@ -41,6 +41,9 @@ struct Interaction2D {
   Eigen::Vector2d u = Eigen::Vector2d::Zero();
   ContactStatus status = ContactStatus::nknow;
   ContactStatus status_begin = ContactStatus::nknow;
+  // Cohesive zone laws: impulse r_coh = (shift_t, 0) + diag(slope) · uu, uu the auxiliary velocity.
+  // (The flag sits here, in the warm-start list's cache lines.)
+  bool cohesive = false;
   std::array<double, 6> internal{};  // law internal variables (contact-laws.md, state-and-outputs §1.4.4)
 
   // Local problem of the law (contact-laws.md §2): Delassus block, modified block, shift, μ.
@@ -49,8 +52,6 @@ struct Interaction2D {
   Eigen::Vector2d covfree = Eigen::Vector2d::Zero();
   Eigen::Vector2d correction = Eigen::Vector2d::Zero();  // corr added to the auxiliary reaction
   double mu = 0.0;
-  // Cohesive zone laws: impulse r_coh = (shift_t, 0) + diag(slope) · uu, uu the auxiliary velocity.
-  bool cohesive = false;
   Eigen::Vector2d cohesive_slope = Eigen::Vector2d::Zero();
   double cohesive_shift_t = 0.0;
   bool inactive = false;        // forecast inactive ("noact"): r = 0, skipped by the sweeps
