@@ -16,7 +16,7 @@ void time_settled_steps(benchmark::State& state, Scene& scene, Run& run, int ste
                         double updates_per_contact, Step&& step) {
   const Scene settled = scene;
   const Run settled_run = run;
-  double contacts = 0, residual = 0;
+  double contacts = 0, residual = 0, active = 0, sweep_seconds = 0;
   long steps = 0;
   const int rounds = std::max(1, 16000 / static_cast<int>(state.range(0)));
   for (auto _ : state)
@@ -29,11 +29,17 @@ void time_settled_steps(benchmark::State& state, Scene& scene, Run& run, int ste
         const auto result = step(scene, run);
         contacts += static_cast<double>(run.contacts.size());
         residual += result.residual_relative;
+        active += static_cast<double>(result.active);
+        sweep_seconds += result.sweep_seconds;
         ++steps;
       }
     }
   state.counters["contacts"] = contacts / static_cast<double>(steps);
   state.counters["residual"] = residual / static_cast<double>(steps);
+  // What a contact update costs depends on the state: an open contact is mostly passed by, and once
+  // a step has converged its updates no longer change the reactions.
+  state.counters["active_share"] = contacts > 0 ? active / contacts : 0.0;
+  state.counters["sweep_s_per_step"] = sweep_seconds / static_cast<double>(steps);
   state.counters["s_per_step"] = benchmark::Counter(
       static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.counters["contact_updates_per_s"] =

@@ -4,9 +4,11 @@
 
 namespace lmgc::bench {
 
-solver::Scene2D disk_box_2d(int disks) {
+solver::Scene2D disk_box_2d(int disks, int rows) {
   solver::SceneBuilder2D b;
-  const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(disks))));
+  // Disks per row: a square box, or `rows` rows.
+  const int side = rows > 0 ? (disks + rows - 1) / rows
+                            : static_cast<int>(std::ceil(std::sqrt(static_cast<double>(disks))));
   const double pitch = 2.002e-3;  // disks nearly touching: a square packing that carries itself
   for (int k = 0; k < disks; ++k) {
     const double r = 1e-3 * (0.995 + 0.005 * static_cast<double>((k * 7919) % 101) / 100.0);
