@@ -102,6 +102,7 @@ struct Interaction3D {
   // Cohesion impulse of the WET / Mohr laws (corln = −c h on the normal): the local problem is solved
   // for rr = r − correction·e_n ≥ 0.
   double correction = 0.0;
+  double normal_compliance = 0.0;  // rod, wire, coulomb (ELASTIC_REPELL_CLB): WWnn − Wnn
   // Geometry at the detection configuration: rows t, n, s of the local frame, global axes.
   Eigen::Matrix3d frame = Eigen::Matrix3d::Zero();
   // Rows: frameᵀ (ℓ × t), frameᵀ (ℓ × n), frameᵀ (ℓ × s) of each body (ℓ = contact point − centre),
@@ -132,7 +133,6 @@ struct Interaction3D {
   Eigen::Vector3d candidate_point = Eigen::Vector3d::Zero();
   // PTPT3: the link's length in the reference configuration (nonuc0, the rods' and wires' gapREF).
   double reference_gap = 0.0;
-  double normal_compliance = 0.0;  // rod, wire, coulomb (ELASTIC_REPELL_CLB): WWnn − Wnn
   Eigen::Vector3d cohesive_slope = Eigen::Vector3d::Zero();  // cohesive: (k_t, k_n, k_t)
   Eigen::Vector3d cohesive_shift = Eigen::Vector3d::Zero();  // cohesive: (radh_t, 0, radh_s)
 };
