@@ -13,7 +13,10 @@ namespace lmgc::solver {
 // DKDKx, DKKDx, DKJCx, DKPLx, PTPT2, PLPLx, PLJCx).
 enum class PairFamily2D : std::uint8_t { DKDKx, DKKDx, DKJCx, DKPLx, PTPT2, PLPLx, PLJCx };
 
-struct Interaction2D {
+// 64-byte aligned, 368 bytes of fields in six cache lines: the per-step passes over a large list
+// (detection, warm start, NLGS set-up, store) move whole lines, and an unaligned 416-byte record
+// straddled seven or eight.
+struct alignas(64) Interaction2D {
   PairFamily2D family = PairFamily2D::DKDKx;
   std::int32_t candidate = 0;  // contactor ids (Scene2D::contactors)
   std::int32_t antagonist = 0;
@@ -24,6 +27,7 @@ struct Interaction2D {
   std::int32_t law = 0;                 // index into Scene2D::laws
   std::int32_t visibility = 0;          // index into Scene2D::visibility
   std::int32_t periodic_shift = 0;      // antagonist shifted by this many periods in x
+  double cohesive_shift_t = 0.0;        // cohesive zone laws: r_coh's tangential shift (below)
 
   // Geometry at the detection configuration (θ-scheme "TT" configuration).
   Eigen::Vector2d normal = Eigen::Vector2d::Zero();   // from antagonist to candidate
@@ -44,23 +48,20 @@ struct Interaction2D {
   // Cohesive zone laws: impulse r_coh = (shift_t, 0) + diag(slope) · uu, uu the auxiliary velocity.
   // (The flag sits here, in the warm-start list's cache lines.)
   bool cohesive = false;
+  bool inactive = false;             // forecast inactive ("noact"): r = 0, skipped by the sweeps
   std::array<double, 6> internal{};  // law internal variables (contact-laws.md, state-and-outputs §1.4.4)
+  double mu = 0.0;                   // friction coefficient of the law's local problem
 
-  // Local problem of the law (contact-laws.md §2): Delassus block, modified block, shift, μ.
+  // Local problem of the law (contact-laws.md §2): Delassus block, modified block, shift.
   Eigen::Matrix2d W = Eigen::Matrix2d::Zero();
   Eigen::Matrix2d WW = Eigen::Matrix2d::Zero();
   Eigen::Vector2d covfree = Eigen::Vector2d::Zero();
   Eigen::Vector2d correction = Eigen::Vector2d::Zero();  // corr added to the auxiliary reaction
-  double mu = 0.0;
   Eigen::Vector2d cohesive_slope = Eigen::Vector2d::Zero();
-  double cohesive_shift_t = 0.0;
-  bool inactive = false;        // forecast inactive ("noact"): r = 0, skipped by the sweeps
-  std::int32_t skip_count = 0;  // vanishing-contact skip heuristic (numerics.md §4)
-  std::int32_t skip_threshold = 1;
 };
 
 // What the next step's warm start (recup_rloc) reads of an interaction: LMGC90's verlet list entry.
-// Kept apart from Interaction2D (~380 bytes) because the whole list is stored every step: copying
+// Kept apart from Interaction2D (384 bytes) because the whole list is stored every step: copying
 // full records was 4% of a 64k-disk step.
 struct StoredInteraction2D {
   PairFamily2D family = PairFamily2D::DKDKx;
