@@ -12,6 +12,7 @@ namespace lmgc::solver {
 // 2D interaction families, in the order LMGC90 sweeps and writes them (numerics.md §4 step 2:
 // DKDKx, DKKDx, DKJCx, DKPLx, PTPT2, PLPLx, PLJCx).
 enum class PairFamily2D : std::uint8_t { DKDKx, DKKDx, DKJCx, DKPLx, PTPT2, PLPLx, PLJCx };
+inline constexpr int kPairFamily2DCount = 7;
 
 // 64-byte aligned, 368 bytes of fields in six cache lines: the per-step passes over a large list
 // (detection, warm start, NLGS set-up, store) move whole lines, and an unaligned 416-byte record
