@@ -37,20 +37,8 @@ void BM_StepDiskLayer(benchmark::State& state) {
   step_disk_box(state, 32);
 }
 
-BENCHMARK(BM_StepDiskBox)
-    ->Arg(1000)
-    ->Arg(4000)
-    ->Arg(16000)
-    ->Arg(64000)
-    ->Unit(benchmark::kMillisecond)
-    ->Iterations(1);
-BENCHMARK(BM_StepDiskLayer)
-    ->Arg(1000)
-    ->Arg(4000)
-    ->Arg(16000)
-    ->Arg(64000)
-    ->Unit(benchmark::kMillisecond)
-    ->Iterations(1);
+BENCHMARK(BM_StepDiskBox)->Apply(bench::scaling_sizes);
+BENCHMARK(BM_StepDiskLayer)->Apply(bench::scaling_sizes);
 
 }  // namespace
 

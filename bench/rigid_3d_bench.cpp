@@ -64,13 +64,7 @@ void BM_StepSphereBox(benchmark::State& state) {
                               return solver::step_3d(timed, timed_run, options);
                             });
 }
-BENCHMARK(BM_StepSphereBox)
-    ->Arg(1000)
-    ->Arg(4000)
-    ->Arg(16000)
-    ->Arg(64000)
-    ->Unit(benchmark::kMillisecond)
-    ->Iterations(1);
+BENCHMARK(BM_StepSphereBox)->Apply(bench::scaling_sizes);
 
 }  // namespace
 

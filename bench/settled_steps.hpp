@@ -46,4 +46,9 @@ void time_settled_steps(benchmark::State& state, Scene& scene, Run& run, int ste
       benchmark::Counter(contacts * updates_per_contact, benchmark::Counter::kIsRate);
 }
 
+// The scaling benches' sizes (1k to 64k bodies), one timed iteration each.
+inline void scaling_sizes(benchmark::internal::Benchmark* b) {
+  b->Arg(1000)->Arg(4000)->Arg(16000)->Arg(64000)->Unit(benchmark::kMillisecond)->Iterations(1);
+}
+
 }  // namespace lmgc::bench

@@ -85,6 +85,27 @@ VisibilityIndex2D build_visibility_index(const Scene2D& scene) {
   return index;
 }
 
+namespace {
+
+// The roles of a pair of contactors: i is the candidate when a visibility row with a pair family
+// reads (i, j) that way, else j; `seen` false when neither way has one.
+struct PairRoles {
+  std::size_t candidate, antagonist, pair;  // pair: index into the class × class tables
+  bool seen;
+};
+
+PairRoles pair_roles(const VisibilityIndex2D& index, std::size_t i, std::size_t j) {
+  const auto read = [&](std::size_t a, std::size_t b) {
+    const auto pair =
+        static_cast<std::size_t>(index.contactor_class[a] * index.class_count + index.contactor_class[b]);
+    return PairRoles{a, b, pair, index.row[pair] >= 0 && index.family[pair] >= 0};
+  };
+  const PairRoles forward = read(i, j);
+  return forward.seen ? forward : read(j, i);
+}
+
+}  // namespace
+
 void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
                         std::span<const Vector3d> coordinates, std::vector<Interaction2D>& out) {
   out.clear();
@@ -210,18 +231,10 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
     std::vector<std::uint32_t> bucket(rough.size()), antagonist(rough.size());
     std::vector<std::uint32_t> start(family_slots * n + 1, 0);
     for (std::size_t k = 0; k < rough.size(); ++k) {
-      const std::size_t i = rough[k].i, j = rough[k].j;
-      const std::int32_t ci = index.contactor_class[i], cj = index.contactor_class[j];
-      std::size_t pair = static_cast<std::size_t>(ci * index.class_count + cj);
-      std::size_t cd = i, an = j;
-      if (index.row[pair] < 0 || index.family[pair] < 0) {
-        pair = static_cast<std::size_t>(cj * index.class_count + ci);
-        cd = j;
-        an = i;
-      }
-      const std::size_t family = index.row[pair] < 0 || index.family[pair] < 0
-                                     ? family_slots - 1
-                                     : static_cast<std::size_t>(index.family[pair]);
+      const PairRoles roles = pair_roles(index, rough[k].i, rough[k].j);
+      const std::size_t cd = roles.candidate, an = roles.antagonist;
+      const std::size_t family =
+          roles.seen ? static_cast<std::size_t>(index.family[roles.pair]) : family_slots - 1;
       bucket[k] = static_cast<std::uint32_t>(family * n + cd);
       antagonist[k] = static_cast<std::uint32_t>(an);
       ++start[bucket[k] + 1];
@@ -275,15 +288,9 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
         shift[j] = 0.0;
       }
     } restore{centre, image_shift, j};
-    const std::int32_t ci = index.contactor_class[i], cj = index.contactor_class[j];
-    std::size_t pair = static_cast<std::size_t>(ci * index.class_count + cj);
-    std::size_t cd = i, an = j;
-    if (index.row[pair] < 0 || index.family[pair] < 0) {
-      pair = static_cast<std::size_t>(cj * index.class_count + ci);
-      cd = j;
-      an = i;
-      if (index.row[pair] < 0 || index.family[pair] < 0) continue;
-    }
+    const PairRoles roles = pair_roles(index, i, j);
+    if (!roles.seen) continue;
+    const std::size_t pair = roles.pair, cd = roles.candidate, an = roles.antagonist;
     const std::int32_t v = index.row[pair];
     const auto family = static_cast<PairFamily2D>(index.family[pair]);
     const Visibility2D& see = scene.visibility[static_cast<std::size_t>(v)];
