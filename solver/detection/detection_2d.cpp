@@ -228,14 +228,15 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
   // in place: std::sort of the keys was a twentieth of a 64k-disk step.
   {
     const std::size_t family_slots = kPairFamily2DCount + 1;  // the last: pairs no row sees
-    std::vector<std::uint32_t> bucket(rough.size()), antagonist(rough.size());
+    std::vector<std::size_t> bucket(rough.size());
+    std::vector<std::uint32_t> antagonist(rough.size());
     std::vector<std::uint32_t> start(family_slots * n + 1, 0);
     for (std::size_t k = 0; k < rough.size(); ++k) {
       const PairRoles roles = pair_roles(index, rough[k].i, rough[k].j);
       const std::size_t cd = roles.candidate, an = roles.antagonist;
       const std::size_t family =
           roles.seen ? static_cast<std::size_t>(index.family[roles.pair]) : family_slots - 1;
-      bucket[k] = static_cast<std::uint32_t>(family * n + cd);
+      bucket[k] = family * n + cd;
       antagonist[k] = static_cast<std::uint32_t>(an);
       ++start[bucket[k] + 1];
     }
@@ -276,18 +277,21 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
                                    (sj == ContactorShape2D::disk || sj == ContactorShape2D::polygon);
       if (!periodic_family) continue;
     }
-    // Place j's periodic image for this pair (restored below).
-    image_shift[j] = rp.shift * scene.x_period;
-    centre[j].x() += image_shift[j];
+    // Place j's periodic image for this pair, and put j back exactly afterwards: x + P - P is not
+    // always x, and the next pairs of j would then see it moved by an ulp, pairs in another order
+    // differently.
     struct Restore {
       std::vector<Vector2d>& centre;
       std::vector<double>& shift;
       std::size_t j;
+      double x;
       ~Restore() {
-        centre[j].x() -= shift[j];
+        centre[j].x() = x;
         shift[j] = 0.0;
       }
-    } restore{centre, image_shift, j};
+    } restore{centre, image_shift, j, centre[j].x()};
+    image_shift[j] = rp.shift * scene.x_period;
+    centre[j].x() += image_shift[j];
     const PairRoles roles = pair_roles(index, i, j);
     if (!roles.seen) continue;
     const std::size_t pair = roles.pair, cd = roles.candidate, an = roles.antagonist;

@@ -13,6 +13,7 @@ namespace lmgc::solver {
 // DKDKx, DKKDx, DKJCx, DKPLx, PTPT2, PLPLx, PLJCx).
 enum class PairFamily2D : std::uint8_t { DKDKx, DKKDx, DKJCx, DKPLx, PTPT2, PLPLx, PLJCx };
 inline constexpr int kPairFamily2DCount = 7;
+static_assert(static_cast<int>(PairFamily2D::PLJCx) + 1 == kPairFamily2DCount);
 
 // 64-byte aligned, 368 bytes of fields in six cache lines: the per-step passes over a large list
 // (detection, warm start, NLGS set-up, store) move whole lines, and an unaligned 416-byte record

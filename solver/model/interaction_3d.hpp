@@ -92,7 +92,7 @@ inline bool pair_family_3d(const std::string& candidate, const std::string& anta
 enum class LocalForm3D : std::uint8_t { coulomb, rod, wire, cohesive, glued };
 
 struct Interaction3D {
-  // What an NLGS sweep reads of a contact comes first, together (six cache lines of the struct):
+  // What an NLGS sweep reads of a contact comes first, together (its first 376 bytes):
   // large granular steps are memory-bound.
   std::int32_t candidate_body = 0, antagonist_body = 0;
   bool inactive = false;
@@ -138,7 +138,7 @@ struct Interaction3D {
 };
 
 // What the next step's warm start (recup_rloc) reads of an interaction: LMGC90's verlet list entry.
-// Kept apart from Interaction3D (640 bytes) because the whole list is stored every step.
+// Kept apart from Interaction3D (632 bytes) because the whole list is stored every step.
 struct StoredInteraction3D {
   PairFamily3D family = PairFamily3D::SPSPx;
   ContactStatus status = ContactStatus::nknow;

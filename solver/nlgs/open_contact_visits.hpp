@@ -10,9 +10,9 @@ namespace lmgc::solver {
 
 struct OpenContactVisits {
   std::int32_t count = 0, threshold = 1;
-  // Called for a contact without reaction at each sweep: true when this sweep passes it by.
   // What the next skip() will answer, without counting the visit.
   bool skips_next() const { return count + 1 < threshold * (threshold + 1) / 2; }
+  // Called for a contact without reaction at each sweep: true when this sweep passes it by.
   bool skip() {
     if (++count < threshold * (threshold + 1) / 2) return true;
     ++threshold;
