@@ -102,6 +102,52 @@ RC_GTEST_PROP(Detection2D, ListIsInSweepOrderAndFindsEveryDiskPairWithinTheAlert
   RC_ASSERT(detected == expected);
 }
 
+RC_GTEST_PROP(Detection2D, PeriodicListIsInSweepOrderAndFindsDiskPairsAcrossTheSides, ()) {
+  // Disks in [0, P) x [0, P) with P far above their reach, so that a pair meets either directly or
+  // across the side x = 0 = P, not both.
+  constexpr double period = 0.1;
+  SceneBuilder2D b;
+  std::vector<std::pair<Vector2d, double>> disks;
+  std::vector<Vector3d> coordinates;
+  const int count = *rc::gen::inRange(2, 60);
+  for (int k = 0; k < count; ++k) {
+    const Vector2d centre(in_range(0.0, period * (1.0 - 1e-9)), in_range(0.0, period));
+    const double radius = in_range(0.004, 0.01);
+    b.add_disk(centre.x(), centre.y(), radius, 1000.0);
+    disks.emplace_back(centre, radius);
+    coordinates.emplace_back(centre.x(), centre.y(), 0.0);
+  }
+  b.add_law("iqsc0", IqsClb{0.3});
+  b.see("DISKx", "BLEUx", "iqsc0", "DISKx", "BLEUx", kAlert);
+  Scene2D scene = b.build();
+  scene.x_period = period;
+  const VisibilityIndex2D index = build_visibility_index(scene);
+  std::vector<Interaction2D> found;
+  detect_contacts_2d(scene, index, coordinates, found);
+  for (std::size_t k = 1; k < found.size(); ++k) RC_ASSERT(!(sweep_key(found[k]) < sweep_key(found[k - 1])));
+
+  std::multiset<std::pair<int, int>> detected, expected;
+  std::set<std::pair<int, int>> undecided;
+  for (const Interaction2D& c : found)
+    detected.insert(
+        {std::min(c.candidate_body, c.antagonist_body), std::max(c.candidate_body, c.antagonist_body)});
+  for (std::size_t i = 0; i < disks.size(); ++i)
+    for (std::size_t j = i + 1; j < disks.size(); ++j)
+      for (const double shift : {0.0, period, -period}) {
+        const Vector2d d = disks[j].first + Vector2d(shift, 0.0) - disks[i].first;
+        const double gap = d.norm() - disks[i].second - disks[j].second;
+        if (std::fabs(gap - kAlert) < 1e-12 || d.norm() < 1e-9)
+          undecided.insert({int(i), int(j)});
+        else if (gap <= kAlert)
+          expected.insert({int(i), int(j)});
+      }
+  for (const auto& pair : undecided) {
+    detected.erase(pair);
+    expected.erase(pair);
+  }
+  RC_ASSERT(detected == expected);
+}
+
 RC_GTEST_PROP(Detection2D, EachInteractionCarriesTheRelativeVelocityOfItsBodiesAtTheStartOfTheStep, ()) {
   RandomScene s = random_scene();
   const VisibilityIndex2D index = build_visibility_index(s.scene);
