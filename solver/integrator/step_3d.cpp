@@ -598,9 +598,6 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
     }
     return W_inverse[k];
   };
-  // What the local solver is handed for a separating free velocity: it returns r = 0 before any use
-  // of the inverse, and reads a NaN one as "no inverse" (then checks W).
-  const Matrix3d no_inverse = Matrix3d::Constant(std::nan(""));
   // One local solve of contact k with the others frozen; returns the new reaction. The local problem
   // is posed on rr = r − correction e_n (cohesive laws, contact-laws.md §3.2), r = rr + correction.
   const auto local_solve = [&](std::size_t k, Vector3d& q_local, double forcing) {
@@ -628,7 +625,8 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
       return with_cohesion(c, r);
     }
     q_local = local_velocity(c, V) - c.W * (c.r - correction) + c.covfree;
-    const Matrix3d* inverse = q_local(1) < 0.0 ? &inverse_of(k) : &no_inverse;
+    // A separating free velocity needs no inverse: the solver returns r = 0 before it would invert.
+    const Matrix3d* inverse = q_local(1) < 0.0 ? &inverse_of(k) : nullptr;
     const LocalSolution3D s =
         solve_signorini_coulomb_3d(swap_normal_first(law_block(c)), inverse, swap_normal_first(q_local), c.mu,
                                    swap_normal_first(rr_previous), local_tolerance, forcing);
@@ -647,6 +645,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   struct OpenContact {
     OpenContactVisits visits;
     bool no_reaction = true;
+    bool solved_next() const { return !no_reaction || !visits.skips_next(); }
   };
   std::vector<OpenContact> open(contacts.size());
   for (std::size_t k = 0; k < contacts.size(); ++k) open[k].no_reaction = contacts[k].r.isZero(0.0);
@@ -661,8 +660,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
         // and each waited for its interaction's lines to come from memory.
         if (position + kPrefetchDistance < order.size()) {
           const std::size_t ahead = order[position + kPrefetchDistance];
-          const OpenContact& next = open[ahead];
-          if (!next.no_reaction || !next.visits.skips_next()) prefetch_interaction(contacts[ahead]);
+          if (open[ahead].solved_next()) prefetch_interaction(contacts[ahead]);
         }
         const std::size_t k = order[position];
         OpenContact& o = open[k];

@@ -173,9 +173,8 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
                                            const Eigen::Vector3d& q, double mu,
                                            const Eigen::Vector3d& r_start, double tolerance, double forcing) {
   LocalSolution3D s;
-  // A caller's inverse is all NaN when W is singular or not finite, or when the caller did not compute
-  // it (a separating free velocity: r = 0 below, before any use of it); W is then checked here.
-  // Otherwise the caller computed it once per step, and W needs no check per call.
+  // A caller's inverse is all NaN when W is singular or not finite (then W is checked here); the
+  // caller computed it once per step, so W needs no check per call.
   const bool given = W_inverse_given && !std::isnan((*W_inverse_given)(0, 0));
   if (!q.allFinite() || (!given && !W.allFinite())) {
     s.failed = true;

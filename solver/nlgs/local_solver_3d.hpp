@@ -29,8 +29,8 @@ struct LocalSolution3D {
 LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen::Vector3d& q, double mu,
                                            const Eigen::Vector3d& r_start, double tolerance);
 
-// The same, with W⁻¹ computed by the caller (NaN entries when W is singular, or when the caller
-// skips it for a separating free velocity, q_n >= 0, which needs none): the scene NLGS
+// The same, with W⁻¹ computed by the caller (NaN entries when W is singular; nullptr: computed here
+// when needed, as above): the scene NLGS
 // inverts each block once per step instead of once per sweep. With `forcing` > 0 the iterative
 // cases also stop once the residual is below `forcing` times the residual of their start (the
 // previous reaction, or -q_n rho_n e_n when that is not in the cone's interior): an inexact solve,

@@ -14,9 +14,10 @@ struct OpenContactVisits {
   bool skips_next() const { return count + 1 < threshold * (threshold + 1) / 2; }
   // Called for a contact without reaction at each sweep: true when this sweep passes it by.
   bool skip() {
-    if (++count < threshold * (threshold + 1) / 2) return true;
-    ++threshold;
-    return false;
+    const bool passes = skips_next();
+    ++count;
+    if (!passes) ++threshold;
+    return passes;
   }
   void restart() {
     count = 0;
