@@ -38,6 +38,13 @@ class SourceText {
  public:
   SourceText() = default;
   SourceText(std::string path, std::string text);
+  // Lines view the text: a copy or a move points them at its own text (a short text lives inside
+  // the string object, so a moved-from buffer is not the moved-to one).
+  SourceText(const SourceText& other);
+  SourceText(SourceText&& other) noexcept;
+  SourceText& operator=(const SourceText& other);
+  SourceText& operator=(SourceText&& other) noexcept;
+  ~SourceText() = default;
 
   const std::string& path() const { return path_; }
   const std::string& text() const { return text_; }
@@ -48,6 +55,8 @@ class SourceText {
   bool has_final_newline() const { return final_newline_; }
 
  private:
+  void rebase(const char* old_text);
+
   std::string path_;
   std::string text_;
   std::vector<Line> lines_;
