@@ -5,6 +5,8 @@
 #include <string_view>
 #include <vector>
 
+#include "grammar/common/source.hpp"
+
 namespace lmgc::grammar {
 
 // The first `wanted` items of a list-directed record: separated by blanks or one comma, the
@@ -25,6 +27,32 @@ inline std::vector<std::string_view> list_items(
     items.push_back(text.substr(begin, p - begin));
   }
   return items;
+}
+
+// The items of a record with their columns, for diagnostics: separated by blanks, tabs or
+// commas, '/' ends the record, nothing past column 180 is read.
+struct Token {
+  std::string_view text;
+  int first = 0;  // 1-based columns
+  int last = 0;
+};
+
+inline std::vector<Token> list_tokens(std::string_view text) {
+  std::vector<Token> tokens;
+  const std::size_t size = text.size() < kRecordLength ? text.size() : kRecordLength;
+  std::size_t i = 0;
+  while (i < size) {
+    const char c = text[i];
+    if (c == ' ' || c == '\t' || c == ',') {
+      ++i;
+      continue;
+    }
+    if (c == '/') break;
+    const std::size_t begin = i;
+    while (i < size && text[i] != ' ' && text[i] != '\t' && text[i] != ',' && text[i] != '/') ++i;
+    tokens.push_back(Token{text.substr(begin, i - begin), static_cast<int>(begin) + 1, static_cast<int>(i)});
+  }
+  return tokens;
 }
 
 }  // namespace lmgc::grammar

@@ -8,6 +8,7 @@
 #include "grammar/common/card_reader.hpp"
 #include "grammar/common/fortran_format.hpp"
 #include "grammar/common/fortran_number.hpp"
+#include "grammar/common/list_directed.hpp"
 
 namespace lmgc::grammar {
 namespace {
@@ -332,31 +333,6 @@ class DrvDofParser {
 
   CardReader reader_;
 };
-
-// List-directed tokens of one record: separated by blanks, tabs or commas; '/' ends the record.
-struct Token {
-  std::string_view text;
-  int first = 0;  // 1-based columns
-  int last = 0;
-};
-
-std::vector<Token> list_tokens(std::string_view text) {
-  std::vector<Token> tokens;
-  const std::size_t size = std::min(text.size(), kRecordLength);
-  std::size_t i = 0;
-  while (i < size) {
-    const char c = text[i];
-    if (c == ' ' || c == '\t' || c == ',') {
-      ++i;
-      continue;
-    }
-    if (c == '/') break;
-    const std::size_t begin = i;
-    while (i < size && text[i] != ' ' && text[i] != '\t' && text[i] != ',' && text[i] != '/') ++i;
-    tokens.push_back(Token{text.substr(begin, i - begin), static_cast<int>(begin) + 1, static_cast<int>(i)});
-  }
-  return tokens;
-}
 
 }  // namespace
 
