@@ -20,6 +20,7 @@
 #include "grammar/models/parser.hpp"
 #include "grammar/models/writer.hpp"
 #include "grammar/postpro/parser.hpp"
+#include "grammar/ptpt3_network/parser.hpp"
 #include "grammar/tact_behav/parser.hpp"
 #include "grammar/tact_behav/writer.hpp"
 #include "grammar/vloc_rloc/parser.hpp"
@@ -36,7 +37,8 @@ using grammar::SourceText;
 // body carries contactors; Vloc_Rloc.INI is then still optional (no interaction at start).
 enum class Requirement { always, with_mailx, with_contactors, optional };
 
-// The DATBOX files LMGC90 reads (ChiPy ReadDatbox + the legacy COMMAND.DAT driver).
+// The DATBOX files LMGC90 reads (ChiPy ReadDatbox, the legacy COMMAND.DAT driver, and
+// PTPT3_LoadNetwork's PTPT3_NETWORK.DAT).
 struct DatboxFileKind {
   std::string_view name;
   Requirement requirement;
@@ -70,6 +72,10 @@ constexpr DatboxFileKind kDatboxFiles[] = {
      [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.postpro = grammar::parse_postpro(s, d); }},
     {"COMMAND.DAT", Requirement::optional,
      [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.command = grammar::parse_command(s, d); }},
+    {"PTPT3_NETWORK.DAT", Requirement::optional,
+     [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) {
+       c.ptpt3_network = grammar::parse_ptpt3_network(s, d);
+     }},
 };
 
 bool read_whole_file(const fs::path& path, std::string& text) {

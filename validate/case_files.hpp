@@ -18,6 +18,7 @@
 #include "grammar/gpv/ast.hpp"
 #include "grammar/models/ast.hpp"
 #include "grammar/postpro/ast.hpp"
+#include "grammar/ptpt3_network/ast.hpp"
 #include "grammar/tact_behav/ast.hpp"
 #include "grammar/vloc_rloc/ast.hpp"
 
@@ -38,6 +39,8 @@ struct CaseFiles {
   std::optional<grammar::GpvFile> gpv_ini;
   std::optional<grammar::PostproFile> postpro;
   std::optional<grammar::CommandFile> command;
+  // Read when present; a run uses it when asked (lmgc-solve --ptpt3-network, PTPT3_LoadNetwork).
+  std::optional<grammar::Ptpt3NetworkFile> ptpt3_network;
   // Evolution files named by DRV_DOF.DAT, by file name.
   std::map<std::string, grammar::EvolutionFile> evolutions;
   // DATBOX files LMGC90 does not read (legacy or pre-processor files).

@@ -24,6 +24,7 @@ void check_case(const CaseFiles& files, grammar::DiagnosticSink& sink) {
   grammar::DiagnosticSink checks(static_cast<std::size_t>(-1));
   check_references(files, checks);
   check_state_references(files, checks);
+  check_ptpt3_network(files, checks);
   check_consistency(files, checks);
   check_geometry(files, checks);
   check_materials(files, checks);

@@ -1,6 +1,7 @@
-// What the initial state files and POSTPRO.DAT name: the bodies and contactors of the
-// interactions of Vloc_Rloc.INI, the bodies and elements of GPV.INI, the bodies and nodes of
-// POSTPRO.DAT's commands. spec: datbox-inputs.md §7 (Vloc_Rloc.INI, GPV.INI), §8 (POSTPRO.DAT).
+// What the initial state files, PTPT3_NETWORK.DAT and POSTPRO.DAT name: the bodies and contactors
+// of the interactions of Vloc_Rloc.INI, the bodies and elements of GPV.INI, the points of the
+// PTPT3 network, the bodies and nodes of POSTPRO.DAT's commands. spec: datbox-inputs.md §7
+// (Vloc_Rloc.INI, GPV.INI), §8 (POSTPRO.DAT); PTPT3_NETWORK.DAT: grammar/ptpt3_network/ast.hpp.
 #include <fmt/format.h>
 
 #include <optional>
@@ -214,6 +215,53 @@ void check_state_references(const CaseFiles& files, grammar::DiagnosticSink& sin
         }
       }
     }
+  }
+}
+
+void check_ptpt3_network(const CaseFiles& files, grammar::DiagnosticSink& sink) {
+  if (!files.ptpt3_network || !files.bodies) return;
+  // The PT3Dx of the case in LMGC90's numbering: BODIES.DAT order over the RBDY3 bodies.
+  struct Point {
+    const grammar::Body* body;
+    std::size_t body_rank;
+    const grammar::Contactor* contactor;
+  };
+  std::vector<Point> points;
+  std::size_t rank = 0;
+  for (const grammar::Body& body : files.bodies->bodies) {
+    if (body.type != grammar::BodyType::rbdy3) continue;
+    ++rank;
+    for (const grammar::Contactor& c : body.contactors)
+      if (c.type.value == "PT3Dx") points.push_back({&body, rank, &c});
+  }
+  std::optional<SeeTable> see;
+  if (files.tact_behav) see.emplace(*files.tact_behav);
+  const std::string path = datbox_path(files, "PTPT3_NETWORK.DAT");
+  for (const grammar::Ptpt3Link& link : files.ptpt3_network->links) {
+    bool known = true;
+    for (const grammar::Integer* point : {&link.candidate, &link.antagonist})
+      if (point->value < 1 || point->value > static_cast<std::int64_t>(points.size())) {
+        sink.report("L2021", grammar::Location{path, point->span},
+                    fmt::format("point {} does not exist: the case has {} PT3Dx contactor{}", point->value,
+                                points.size(), points.size() == 1 ? "" : "s"));
+        known = false;
+      }
+    if (!known) continue;
+    const Point& cd = points[static_cast<std::size_t>(link.candidate.value - 1)];
+    const Point& an = points[static_cast<std::size_t>(link.antagonist.value - 1)];
+    if (cd.body == an.body) {
+      sink.report(
+          "L2022", grammar::Location{path, link.antagonist.span},
+          fmt::format("points {} and {} are both on {}: a link joins two bodies", link.candidate.value,
+                      link.antagonist.value, body_name(*cd.body, cd.body_rank)));
+      continue;
+    }
+    if (see && !see->find(see_class(*cd.body, *cd.contactor), see_class(*an.body, *an.contactor)))
+      sink.report("L2022", grammar::Location{path, link.candidate.span},
+                  fmt::format("no '$seety' row of TACT_BEHAV.DAT reads PT3Dx {} against PT3Dx {}: the link "
+                              "between points {} and {} has no law",
+                              cd.contactor->color.value, an.contactor->color.value, link.candidate.value,
+                              link.antagonist.value));
   }
 }
 

@@ -16,6 +16,8 @@ void check_references(const CaseFiles& files, grammar::DiagnosticSink& sink);
 // L2003, L2006, L2007: bodies, elements, contactors and nodes named by the state files
 // (Vloc_Rloc.INI, GPV.INI) and POSTPRO.DAT.
 void check_state_references(const CaseFiles& files, grammar::DiagnosticSink& sink);
+// L2021, L2022: the points PTPT3_NETWORK.DAT links, and the visibility row of each link.
+void check_ptpt3_network(const CaseFiles& files, grammar::DiagnosticSink& sink);
 // L2009, L2013, L2016, L2018-L2020: dimensions, element/model/law compatibility, evolution files.
 void check_consistency(const CaseFiles& files, grammar::DiagnosticSink& sink);
 // L3001, L3009-L3011: contactor sizes, polygons, polyhedra, element Jacobians.

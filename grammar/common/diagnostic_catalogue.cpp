@@ -165,6 +165,15 @@ constexpr std::array kCatalogue = {
         "(DISCRETE, JOINT_*), a mechanical model whose behaviour has no ELAS block (Young's modulus, "
         "Poisson ratio), a J2 plasticity model ('mater J2...') without a PLAS block, a THERM model "
         "without a THERM block (heat capacity, conductivity)."},
+    DiagnosticKind{"L2021", error, "unknown point in the PTPT3 network",
+                   "A link of PTPT3_NETWORK.DAT names a point (icdtac or iantac) that is not among the "
+                   "case's PT3Dx contactors, which are numbered 1, 2, ... in BODIES.DAT order over all "
+                   "RBDY3 bodies. LMGC90 reads past its array."},
+    DiagnosticKind{"L2022", error, "PTPT3 link without a visibility row",
+                   "A link of PTPT3_NETWORK.DAT joins two PT3Dx whose colours no '$seety' row "
+                   "'RBDY3 PT3Dx <candidate colour> ... RBDY3 PT3Dx <antagonist colour>' reads: the link "
+                   "has no law (LMGC90's get_isee returns 0 and the run fails later), or joins two points "
+                   "of the same body."},
     DiagnosticKind{
         "L3001", error, "non-positive size",
         "A radius, half length, half thickness or height of a contactor is zero or negative, or an "
