@@ -81,6 +81,12 @@ int main(int argc, char** argv) {
   app.add_option("--xmax-boundary", options.x_max, "... right of this");
   app.add_option("--xperiod", options.x_period, "periodic in x with this period (SetPeriodicCondition)");
   app.add_option("--yperiod", options.y_period, "3D: periodic in y with this period (SetPeriodicCondition)");
+  app.add_flag("--ptpt3-network", options.ptpt3_network,
+               "3D: link PT3Dx points as DATBOX/PTPT3_NETWORK.DAT lists instead of by distance "
+               "(PTPT3_LoadNetwork)");
+  app.add_flag("--ptpt3-current-nonuc0", options.ptpt3_current_nonuc0,
+               "3D: PTPT3 reference lengths from the network file's nonuc0, or for detected links from "
+               "the positions at the start (PTPT3_UseCurrentNonuc0(1))");
   std::vector<double> source_point;
   app.add_option("--source-point", source_point,
                  "3D: FIRST RADIUS X Y Z: bodies after FIRST enter one by one at (X, Y, Z), each when the "
@@ -167,10 +173,10 @@ int main(int argc, char** argv) {
       options.source_radius = from_file.source_radius;
       for (int d = 0; d < 3; ++d) options.source_point[d] = from_file.source_point[d];
     }
-    if (!three_d && (options.y_period > 0.0 || options.source_first > 0)) {
-      std::cerr
-          << "lmgc-solve: --yperiod and --source-point (YPERIODIC CONDITION, INIT SOURCE POINT) apply to "
-             "RBDY3 cases only\n";
+    if (!three_d && (options.y_period > 0.0 || options.source_first > 0 || options.ptpt3_network ||
+                     options.ptpt3_current_nonuc0)) {
+      std::cerr << "lmgc-solve: --yperiod, --source-point (YPERIODIC CONDITION, INIT SOURCE POINT) and the "
+                   "--ptpt3 options apply to RBDY3 cases only\n";
       return kExitUsage;
     }
   }

@@ -1,25 +1,59 @@
 #include "solver/detection/point_contact.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <map>
+#include <utility>
 
 namespace lmgc::solver {
 
 using Eigen::Vector3d;
 
-std::vector<PointLink3D> link_points_3d(const Scene3D& scene) {
-  std::vector<PointLink3D> links;
+namespace {
+
+// Where contactor k is for reference lengths: the reference configuration, or the current one.
+Vector3d link_position(const Scene3D& scene, std::size_t k, LinkLength length) {
+  const Contactor3D& c = scene.contactors[k];
   const RigidBodies3D& b = scene.bodies;
+  const auto body = static_cast<std::size_t>(c.body);
+  if (length == LinkLength::current)
+    return b.reference[body] + b.displacement_begin[body].head<3>() + b.frame[body] * c.shift;
+  return b.reference[body] + b.frame_initial[body] * c.shift;
+}
+
+Vector3d period_shift(const Scene3D& scene, const std::array<std::int32_t, 2>& periods) {
+  return Vector3d(periods[0] * scene.x_period, periods[1] * scene.y_period, 0.0);
+}
+
+// pair_rank: the links of one pair numbered 0, 1, ... in list order.
+void rank_pairs(std::vector<PointLink3D>& links) {
+  std::map<std::pair<std::int32_t, std::int32_t>, std::int32_t> seen;
+  for (PointLink3D& link : links) link.pair_rank = seen[{link.candidate, link.antagonist}]++;
+}
+
+}  // namespace
+
+std::vector<PointLink3D> link_points_3d(const Scene3D& scene, LinkLength length) {
+  std::vector<PointLink3D> links;
   std::vector<std::size_t> points;
   for (std::size_t k = 0; k < scene.contactors.size(); ++k)
     if (scene.contactors[k].shape == ContactorShape3D::point) points.push_back(k);
-  const auto reference = [&](const Contactor3D& c) {
-    const auto body = static_cast<std::size_t>(c.body);
-    return Vector3d(b.reference[body] + b.frame_initial[body] * c.shift);
+  // The images tried besides the direct pair: those within one period of the candidate along each
+  // periodic axis, counted in the periodic cell (points wrapped into it) and kept as the shift
+  // between the points where they are, so that points outside the cell link as inside.
+  const int x_reach = scene.x_period > 0.0 ? 1 : 0, y_reach = scene.y_period > 0.0 ? 1 : 0;
+  const auto cell = [&](const Vector3d& x) {
+    return std::array<std::int32_t, 2>{
+        scene.x_period > 0.0 ? static_cast<std::int32_t>(std::floor(x.x() / scene.x_period)) : 0,
+        scene.y_period > 0.0 ? static_cast<std::int32_t>(std::floor(x.y() / scene.y_period)) : 0};
   };
+  std::vector<std::array<std::int32_t, 2>> tried;
   for (std::size_t p = 0; p < points.size(); ++p) {
     const Contactor3D& cd = scene.contactors[points[p]];
+    const Vector3d cd_at = link_position(scene, points[p], length);
+    const std::array<std::int32_t, 2> cd_cell = cell(cd_at);
     for (std::size_t q = p + 1; q < points.size(); ++q) {
       const Contactor3D& an = scene.contactors[points[q]];
       if (cd.body == an.body) continue;
@@ -28,15 +62,81 @@ std::vector<PointLink3D> link_points_3d(const Scene3D& scene) {
         if (v.family != PairFamily3D::PTPT3 || v.candidate_color != cd.color ||
             v.antagonist_color != an.color)
           continue;
-        const double length = (reference(cd) - reference(an)).norm();
-        if (length <= v.alert)
-          links.push_back({static_cast<std::int32_t>(points[p]), static_cast<std::int32_t>(points[q]),
-                           static_cast<std::int32_t>(row), length});
+        const Vector3d an_at = link_position(scene, points[q], length);
+        const std::array<std::int32_t, 2> an_cell = cell(an_at);
+        tried.assign(1, {0, 0});
+        for (int iy = -y_reach; iy <= y_reach; ++iy)
+          for (int ix = -x_reach; ix <= x_reach; ++ix) {
+            const std::array<std::int32_t, 2> periods = {ix + cd_cell[0] - an_cell[0],
+                                                         iy + cd_cell[1] - an_cell[1]};
+            if (std::find(tried.begin(), tried.end(), periods) == tried.end()) tried.push_back(periods);
+          }
+        for (const std::array<std::int32_t, 2>& periods : tried) {
+          const double distance = (cd_at - an_at - period_shift(scene, periods)).norm();
+          if (distance <= v.alert)
+            links.push_back({static_cast<std::int32_t>(points[p]), static_cast<std::int32_t>(points[q]),
+                             static_cast<std::int32_t>(row), distance, periods, false, 0});
+        }
         break;
       }
     }
   }
+  rank_pairs(links);
   return links;
+}
+
+bool network_links_3d(const Scene3D& scene, const grammar::Ptpt3NetworkFile& network, LinkLength length,
+                      std::vector<PointLink3D>& links, std::string& error) {
+  links.clear();
+  std::vector<std::size_t> points;
+  for (std::size_t k = 0; k < scene.contactors.size(); ++k)
+    if (scene.contactors[k].shape == ContactorShape3D::point) points.push_back(k);
+  for (std::size_t l = 0; l < network.links.size(); ++l) {
+    const grammar::Ptpt3Link& link = network.links[l];
+    const std::string where = "PTPT3_NETWORK.DAT link " + std::to_string(l + 1) + ": ";
+    const std::int64_t count = static_cast<std::int64_t>(points.size());
+    if (link.candidate.value < 1 || link.candidate.value > count || link.antagonist.value < 1 ||
+        link.antagonist.value > count) {
+      error =
+          where + "point " +
+          std::to_string(link.candidate.value < 1 || link.candidate.value > count ? link.candidate.value
+                                                                                  : link.antagonist.value) +
+          " does not exist (the case has " + std::to_string(count) + " PT3Dx)";
+      return false;
+    }
+    const std::size_t i = points[static_cast<std::size_t>(link.candidate.value - 1)];
+    const std::size_t j = points[static_cast<std::size_t>(link.antagonist.value - 1)];
+    const Contactor3D &cd = scene.contactors[i], &an = scene.contactors[j];
+    if (cd.body == an.body) {
+      error = where + "both points are on body " + std::to_string(cd.body + 1);
+      return false;
+    }
+    std::int32_t row = -1;
+    for (std::size_t r = 0; r < scene.visibility.size() && row < 0; ++r) {
+      const Visibility3D& v = scene.visibility[r];
+      if (v.family == PairFamily3D::PTPT3 &&
+          ((v.candidate_color == cd.color && v.antagonist_color == an.color) ||
+           (v.candidate_color == an.color && v.antagonist_color == cd.color)))
+        row = static_cast<std::int32_t>(r);
+    }
+    if (row < 0) {
+      error = where + "no PTPT3 visibility row reads PT3Dx " + cd.color + " against PT3Dx " + an.color;
+      return false;
+    }
+    // iloop = 1 shifts the candidate by the periods, which is the antagonist shifted the other way.
+    const auto sign = link.loop.value == 1 ? -1 : 1;
+    const std::array<std::int32_t, 2> periods = {sign * static_cast<std::int32_t>(link.x_periods.value),
+                                                 sign * static_cast<std::int32_t>(link.y_periods.value)};
+    const double reference_length = length == LinkLength::current
+                                        ? link.reference_length.value
+                                        : (link_position(scene, i, length) - link_position(scene, j, length) -
+                                           period_shift(scene, periods))
+                                              .norm();
+    links.push_back({static_cast<std::int32_t>(i), static_cast<std::int32_t>(j), row, reference_length,
+                     periods, sign < 0, 0});
+  }
+  rank_pairs(links);
+  return true;
 }
 
 ContactGeometry3D point_point_geometry(const Vector3d& candidate, const Vector3d& antagonist) {

@@ -113,6 +113,7 @@ bool prepare_run_3d(const validate::CaseFiles& files, Scene3D& scene, RunOutputs
   outputs.case_dir = files.case_dir;
   outputs.postpro = postpro_commands_2d(files, sink, /*three_d=*/true);
   if (files.vloc_rloc_ini) outputs.warm_start = &*files.vloc_rloc_ini;
+  if (files.ptpt3_network) outputs.ptpt3_network = &*files.ptpt3_network;
   return true;
 }
 

@@ -5,6 +5,7 @@
 #include "grammar/common/output_file.hpp"
 #include "grammar/dof/writer.hpp"
 #include "grammar/vloc_rloc/writer.hpp"
+#include "solver/detection/point_contact.hpp"
 #include "solver/io/display_3d.hpp"
 #include "solver/io/state_files_3d.hpp"
 
@@ -19,6 +20,21 @@ RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D&
 
   scene.x_period = options.x_period;
   scene.y_period = options.y_period;
+  // PTPT3 links: the network file's when asked for, else detected (again when periods or current
+  // lengths change what the scene's build found).
+  const LinkLength length =
+      options.ptpt3_current_nonuc0 ? LinkLength::current : LinkLength::reference_configuration;
+  if (options.ptpt3_network) {
+    if (!outputs.ptpt3_network) {
+      summary.error = "--ptpt3-network: " + (outputs.case_dir / "DATBOX" / "PTPT3_NETWORK.DAT").string() +
+                      " does not exist";
+      return summary;
+    }
+    if (!network_links_3d(scene, *outputs.ptpt3_network, length, scene.point_links, summary.error))
+      return summary;
+  } else if (scene.x_period > 0.0 || scene.y_period > 0.0 || length == LinkLength::current) {
+    scene.point_links = link_points_3d(scene, length);
+  }
   if (options.source_first > 0)
     init_source_point(
         scene, static_cast<std::size_t>(options.source_first - 1), options.source_radius,

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "grammar/ptpt3_network/ast.hpp"
 #include "grammar/vloc_rloc/ast.hpp"
 #include "solver/driver/run_2d.hpp"  // RunSummary, g_stop_requested
 #include "solver/driver/run_options.hpp"
@@ -13,9 +14,10 @@
 namespace lmgc::solver {
 
 struct RunOutputs3D {
-  std::filesystem::path case_dir;                     // OUTBOX/ and POSTPRO/ are created here
-  std::vector<PostproCommand2D> postpro;              // from POSTPRO.DAT (those Postpro3D provides)
-  const grammar::VlocRlocFile* warm_start = nullptr;  // Vloc_Rloc.INI
+  std::filesystem::path case_dir;                            // OUTBOX/ and POSTPRO/ are created here
+  std::vector<PostproCommand2D> postpro;                     // from POSTPRO.DAT (those Postpro3D provides)
+  const grammar::VlocRlocFile* warm_start = nullptr;         // Vloc_Rloc.INI
+  const grammar::Ptpt3NetworkFile* ptpt3_network = nullptr;  // PTPT3_NETWORK.DAT, when present
 };
 
 RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D& outputs);

@@ -24,8 +24,10 @@ struct RunOptions {
   double y_max = std::numeric_limits<double>::infinity();
   double x_min = -std::numeric_limits<double>::infinity();
   double x_max = std::numeric_limits<double>::infinity();
-  double x_period = 0.0;  // SetPeriodicCondition(xperiod)
-  double y_period = 0.0;  // SetPeriodicCondition(xperiod, yperiod), 3D
+  double x_period = 0.0;              // SetPeriodicCondition(xperiod)
+  double y_period = 0.0;              // SetPeriodicCondition(xperiod, yperiod), 3D
+  bool ptpt3_network = false;         // PTPT3 links from DATBOX/PTPT3_NETWORK.DAT (PTPT3_LoadNetwork)
+  bool ptpt3_current_nonuc0 = false;  // PTPT3_UseCurrentNonuc0(1): lengths from the file / the start
   // RBDY3_SetSourcePointWithIni(first, radius, x, y, z): bodies after `first` (1-based) enter one by
   // one at the point; first = 0 means none.
   long source_first = 0;

@@ -482,10 +482,15 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
                       h * (1.0 - theta) * b.velocity_begin[body].head<3>() +
                       b.frame_detection[body] * scene.contactors[k].shift);
     };
-    const Vector3d cd_point = position(i, cd_body), an_point = position(j, an_body);
+    // A link across a periodic side sees the antagonist shifted by its periods, or the candidate
+    // the other way (PointLink3D).
+    const Vector3d shift(link.periods[0] * scene.x_period, link.periods[1] * scene.y_period, 0.0);
+    const Vector3d cd_point = position(i, cd_body) - (link.shift_candidate ? shift : Vector3d::Zero()),
+                   an_point = position(j, an_body) + (link.shift_candidate ? Vector3d::Zero() : shift);
     const ContactGeometry3D g = point_point_geometry(cd_point, an_point);
     add_point(i, j, Vector3d::Zero(), link.visibility, g.tangent, g.normal, g.second_tangent, g.point, g.gap,
-              0, 0.0, &centre[i], &centre[j]);  // centre[k]: lever point about the (wrapped) centre
+              link.pair_rank, 0.0, &centre[i],
+              &centre[j]);  // centre[k]: lever point about the (wrapped) centre
     found.back().reference_gap = link.reference_length;
   }
   // By (family, candidate, antagonist); the points of a pair stay in detection order. Gathered into

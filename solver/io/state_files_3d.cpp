@@ -238,6 +238,14 @@ std::vector<Interaction3D> warm_start_3d(const grammar::VlocRlocFile& file, cons
   std::stable_sort(previous.begin(), previous.end(), [](const Interaction3D& a, const Interaction3D& b) {
     return std::tie(a.family, a.candidate, a.antagonist) < std::tie(b.family, b.candidate, b.antagonist);
   });
+  // Two PTPT3 links of one pair (directly and across a period) are told apart by their rank among
+  // the pair's links, as detection numbers them (PointLink3D::pair_rank).
+  for (std::size_t k = 1; k < previous.size(); ++k) {
+    const Interaction3D &a = previous[k - 1], &c = previous[k];
+    if (c.family == PairFamily3D::PTPT3 && a.family == c.family && a.candidate == c.candidate &&
+        a.antagonist == c.antagonist)
+      previous[k].vertex = a.vertex + 1;
+  }
   return previous;
 }
 

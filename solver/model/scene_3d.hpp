@@ -45,6 +45,15 @@ struct PointLink3D {
   std::int32_t candidate = 0, antagonist = 0;  // contactor ids
   std::int32_t visibility = 0;
   double reference_length = 0.0;  // nonuc0 [m]
+  // The antagonist is seen shifted by periods[0] x periods and periods[1] y periods (a link across
+  // a periodic side); 0 for a direct link.
+  std::array<std::int32_t, 2> periods{};
+  // The shift is applied to the candidate instead (by -periods): a network link with iloop = 1, so
+  // that its contact point is where LMGC90 puts it. The geometry is the same.
+  bool shift_candidate = false;
+  // Rank among the links of the same pair (0, or 1... for its periodic duplicates): the key that
+  // matches each to its reaction of the previous step.
+  std::int32_t pair_rank = 0;
 };
 
 struct ScenePlan3D {

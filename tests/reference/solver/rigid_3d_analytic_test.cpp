@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "solver/bodies/rigid_3d_properties.hpp"
+#include "solver/detection/point_contact.hpp"
 #include "solver/integrator/step_3d.hpp"
 #include "solver/model/scene_builder_3d.hpp"
 
@@ -427,6 +428,48 @@ TEST(Rigid3DAnalytic, ElasticWireHoldsAHangingMassAtItsStaticElongation) {
   EXPECT_TRUE(c.frame.row(1).transpose().isApprox(Vector3d::UnitZ()));  // from the mass to the anchor
   EXPECT_NEAR(c.r(1) / h, -s.scene.bodies.mass[static_cast<std::size_t>(s.ball)] * g, 1e-9 * m * g);
   EXPECT_NEAR(centre_of(s.scene, s.ball).z(), -L0 - delta, 1e-10);
+}
+
+// The same wire across a periodic side: period 3 m along x, gravity along −x, the anchor at
+// x = 0.2 m and the mass at x = 2.2 m, 1 m from the anchor's image at 3.2 m (2 m from the anchor:
+// beyond the alert of 1.5 m). Detection links them across the side with L0 = 1 m, and the wire
+// holds the mass at its static elongation δ = m g L0 / k as above; without the period nothing
+// links them and the mass falls.
+TEST(Rigid3DAnalytic, ElasticWireAcrossAPeriodicSideHoldsTheMassAtItsStaticElongation) {
+  const double L0 = 1.0, k = 2000.0, h = 1e-3, period = 3.0;
+  const double m = 1000.0 * 4.0 / 3.0 * std::numbers::pi * 1e-3;
+  const double delta = m * g * L0 / k;
+  for (const bool periodic : {true, false}) {
+    SceneBuilder3D b;
+    b.set_gravity(Vector3d(-g, 0.0, 0.0));
+    const int anchor =
+        b.add_fixed_plane(Vector3d(0.2, 0.0, 0.0), Matrix3d::Identity(), Vector3d(0.1, 0.1, 0.01));
+    b.add_point(anchor, Vector3d::Zero(), "ANCRx");
+    const int ball = b.add_sphere(Vector3d(2.2, 0.0, 0.0), 0.1, 1000.0);
+    b.add_point(ball, Vector3d::Zero(), "BLEUx");
+    b.add_law("wire1", ElasticWire{k, 0.0});
+    b.see("PT3Dx", "ANCRx", "wire1", "PT3Dx", "BLEUx", 1.5);
+    Scene3D scene = b.build();
+    if (periodic) scene.x_period = period;
+    scene.point_links = link_points_3d(scene);
+    const auto i = static_cast<std::size_t>(ball);
+    scene.bodies.displacement_begin[i].x() = scene.bodies.displacement[i].x() = -delta;
+    RunState3D state = run_state(h);
+    for (int n = 0; n < 300; ++n) step_3d(scene, state, converged_options());
+    if (!periodic) {
+      EXPECT_TRUE(state.contacts.empty());
+      EXPECT_LT(centre_of(scene, ball).x(), 2.2 - 0.4);  // fell freely: 0.44 m in 0.3 s
+      continue;
+    }
+    ASSERT_EQ(state.contacts.size(), 1u);
+    const Interaction3D& c = state.contacts.front();
+    EXPECT_EQ(c.status, ContactStatus::stick);
+    EXPECT_EQ(c.internal[0], L0);  // gapREF across the side
+    EXPECT_TRUE(
+        c.frame.row(1).transpose().isApprox(Vector3d::UnitX()));  // from the mass's image to the anchor
+    EXPECT_NEAR(c.r(1) / h, -m * g, 1e-9 * m * g);
+    EXPECT_NEAR(centre_of(scene, ball).x(), 2.2 - delta, 1e-10);
+  }
 }
 
 // A slack wire (points closer than L0) carries nothing: the mass falls freely, z = z0 − g t²/2
