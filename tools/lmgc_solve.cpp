@@ -131,7 +131,8 @@ int main(int argc, char** argv) {
   }
 
   grammar::DiagnosticSink sink(5000);
-  auto files = validate::load_case(case_dir, sink);
+  // PTPT3_NETWORK.DAT is read (and checked) only when the run uses it, as LMGC90.
+  auto files = validate::load_case(case_dir, sink, validate::LoadOptions{options.ptpt3_network});
   if (files) validate::check_case(*files, sink);
   solver::Scene2D scene;
   solver::RunOutputs2D outputs;

@@ -104,7 +104,8 @@ bool has_mailx(const CaseFiles& c) {
 
 }  // namespace
 
-std::optional<CaseFiles> load_case(const fs::path& case_dir, DiagnosticSink& sink) {
+std::optional<CaseFiles> load_case(const fs::path& case_dir, DiagnosticSink& sink,
+                                   const LoadOptions& options) {
   std::error_code ec;
   const fs::path datbox = case_dir / "DATBOX";
   if (!fs::is_directory(case_dir, ec) || !fs::is_directory(datbox, ec)) {
@@ -129,6 +130,7 @@ std::optional<CaseFiles> load_case(const fs::path& case_dir, DiagnosticSink& sin
 
   for (const DatboxFileKind& kind : kDatboxFiles) {
     const std::string name(kind.name);
+    if (name == "PTPT3_NETWORK.DAT" && !options.ptpt3_network) continue;
     known.insert(name);
     const fs::path path = datbox / name;
     if (!fs::exists(path, ec)) {

@@ -47,8 +47,16 @@ struct CaseFiles {
   std::vector<std::string> unread_files;
 };
 
+// Which of the files a run reads only when its script asks for them are read.
+struct LoadOptions {
+  // PTPT3_NETWORK.DAT (PTPT3_LoadNetwork): lmgc-check reads it when present; lmgc-solve only with
+  // --ptpt3-network, as LMGC90 (else it is a file the run does not read, note L1021).
+  bool ptpt3_network = true;
+};
+
 // Reads CASE_DIR/DATBOX/. Returns nullopt (after reporting L9002) when the folder is not a case.
-std::optional<CaseFiles> load_case(const std::filesystem::path& case_dir, grammar::DiagnosticSink& sink);
+std::optional<CaseFiles> load_case(const std::filesystem::path& case_dir, grammar::DiagnosticSink& sink,
+                                   const LoadOptions& options = {});
 
 // The echo files LMGC90 writes when it reads the case: path relative to the case folder
 // (OUTBOX/BODIES.OUT, ..., POSTPRO/POSTPRO.OUT) and content.

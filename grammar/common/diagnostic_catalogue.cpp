@@ -170,10 +170,10 @@ constexpr std::array kCatalogue = {
                    "case's PT3Dx contactors, which are numbered 1, 2, ... in BODIES.DAT order over all "
                    "RBDY3 bodies. LMGC90 reads past its array."},
     DiagnosticKind{"L2022", error, "PTPT3 link without a visibility row",
-                   "A link of PTPT3_NETWORK.DAT joins two PT3Dx whose colours no '$seety' row "
-                   "'RBDY3 PT3Dx <candidate colour> ... RBDY3 PT3Dx <antagonist colour>' reads: the link "
-                   "has no law (LMGC90's get_isee returns 0 and the run fails later), or joins two points "
-                   "of the same body."},
+                   "A link of PTPT3_NETWORK.DAT joins two PT3Dx whose colours no PT3Dx/PT3Dx '$seety' "
+                   "row names (in either order, as LMGC90's get_isee reads rows): the link has no law "
+                   "(get_isee returns 0 and LMGC90 fails later); or it joins two points of the same "
+                   "body, whose distance never changes (LMGC90 keeps such a link; lmgc-solve refuses it)."},
     DiagnosticKind{
         "L3001", error, "non-positive size",
         "A radius, half length, half thickness or height of a contactor is zero or negative, or an "

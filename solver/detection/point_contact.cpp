@@ -59,8 +59,10 @@ std::vector<PointLink3D> link_points_3d(const Scene3D& scene, LinkLength length)
       if (cd.body == an.body) continue;
       for (std::size_t row = 0; row < scene.visibility.size(); ++row) {
         const Visibility3D& v = scene.visibility[row];
-        if (v.family != PairFamily3D::PTPT3 || v.candidate_color != cd.color ||
-            v.antagonist_color != an.color)
+        // get_isee is symmetric: the row may name the two colours in either order.
+        if (v.family != PairFamily3D::PTPT3 ||
+            !((v.candidate_color == cd.color && v.antagonist_color == an.color) ||
+              (v.candidate_color == an.color && v.antagonist_color == cd.color)))
           continue;
         const Vector3d an_at = link_position(scene, points[q], length);
         const std::array<std::int32_t, 2> an_cell = cell(an_at);

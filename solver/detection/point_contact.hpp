@@ -15,16 +15,19 @@
 namespace lmgc::solver {
 
 // Where a link's reference length (nonuc0) comes from: the reference configuration (BODIES.DAT
-// centre + initial frame x offset, LMGC90's cooref), or, as PTPT3_UseCurrentNonuc0(1) asks, the
-// current one (positions at the start of the run) for detected links and the file's value for
-// the links of a network.
+// centre + initial frame x offset, LMGC90's cooref), or with PTPT3_UseCurrentNonuc0(1) the file's
+// value for the links of a network and, our choice for detected links, the positions at the start
+// of the run (LMGC90 reads its current coordinates there before it has set them).
 enum class LinkLength { reference_configuration, current };
 
 // The PTPT3 links of a scene: for each PT3Dx (candidate, in contactor order) and each later PT3Dx
-// of another body (antagonist) with a `$seety` row read that way, a link when their distance is
-// within the row's alert. That distance is the link's reference length (the wires' gapREF).
-// With periodic sides (scene.x_period, y_period), the antagonist's images one period away on
-// either side are tried too, after the direct pair; each within the alert is a link of its own.
+// of another body (antagonist) with a PTPT3 `$seety` row for their two colours (in either order, as
+// get_isee), a link when their distance is within the row's alert. That distance is the link's
+// reference length (the wires' gapREF). With periodic sides (scene.x_period, y_period), the
+// antagonist's images one period away on either side are tried too, after the direct pair, counted
+// in the periodic cell the points wrap into (so a point outside the cell may be shifted by more
+// than one period); each image within the alert is a link of its own. LMGC90 stops on a point
+// outside [0, period); here it links as it lies.
 // LMGC90 tries only the +period images and then shifts the candidate instead of the antagonist
 // ("n'a aucun sens", mod_PTPT3 compute_contact), which gives such a link another length than the
 // one it was found with; here a link is measured every step as it was found.

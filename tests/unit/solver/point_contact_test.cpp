@@ -141,6 +141,18 @@ TEST(LinkPoints3D, APairWithinTheAlertDirectlyAndAcrossTheSideHasOneLinkForEachR
   EXPECT_EQ(links[1].pair_rank, 1);
 }
 
+TEST(LinkPoints3D, ARowNamingTheColoursTheOtherWayRoundLinksAsGetIseeReadsIt) {
+  SceneBuilder3D b;
+  b.add_point(b.add_sphere(Vector3d::Zero(), 0.05, 1000.0), Vector3d::Zero(), "BLEUx");
+  b.add_point(b.add_sphere(Vector3d(0.2, 0, 0), 0.05, 1000.0), Vector3d::Zero(), "REDxx");
+  b.add_law("rod01", ElasticWire{1000.0, 0.0});
+  b.see("PT3Dx", "REDxx", "rod01", "PT3Dx", "BLEUx", 0.3);
+  const Scene3D scene = b.build();
+  ASSERT_EQ(scene.point_links.size(), 1u);
+  EXPECT_EQ(scene.point_links[0].candidate, 1);  // the first point stays the candidate
+  EXPECT_EQ(scene.point_links[0].antagonist, 3);
+}
+
 TEST(LinkPoints3D, CurrentLengthsAreMeasuredAtTheStartingPositions) {
   Scene3D scene = two_points(Vector3d(0, 0, 0), Vector3d(0.2, 0, 0));
   scene.bodies.displacement_begin[1](0) = 0.05;  // DOF.INI moved the second body

@@ -18,6 +18,7 @@
 #include "grammar/vloc_rloc/interaction_catalogue.hpp"
 #include "grammar/vloc_rloc/parser.hpp"
 #include "grammar/vloc_rloc/writer.hpp"
+#include "solver/detection/point_contact.hpp"
 #include "solver/model/scene_builder_3d.hpp"
 
 namespace lmgc::solver {
@@ -350,6 +351,40 @@ TEST(StateFiles3D, DrumAndPointLinkBlocksRoundTripAndWarmStart) {
     EXPECT_EQ(warm[k].status, r.state.contacts[k].status);
     for (int d = 0; d < 3; ++d) expect_close(r.state.contacts[k].r(d), warm[k].r(d), "r");
   }
+}
+
+// Two links of one pair (directly and across a periodic side: a 0.5 m period, points 0.25 m apart
+// both ways) with different reactions: written, read back and stored, each reaction goes back to
+// its own link, in the order detection numbers them (PointLink3D::pair_rank, the warm-start key).
+TEST(StateFiles3D, DuplicateLinksOfOnePairWarmStartInTheirOrder) {
+  SceneBuilder3D b;
+  b.add_point(b.add_sphere(Vector3d(0.2, 0.0, 0.0), 0.05, 1000.0), Vector3d::Zero(), "BLEUx");
+  b.add_point(b.add_sphere(Vector3d(0.45, 0.0, 0.0), 0.05, 1000.0), Vector3d::Zero(), "BLEUx");
+  b.add_law("rod01", ElasticRod{1000.0, 0.0});
+  b.see("PT3Dx", "BLEUx", "rod01", "PT3Dx", "BLEUx", 0.3);
+  b.set_gravity(Vector3d::Zero());
+  SceneRun r{b.build(), {}};
+  r.scene.x_period = 0.5;
+  r.scene.point_links = link_points_3d(r.scene);
+  ASSERT_EQ(r.scene.point_links.size(), 2u);
+  r.state.h = kH;
+  step_3d(r.scene, r.state, converged_options());
+  ASSERT_EQ(r.state.contacts.size(), 2u);
+  r.state.contacts[0].r = Vector3d(0.0, 1.0, 0.0);
+  r.state.contacts[1].r = Vector3d(0.0, -2.0, 0.0);
+  EXPECT_EQ(r.state.contacts[1].vertex, 1);
+  const grammar::VlocRlocFile back =
+      parse_vloc(grammar::write_vloc_rloc(vloc_rloc_file_3d(r.scene, r.state)));
+  const std::vector<Interaction3D> warm = warm_start_3d(back, r.scene, kH);
+  ASSERT_EQ(warm.size(), 2u);
+  EXPECT_EQ(warm[0].vertex, 0);
+  EXPECT_EQ(warm[1].vertex, 1);
+  store_interactions(r.state, warm);
+  select_prox_tactors(r.scene, r.state);
+  recup_rloc(r.state);
+  ASSERT_EQ(r.state.contacts.size(), 2u);
+  expect_close(r.state.contacts[0].r(1), 1.0, "direct link");
+  expect_close(r.state.contacts[1].r(1), -2.0, "link across the side");
 }
 
 }  // namespace

@@ -82,6 +82,20 @@ TEST(LmgcSolve, InvalidDataExitsOneAndWritesNothing) {
   EXPECT_FALSE(fs::exists(dir / "OUTBOX" / "DOF.LAST"));
 }
 
+// PTPT3_NETWORK.DAT is read only when the run asks for it (--ptpt3-network), as LMGC90 reads it
+// only under PTPT3_LoadNetwork: a network naming a point the case lacks stops that run (exit 1,
+// L2021) and not a run without the flag.
+TEST(LmgcSolve, APtpt3NetworkIsReadOnlyWithItsFlag) {
+  const fs::path dir = scratch_dir("solve_network");
+  fs::copy(fs::path(LMGC_SOURCE_DIR) / "reference_cases" / "wire_periodic_network_3d" / "DATBOX",
+           dir / "DATBOX", fs::copy_options::recursive);
+  std::ofstream(dir / "DATBOX" / "PTPT3_NETWORK.DAT") << " 1 9 1 0 0 1.0\n";
+  EXPECT_EQ(run_tool("lmgc-solve", "'" + dir.string() + "' --quiet --steps 2").exit_code, 0);
+  EXPECT_EQ(run_tool("lmgc-solve", "'" + dir.string() + "' --quiet --steps 2 --ptpt3-network").exit_code, 1);
+  EXPECT_EQ(run_tool("lmgc-check", "'" + dir.string() + "' --json").output.find("L2021") != std::string::npos,
+            true);
+}
+
 TEST(LmgcSolve, UsageErrorsExitTwo) {
   EXPECT_EQ(run_tool("lmgc-solve", "").exit_code, 2);
   EXPECT_EQ(run_tool("lmgc-solve", "--no-such-flag x").exit_code, 2);

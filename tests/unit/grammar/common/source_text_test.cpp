@@ -41,6 +41,20 @@ TEST(SourceText, AShortTextKeepsItsLinesWhenMovedOrCopied) {
   EXPECT_EQ(moved_into.line_text(2), "3 4");
 }
 
+TEST(SourceText, SelfAssignmentAndAnEmptyTextAreHarmless) {
+  SourceText source("c", "a\nb\n");
+  SourceText& same = source;
+  source = same;
+  expect_lines(source, "a", "b");
+  source = std::move(same);
+  expect_lines(source, "a", "b");
+  SourceText empty("d", "");
+  SourceText moved(std::move(empty));
+  EXPECT_TRUE(moved.lines().empty());
+  EXPECT_EQ(moved.line_text(1), "");
+}
+
+// A long text's buffer moves with it: the lines stay where they were.
 TEST(SourceText, ALongTextKeepsItsLinesWhenMoved) {
   const std::string first(100, 'x'), second(50, 'y');
   SourceText original("b", first + "\n" + second);
