@@ -52,7 +52,7 @@ std::string_view seen_as(const std::string& type) {
 constexpr std::size_t kPrefetchDistance = 32;
 
 // Asks for the cache lines a sweep's local solve reads of an interaction: its first 376 bytes (up to
-// W), seven lines at most as records of 632 bytes fall.
+// W), seven lines at most as records of 640 bytes fall.
 void prefetch_interaction(const Interaction3D& c) {
   const char* bytes = reinterpret_cast<const char*>(&c);
   for (std::size_t offset = 0; offset <= 384; offset += 64) __builtin_prefetch(bytes + offset);
@@ -566,11 +566,13 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   double q_squared = 0.0;
   const bool first = !state.laws_initialized && !contacts.empty();
   if (!contacts.empty()) state.laws_initialized = true;
+  const LawStep law_step{state.h, state.time, state.step == 1, first};
+  std::vector<std::uint8_t> law_updates_at_check(scene.laws.size());
+  for (std::size_t l = 0; l < scene.laws.size(); ++l)
+    law_updates_at_check[l] = updates_at_check(scene.laws[l].law);
   for (Interaction3D& c : contacts) {
     // Each law's derived problem (its own file, solver/laws/*.hpp).
-    if (!prepare_law(scene.laws[static_cast<std::size_t>(c.law)].law, c,
-                     LawStep{state.h, state.time, state.step == 1, first}))
-      c.inactive = true;
+    if (!prepare_law(scene.laws[static_cast<std::size_t>(c.law)].law, c, law_step)) c.inactive = true;
     if (c.inactive) c.r.setZero();
     const Vector3d q = local_velocity(c, b.velocity_free) + c.covfree;
     if (!c.inactive) q_squared += q.squaredNorm();
@@ -645,7 +647,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   std::iota(order.begin(), order.end(), std::size_t{0});
   if (options.quick_scramble) state.scramble.prepare(contacts.size());
   // Whether each contact is without reaction, beside its visits: a sweep passes most open contacts
-  // by on these 12 bytes without reading their 632-byte interaction (open_contact_visits.hpp). In a
+  // by on these 12 bytes without reading their 640-byte interaction (open_contact_visits.hpp). In a
   // 64k-sphere box 98% of the contacts are open, and each pass-by read two cache lines of it.
   struct OpenContact {
     OpenContactVisits visits;
@@ -687,10 +689,14 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
     // Check pass (numerics.md §4.1): one more local solve per contact, r left unchanged.
     NlgsCheckSums sums;
     for (std::size_t k = 0; k < contacts.size(); ++k) {
-      const Interaction3D& c = contacts[k];
+      Interaction3D& c = contacts[k];
       if (c.inactive) continue;
       Vector3d q_local;
       const Vector3d r_check = local_solve(k, q_local, 0.0);
+      // Laws that re-evaluate their state at a check do it with the velocity of this solution.
+      if (law_updates_at_check[static_cast<std::size_t>(c.law)])
+        update_law_at_check(scene.laws[static_cast<std::size_t>(c.law)].law, c,
+                            local_velocity(c, V) + c.W * (r_check - c.r), law_step);
       const Vector3d mean_r = 0.5 * (c.r + r_check);
       const Vector3d dv = c.W * (c.r - r_check);
       const double dvdv = dv.squaredNorm();
@@ -742,8 +748,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
       uu(1) += c.normal_compliance * rr(1);  // ELASTIC_REPELL_CLB's WW (0 for the other laws)
       residual_squared += natural_map_3d(swap_normal_first(rr), swap_normal_first(uu), c.mu).squaredNorm();
     }
-    finish_law(scene.laws[static_cast<std::size_t>(c.law)].law, c,
-               LawStep{state.h, state.time, state.step == 1, first});
+    finish_law(scene.laws[static_cast<std::size_t>(c.law)].law, c, law_step);
   }
   result.residual_absolute = std::sqrt(residual_squared);
   result.residual_relative = result.free_velocity_norm > 0.0

@@ -1,5 +1,6 @@
 #include "solver/laws/contact_law.hpp"
 
+#include <concepts>
 #include <utility>
 
 namespace lmgc::solver {
@@ -8,6 +9,12 @@ namespace {
 template <class Law>
 concept HasForm3D = requires(const Law& law, Interaction3D& c, const LawStep& step) {
   prepare(law, c, step);
+};
+
+template <class Law>
+concept UpdatesAtCheck3D = requires(const Law& law, Interaction3D& c, const Eigen::Vector3d& u,
+                                    const LawStep& step) {
+  { update_at_check(law, c, u, step) } -> std::same_as<bool>;
 };
 
 template <class Law>
@@ -84,6 +91,22 @@ bool prepare_law(const ContactLaw& law, Interaction3D& c, const LawStep& step) {
         } else {
           return false;
         }
+      },
+      law);
+}
+
+bool updates_at_check(const ContactLaw& law) {
+  return std::visit([](const auto& p) { return UpdatesAtCheck3D<std::decay_t<decltype(p)>>; }, law);
+}
+
+bool update_law_at_check(const ContactLaw& law, Interaction3D& c, const Eigen::Vector3d& u,
+                         const LawStep& step) {
+  return std::visit(
+      [&](const auto& p) {
+        if constexpr (UpdatesAtCheck3D<std::decay_t<decltype(p)>>)
+          return update_at_check(p, c, u, step);
+        else
+          return false;
       },
       law);
 }

@@ -123,6 +123,9 @@ struct Interaction3D {
   ContactStatus status = ContactStatus::nknow;
   ContactStatus status_begin = ContactStatus::nknow;
   std::array<double, 6> internal{};
+  // A law's value that the step's convergence checks may change before the end of the step stores
+  // it (LMGC90's taz(1)): IQS_MAC_CZM's damage β.
+  double law_working = 0.0;
   // PRPLx: the candidate vertex (1-based, Vloc_Rloc's CDVER); PRPRx: 0. Warm start key of PRPLx.
   std::int32_t vertex = 0;
   // Contact surface of the cohesive laws (get_surf_*: SPSPx π (r₁r₂)²/(r₁+r₂)², SPPLx π r², PRPRx the
@@ -138,7 +141,7 @@ struct Interaction3D {
 };
 
 // What the next step's warm start (recup_rloc) reads of an interaction: LMGC90's verlet list entry.
-// Kept apart from Interaction3D (632 bytes) because the whole list is stored every step.
+// Kept apart from Interaction3D (640 bytes) because the whole list is stored every step.
 struct StoredInteraction3D {
   PairFamily3D family = PairFamily3D::SPSPx;
   ContactStatus status = ContactStatus::nknow;

@@ -547,6 +547,46 @@ TEST(Rigid3DAnalytic, WeakCohesiveZoneBreaksAndLetsTheSphereFall) {
   EXPECT_LT(centre_of(scene, ball).z(), -r - 0.95 * 0.5 * g * 0.2 * 0.2);
 }
 
+// Two spheres hanging in a chain from a ceiling, both interfaces sound IQS_MAC_CZM (ceiling–upper
+// SPPLx, upper–lower SPSPx); the lower sphere leaves at 1 m/s, which tears its interface in the first
+// step (it stores cn δn² ≫ w). The chain takes several sweeps to converge, and LMGC90 re-evaluates β
+// at each convergence check (updt_CZM_3D(.false.)), the sweeps after it using the new β; so at
+// convergence an open interface's reaction is the cohesive traction of the β the step stores,
+// r_n = −L β² h cn δn_end. With β held at 1 through the step it would be that of the sound
+// interface, 1/β² times larger.
+TEST(Rigid3DAnalytic, CohesiveZoneTornInOneStepReactsWithTheBetaItStores) {
+  const double h = 1e-3, cn = 1e8;
+  SceneBuilder3D b;
+  Matrix3d down;  // the plane's bottom face (z = 0) faces down
+  down << 1, 0, 0, 0, -1, 0, 0, 0, -1;
+  b.add_fixed_plane(Vector3d(0.0, 0.0, 0.05), down, Vector3d(1.0, 1.0, 0.05));
+  b.add_sphere(Vector3d(0.0, 0.0, -0.1), 0.1, 1000.0);
+  const int lower = b.add_sphere(Vector3d(0.0, 0.0, -0.3), 0.1, 1000.0);
+  b.add_law("mac01", IqsMacCzm{0.3, 0.3, cn, cn, 0.0, 10.0});
+  b.see("SPHER", "BLEUx", "mac01", "PLANx", "VERTx", 0.01);
+  b.see("SPHER", "BLEUx", "mac01", "SPHER", "BLEUx", 0.01);
+  Vector6d leaving = Vector6d::Zero();
+  leaving(2) = -1.0;
+  b.set_velocity(lower, leaving);
+  Scene3D scene = b.build();
+  NlgsOptions options = converged_options();
+  options.gs_it1 = 1;  // a check after every sweep
+  RunState3D state = run_state(h);
+  const NlgsResult result = step_3d(scene, state, options);
+  EXPECT_TRUE(result.converged);
+  EXPECT_GT(result.iterations, 2);
+  ASSERT_EQ(state.contacts.size(), 2u);
+  int torn = 0;
+  for (const Interaction3D& c : state.contacts) {
+    const double beta = c.internal[4], opening = c.internal[2];
+    if (beta == 1.0) continue;
+    ++torn;
+    EXPECT_GT(opening, 0.0);
+    EXPECT_NEAR(c.r(1), -c.internal[0] * beta * beta * h * cn * opening, 1e-3 * std::abs(c.r(1)));
+  }
+  EXPECT_GE(torn, 1);
+}
+
 // ELASTIC_REPELL_CLB in 3D: a sphere on a plane sinks into its spring until k δ = m g (the implicit
 // impulse −h k γ_end carries the weight); started at δ = m g / k it stays there.
 TEST(Rigid3DAnalytic, ElasticRepellSphereRestsAtItsSpringPenetration) {

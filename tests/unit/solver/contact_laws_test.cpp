@@ -269,6 +269,45 @@ TEST(IqsMacCzm, ThreeDimensionalFormIsTheCohesiveZoneOnTheContactSurface) {
   EXPECT_DOUBLE_EQ(c.mu, 0.4 * (1.0 - beta));
 }
 
+// LMGC90's solve_nlgs re-evaluates β at each convergence check (updt_CZM_3D(.false.)) from the
+// check's velocity, and the sweeps after it use that β; the end of the step stores β from the
+// final velocity when the damage rule takes it, else the checks' β.
+TEST(IqsMacCzm, ThreeDimensionalBetaIsReEvaluatedAtEachCheckFromTheStepsStart) {
+  const IqsMacCzm law{0.3, 0.4, 2e6, 1e6, 0.0, 10.0};
+  Interaction3D c = contact_3d(0.0);  // surface 0.5, closed
+  ASSERT_TRUE(prepare_law(law, c, LawStep{h, h, true, true}));
+  ASSERT_TRUE(updates_at_check(law));
+  EXPECT_FALSE(updates_at_check(IqsClb{0.3}));
+  EXPECT_EQ(c.law_working, 1.0);
+  // A check velocity that stores less than w: β stays, nothing changes.
+  EXPECT_FALSE(update_law_at_check(law, c, Eigen::Vector3d(0.0, 1.0, 0.0), LawStep{h, h, true, true}));
+  EXPECT_EQ(c.form, LocalForm3D::cohesive);
+  // Opening 8 mm in the step: cn δn² = 2e6 × 6.4e-5 = 128 > w = 10, β = w / (cn δn²) (no viscosity).
+  ASSERT_TRUE(update_law_at_check(law, c, Eigen::Vector3d(0.0, 8.0, 0.0), LawStep{h, h, true, true}));
+  const double beta = 10.0 / 128.0;
+  EXPECT_DOUBLE_EQ(c.law_working, beta);
+  EXPECT_EQ(c.internal[4], 1.0);  // stored only at the end of the step
+  EXPECT_DOUBLE_EQ(c.mu, 0.4 * (1.0 - beta));
+  EXPECT_DOUBLE_EQ(c.cohesive_slope(1), -0.5 * beta * beta * h * h * 2e6);
+  // A later check computes from the step's starting β again, not from the last check's.
+  ASSERT_TRUE(update_law_at_check(law, c, Eigen::Vector3d(0.0, 16.0, 0.0), LawStep{h, h, true, true}));
+  EXPECT_DOUBLE_EQ(c.law_working, 10.0 / 512.0);
+  // The final velocity stores less than w: the rule does not take it, the checks' β is stored.
+  c.u = Eigen::Vector3d(0.0, 1.0, 0.0);
+  c.status = ContactStatus::stick;
+  finish_law(law, c, LawStep{h, h, true, true});
+  EXPECT_DOUBLE_EQ(c.internal[4], 10.0 / 512.0);
+  // Fully broken at a check (β below 1e-12 → 0): the contact turns to plain IQS with full friction.
+  Interaction3D d = contact_3d(0.0);
+  ASSERT_TRUE(prepare_law(IqsMacCzm{0.3, 0.4, 2e6, 1e6, 0.0, 1e-12}, d, LawStep{h, h, true, true}));
+  ASSERT_TRUE(update_law_at_check(IqsMacCzm{0.3, 0.4, 2e6, 1e6, 0.0, 1e-12}, d,
+                                  Eigen::Vector3d(0.0, 1e3, 0.0), LawStep{h, h, true, true}));
+  EXPECT_EQ(d.law_working, 0.0);
+  EXPECT_EQ(d.form, LocalForm3D::coulomb);
+  EXPECT_EQ(d.mu, 0.4);
+  EXPECT_EQ(d.cohesive_slope, Eigen::Vector3d::Zero());
+}
+
 TEST(ElasticWire, IsATensionOnlySpringOnTheReferenceLength) {
   const ElasticWire law{2000.0, 0.1};
   Interaction3D c = contact_3d(1.3);
