@@ -18,6 +18,12 @@ concept UpdatesAtCheck3D = requires(const Law& law, Interaction3D& c, const Eige
 };
 
 template <class Law>
+concept UpdatesAtCheck2D = requires(const Law& law, Interaction2D& c, const Eigen::Vector2d& u,
+                                    const LawStep& step) {
+  { update_at_check(law, c, u, step) } -> std::same_as<bool>;
+};
+
+template <class Law>
 concept HasForm2D = requires(const Law& law, Interaction2D& c, const LawStep& step) {
   prepare(law, c, step);
 };
@@ -96,7 +102,24 @@ bool prepare_law(const ContactLaw& law, Interaction3D& c, const LawStep& step) {
 }
 
 bool updates_at_check(const ContactLaw& law) {
-  return std::visit([](const auto& p) { return UpdatesAtCheck3D<std::decay_t<decltype(p)>>; }, law);
+  return std::visit(
+      [](const auto& p) {
+        using Law = std::decay_t<decltype(p)>;
+        return UpdatesAtCheck3D<Law> || UpdatesAtCheck2D<Law>;
+      },
+      law);
+}
+
+bool update_law_at_check(const ContactLaw& law, Interaction2D& c, const Eigen::Vector2d& u,
+                         const LawStep& step) {
+  return std::visit(
+      [&](const auto& p) {
+        if constexpr (UpdatesAtCheck2D<std::decay_t<decltype(p)>>)
+          return update_at_check(p, c, u, step);
+        else
+          return false;
+      },
+      law);
 }
 
 bool update_law_at_check(const ContactLaw& law, Interaction3D& c, const Eigen::Vector3d& u,

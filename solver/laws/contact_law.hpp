@@ -52,10 +52,12 @@ void finish_law(const ContactLaw& law, Interaction2D& c, const LawStep& step);
 bool provided_in_3d(const ContactLaw& law);
 bool prepare_law(const ContactLaw& law, Interaction3D& c, const LawStep& step);
 void finish_law(const ContactLaw& law, Interaction3D& c, const LawStep& step);
-// 3D: whether the law changes its local problem at the step's convergence checks (LMGC90's
-// updt_*(.false.) in solve_nlgs i_check: IQS_MAC_CZM's β), and that update, from the velocity u of
-// the check's local solution. True when the contact's local problem changed.
+// Whether the law changes its local problem at the step's convergence checks (LMGC90's
+// updt_*(.false.) in solve_nlgs i_check: IQS_MAC_CZM's β), and that update in 2D and 3D, from the
+// velocity u of the check's local solution. True when the contact's local problem changed.
 bool updates_at_check(const ContactLaw& law);
+bool update_law_at_check(const ContactLaw& law, Interaction2D& c, const Eigen::Vector2d& u,
+                         const LawStep& step);
 bool update_law_at_check(const ContactLaw& law, Interaction3D& c, const Eigen::Vector3d& u,
                          const LawStep& step);
 

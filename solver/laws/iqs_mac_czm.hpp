@@ -16,26 +16,16 @@ struct IqsMacCzm {
   double dfric, sfric, cn, ct, visco, dupre;
 };
 
-inline void prepare(const IqsMacCzm& law, Interaction2D& c, const LawStep& step) {
-  const double h = step.h;
-  // At the run's first preparation with interactions (mod_nlgs prep :2313-2330) nknow becomes Cnnow,
-  // and init_CZM makes the interface sound (β = 1) if that is step 1; any other contact keeps its
-  // internals (β = 0 for one created later: broken from the start).
-  if (step.first_preparation) {
-    if (step.first_step) c.internal = {0.0, 0.0, 0.0, 1.0, -99.0, 0.0};
-    if (c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Cnnow;
-  }
-  const double length = c.length;
-  const double beta = c.internal[3];
-  c.internal[0] = length;
-  c.internal[2] = positive(c.gap_begin);
-  iqs_form(c, h);
-  const bool sliding = is_sliding(c.status_begin);
-  c.mu = (sliding ? law.dfric : law.sfric) * (1.0 - beta);
+// 2D: the local problem of damage β (iter_CZM :mod_tact_behav, get_fric_CZM): while β > 1e-12 the
+// linear traction β² C δ_end on the length L, as an impulse over the step; friction × (1 − β).
+// internal[5] holds the β in use (LMGC90's taz(1)): the law writes five internals, so it is not
+// written out.
+inline void use_beta(const IqsMacCzm& law, Interaction2D& c, double beta, double h) {
+  c.internal[5] = beta;
+  c.mu = (is_sliding(c.status_begin) ? law.dfric : law.sfric) * (1.0 - beta);
   c.cohesive = beta > 1e-12;
   if (c.cohesive) {
-    // Linear traction β² C δ_end on the length L, as an impulse over the step.
-    const double b2 = beta * beta;
+    const double b2 = beta * beta, length = c.internal[0];
     c.cohesive_slope = Eigen::Vector2d(-length * b2 * h * h * law.ct, -length * b2 * h * h * law.cn);
     c.cohesive_shift_t = -length * b2 * h * law.ct * c.internal[1];
   } else {
@@ -44,19 +34,52 @@ inline void prepare(const IqsMacCzm& law, Interaction2D& c, const LawStep& step)
   }
 }
 
-// Damage (§3.5): jumps from the final velocity, β from the energy balance, TPSini at first damage.
+// updt_CZM with the jumps δ + h u, from the step's starting β: taken when it does not grow and the
+// stored energy exceeds w (§3.5). False when not taken.
+inline bool damaged_beta(const IqsMacCzm& law, const Interaction2D& c, const Eigen::Vector2d& u, double h,
+                         double& beta) {
+  const double dt = c.internal[1] + h * u(0), dn = c.internal[2] + h * u(1);
+  const double beta_start = c.internal[3];
+  const double energy = law.ct * dt * dt + law.cn * (dn > 0.0 ? dn * dn : 0.0);
+  beta = (h * law.dupre + beta_start * law.visco) / (law.visco + h * energy);
+  if (beta < 1e-12) beta = 0.0;
+  return beta <= beta_start && law.dupre <= beta_start * energy;
+}
+
+inline void prepare(const IqsMacCzm& law, Interaction2D& c, const LawStep& step) {
+  // At the run's first preparation with interactions (mod_nlgs prep :2313-2330) nknow becomes Cnnow,
+  // and init_CZM makes the interface sound (β = 1) if that is step 1; any other contact keeps its
+  // internals (β = 0 for one created later: broken from the start).
+  if (step.first_preparation) {
+    if (step.first_step) c.internal = {0.0, 0.0, 0.0, 1.0, -99.0, 0.0};
+    if (c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Cnnow;
+  }
+  c.internal[0] = c.length;
+  c.internal[2] = positive(c.gap_begin);
+  iqs_form(c, step.h);
+  use_beta(law, c, c.internal[3], step.h);
+}
+
+// As in 3D: β evaluated again at each convergence check (updt_CZM(.false.) at i_check in mod_nlgs)
+// from the check's velocity; the sweeps after it use it. True when the local problem changed.
+inline bool update_at_check(const IqsMacCzm& law, Interaction2D& c, const Eigen::Vector2d& u,
+                            const LawStep& step) {
+  double beta = 0.0;
+  if (!damaged_beta(law, c, u, step.h, beta) || beta == c.internal[5]) return false;
+  use_beta(law, c, beta, step.h);
+  return true;
+}
+
+// Damage (§3.5) at the end of the step: β from the final velocity when taken, else the checks' β;
+// the jumps δ += h u; TPSini at first damage.
 inline void finish(const IqsMacCzm& law, Interaction2D& c, const LawStep& step) {
   const double h = step.h;
-  const double dt = c.internal[1] + h * c.u(0);
-  const double dn = c.internal[2] + h * c.u(1);
-  c.internal[1] = dt;
-  c.internal[2] = dn;
-  const double beta_old = c.internal[3];
-  const double nt = dt * dt, nn = dn > 0.0 ? dn * dn : 0.0;
-  const double energy = law.ct * nt + law.cn * nn;
-  double beta = (h * law.dupre + beta_old * law.visco) / (law.visco + h * energy);
-  if (beta < 1e-12) beta = 0.0;
-  if (beta <= beta_old && law.dupre <= beta_old * energy) c.internal[3] = beta;
+  double beta = 0.0;
+  const bool taken = damaged_beta(law, c, c.u, h, beta);
+  c.internal[1] += h * c.u(0);
+  c.internal[2] += h * c.u(1);
+  c.internal[3] = taken ? beta : c.internal[5];
+  c.internal[5] = 0.0;
   if (c.internal[3] < 1.0 && c.internal[4] < 0.0) c.internal[4] = step.time;
 }
 

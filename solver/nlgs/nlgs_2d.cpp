@@ -49,12 +49,13 @@ struct LawTerms2D {
   double wwtt = 0, wwnn = 0;          // modified diagonal of the law (WW off-diagonal = W's)
   double cor_t = 0, cor_n = 0;        // law correction added to the reaction
   double kt = 0, kn = 0, radh_t = 0;  // cohesive zone: r_coh = (radh_t, 0) + diag(kt, kn) uu
-  // Cohesive zone: A = (I − WW K)⁻¹ and A WW, fixed within a step (cohesive_solve).
+  // Cohesive zone: A = (I − WW K)⁻¹ and A WW, fixed between the checks (cohesive_solve).
   Matrix2d A = Matrix2d::Zero(), A_WW = Matrix2d::Zero();
 };
 
-// The cohesive zone's fixed matrices (contact-laws.md §3.5), once per contact and step: inverting
-// and multiplying them at every visit took BridgePL_GroundJC's sweeps 0.226 s instead of 0.186 s.
+// The cohesive zone's fixed matrices (contact-laws.md §3.5), once per contact and step, and again
+// after a check that changed β: inverting and multiplying them at every visit took
+// BridgePL_GroundJC's sweeps 0.226 s instead of 0.186 s.
 void prepare_cohesive_terms(double wtn, LawTerms2D& l) {
   Matrix2d WW;
   WW << l.wwtt, wtn, wtn, l.wwnn;
@@ -167,13 +168,18 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   std::vector<SweepContact2D> hot(count);
   std::vector<ContactReaction2D> reaction(count);
   std::vector<LawTerms2D> terms;
+  const LawStep law_step{h, 0.0, first_step, first_preparation};
+  std::vector<std::uint8_t> law_updates_at_check(scene.laws.size());
+  bool any_update_at_check = false;
+  for (std::size_t l = 0; l < scene.laws.size(); ++l)
+    any_update_at_check |= (law_updates_at_check[l] = updates_at_check(scene.laws[l].law)) != 0;
   v = bodies.velocity_free;
   double q2 = 0.0;
   for (std::size_t a = 0; a < count; ++a) {
     Interaction2D& c = contacts[a];
     const ContactLaw& law = scene.laws[static_cast<std::size_t>(c.law)].law;
     c.W = delassus_block(c, inverse_mass);
-    prepare_local_problem_2d(law, c, LawStep{h, 0.0, first_step, first_preparation});
+    prepare_local_problem_2d(law, c, law_step);
     if (c.inactive) c.r.setZero();
     SweepContact2D& k = hot[a];
     k.cd = c.candidate_body;
@@ -223,6 +229,22 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   const LawTerms2D plain_terms;  // WW = W, no correction (wwtt, wwnn unused: W's are read)
   auto law_terms_of = [&](const SweepContact2D& c) -> const LawTerms2D& {
     return c.law_terms >= 0 ? terms[static_cast<std::size_t>(c.law_terms)] : plain_terms;
+  };
+
+  // After a check changed a contact's law state (update_law_at_check): its μ and cohesive terms.
+  // A contact whose law updates at checks is cohesive at the start, so it has its LawTerms2D.
+  auto refresh_law_terms = [&](std::size_t a) {
+    const Interaction2D& c = contacts[a];
+    SweepContact2D& k = hot[a];
+    k.mu = c.mu;
+    k.inverse = signorini_coulomb_reciprocals_2d(k.wtt, k.wtn, k.wnn, k.mu);
+    if (k.law_terms < 0) return;
+    LawTerms2D& l = terms[static_cast<std::size_t>(k.law_terms)];
+    l.cohesive = c.cohesive;
+    l.kt = c.cohesive_slope(0);
+    l.kn = c.cohesive_slope(1);
+    l.radh_t = c.cohesive_shift_t;
+    if (l.cohesive) prepare_cohesive_terms(k.wtn, l);
   };
 
   std::vector<std::uint32_t> order(count);
@@ -333,6 +355,15 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
         r1t = r1n = 0.0;
       }
       const double u2t = c.wtt * r2t + c.wtn * r2n + uft, u2n = c.wtn * r2t + c.wnn * r2n + ufn;
+      // Laws that re-evaluate their state at a check do it with this solution's velocity; the
+      // sweeps after the check read the contact's new terms.
+      if (any_update_at_check && !c.inactive) {
+        Interaction2D& full = contacts[a];
+        const ContactLaw& law = scene.laws[static_cast<std::size_t>(full.law)].law;
+        if (law_updates_at_check[static_cast<std::size_t>(full.law)] &&
+            update_law_at_check(law, full, Vector2d(u2t, u2n), law_step))
+          refresh_law_terms(a);
+      }
       const double mt = 0.5 * (r1t + r2t), mn = 0.5 * (r1n + r2n);
       const double dvt = u(0) - u2t, dvn = u(1) - u2n;
       if (mt == 0.0 && mn == 0.0) ++vanishing;

@@ -191,5 +191,40 @@ TEST(Rigid2DAnalytic, SoundCohesiveInterfaceHoldsAHangingDiskFromTheFirstStepOnl
   }
 }
 
+// As in 3D (Rigid3DAnalytic.CohesiveZoneTornInOneStepReactsWithTheBetaItStores): two disks hanging
+// in a chain under a JONCx, both interfaces sound IQS_MAC_CZM; the lower disk leaves at 1 m/s and
+// tears its interface in the first step. β is re-evaluated at each convergence check (mod_nlgs
+// updt_CZM(.false.)) and the sweeps after it use it, so at convergence the torn interface's
+// reaction is the cohesive traction of the β the step stores: r_n = −L β² h cn δn_end.
+TEST(Rigid2DAnalytic, CohesiveInterfaceTornInOneStepReactsWithTheBetaItStores) {
+  const double r = 0.1, h = 1e-3, cn = 1e8;
+  SceneBuilder2D b;
+  b.add_disk(0.0, -r, r, 1000.0);
+  const int lower = b.add_disk(0.0, -3.0 * r, r, 1000.0);
+  b.add_fixed_joncx(0.0, 0.05, 0.0, 1.0, 0.05);
+  b.add_law("mac01", IqsMacCzm{0.3, 0.3, cn, cn, 0.0, 1.0});  // w = 1 J/m² (contact length 1)
+  b.see("DISKx", "BLEUx", "mac01", "JONCx", "WALLx", 0.01);
+  b.see("DISKx", "BLEUx", "mac01", "DISKx", "BLEUx", 0.01);
+  b.set_velocity(lower, Eigen::Vector3d(0.0, -1.0, 0.0));
+  Scene2D scene = b.build();
+  RunState2D state = run_state(scene, h);
+  NlgsOptions options = converged_options();
+  options.gs_it1 = 1;  // a check after every sweep
+  options.residual_target = 0.0;
+  const NlgsResult result = step_2d(scene, state, options);
+  EXPECT_TRUE(result.converged);
+  EXPECT_GT(result.iterations, 2);
+  ASSERT_EQ(state.contacts.size(), 2u);
+  int torn = 0;
+  for (const Interaction2D& c : state.contacts) {
+    const double beta = c.internal[3], opening = c.internal[2];
+    if (beta == 1.0) continue;
+    ++torn;
+    EXPECT_GT(opening, 0.0);
+    EXPECT_NEAR(c.r(1), -c.internal[0] * beta * beta * h * cn * opening, 1e-3 * std::abs(c.r(1)));
+  }
+  EXPECT_GE(torn, 1);
+}
+
 }  // namespace
 }  // namespace lmgc::solver

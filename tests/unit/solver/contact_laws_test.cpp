@@ -221,6 +221,28 @@ TEST(IqsMacCzm, StartsUndamagedAndDamagesUnderOpening) {
   EXPECT_EQ(c.internal[4], 0.5);  // TPSini: time of the first damage
 }
 
+TEST(IqsMacCzm, TwoDimensionalBetaIsReEvaluatedAtEachCheckAndTheChecksBetaIsStored) {
+  const IqsMacCzm law{0.3, 0.4, 2e6, 1e6, 0.0, 10.0};
+  Interaction2D c = contact_2d(0.0);
+  prepare_law(law, c, LawStep{h, h, true, true});
+  c.length = 0.5;
+  prepare_law(law, c, LawStep{h, h, false, false});  // L = 0.5
+  EXPECT_EQ(c.internal[5], 1.0);                     // the β in use
+  EXPECT_FALSE(update_law_at_check(law, c, Eigen::Vector2d(0.0, 1.0), LawStep{h, h, false, false}));
+  // Opening 8 mm: cn δn² = 128 > w = 10, β = w / (cn δn²).
+  ASSERT_TRUE(update_law_at_check(law, c, Eigen::Vector2d(0.0, 8.0), LawStep{h, h, false, false}));
+  const double beta = 10.0 / 128.0;
+  EXPECT_DOUBLE_EQ(c.internal[5], beta);
+  EXPECT_EQ(c.internal[3], 1.0);
+  EXPECT_DOUBLE_EQ(c.mu, 0.4 * (1.0 - beta));
+  EXPECT_DOUBLE_EQ(c.cohesive_slope(1), -0.5 * beta * beta * h * h * 2e6);
+  // The final velocity stores less than w: the checks' β is stored.
+  c.u = Eigen::Vector2d(0.0, 1.0);
+  finish_law(law, c, LawStep{h, h, false, false});
+  EXPECT_DOUBLE_EQ(c.internal[3], beta);
+  EXPECT_EQ(c.internal[5], 0.0);  // not carried over
+}
+
 TEST(IqsMacCzm, ContactsCreatedAfterTheFirstStepStartBroken) {
   // LMGC90 makes the interface sound (β = 1) only at the run's first step (init_CZM, Nstep = 1).
   const IqsMacCzm law{0.3, 0.4, 1e6, 1e6, 0.0, 10.0};
