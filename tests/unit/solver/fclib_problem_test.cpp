@@ -267,6 +267,24 @@ TEST(LocalProblemNlgs, RandomWellConditionedProblemConvergesInEveryVariant) {
   }
 }
 
+// The sweeps compute the exact error only now and then (at a block's end, every tenth sweep, and once
+// their own estimate nears the tolerance): a cap that stops them in between still returns the exact
+// error of the reactions it returns, and never the last exact error of an earlier iterate.
+TEST(LocalProblemNlgs, ASweepCapBetweenExactErrorsReturnsTheExactErrorOfTheReturnedReactions) {
+  const FrictionalContactProblem<3> p = random_problem(6, 7);
+  for (const int cap : {1, 3, 7, 13, 23}) {
+    LocalProblemNlgsOptions options;
+    options.newton_first = false;
+    options.newton_when_stalled = false;
+    options.tolerance = 1e-14;
+    options.max_sweeps = cap;
+    Eigen::VectorXd r;
+    const LocalProblemNlgsResult result = solve_local_problem_nlgs(p, r, options);
+    EXPECT_EQ(result.sweeps, cap);
+    EXPECT_EQ(natural_map_error(p, r), result.error) << cap << " sweeps";
+  }
+}
+
 TEST(LocalProblemNlgs, NewtonFirstSolvesARandomWellConditionedProblemInAFewNewtonSteps) {
   const FrictionalContactProblem<3> p = random_problem(6, 7);
   LocalProblemNlgsOptions options;
