@@ -177,7 +177,11 @@ std::optional<CaseFiles> load_case(const fs::path& case_dir, DiagnosticSink& sin
   for (const auto& name : others) {
     files.unread_files.push_back(name);
     sink.report("L1021", grammar::Location{(datbox / name).string(), {}},
-                "'" + name + "' is not read by LMGC90; it is not checked");
+                name == "PTPT3_NETWORK.DAT"
+                    ? "'" + name +
+                          "' is read only when the run asks for it (lmgc-solve --ptpt3-network, "
+                          "PTPT3_LoadNetwork); this run does not, so it is not checked"
+                    : "'" + name + "' is not read by LMGC90; it is not checked");
   }
   return files;
 }

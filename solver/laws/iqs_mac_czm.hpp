@@ -40,7 +40,7 @@ inline bool damaged_beta(const IqsMacCzm& law, const Interaction2D& c, const Eig
                          double& beta) {
   const double dt = c.internal[1] + h * u(0), dn = c.internal[2] + h * u(1);
   const double beta_start = c.internal[3];
-  const double energy = law.ct * dt * dt + law.cn * (dn > 0.0 ? dn * dn : 0.0);
+  const double energy = law.ct * (dt * dt) + law.cn * (dn > 0.0 ? dn * dn : 0.0);
   beta = (h * law.dupre + beta_start * law.visco) / (law.visco + h * energy);
   if (beta < 1e-12) beta = 0.0;
   return beta <= beta_start && law.dupre <= beta_start * energy;

@@ -125,15 +125,27 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
   };
   // Whether the sweep that ended with `estimate`, the n-th of its line, computes the exact error.
   // `estimates`: the line's last three, newest first.
+  // The error the exact check watches for: the tolerance, or a milestone not reached yet.
+  const auto watched_error = [&] {
+    double watched = options.tolerance;
+    for (std::size_t m = 0; m < options.milestones.size(); ++m)
+      if (result.milestone_seconds[m] < 0.0) watched = std::max(watched, options.milestones[m]);
+    return watched;
+  };
   const auto exact_after = [&](const std::array<double, 3>& estimates, int n) {
     const double rate = estimates[1] > 0.0 ? std::min(1.0, estimates[0] / estimates[1]) : 1.0;
     const double earlier_rate = estimates[2] > 0.0 ? std::min(1.0, estimates[1] / estimates[2]) : 1.0;
     const double speed_up = earlier_rate > 0.0 ? std::min(1.0, rate / earlier_rate) : 1.0;
     const double predicted = estimates[0] * rate * speed_up;
-    return predicted <= kExactBelow * options.tolerance || n == 1 || n % kExactEvery == 0;
+    return !(predicted > kExactBelow * watched_error()) || n == 1 || n % kExactEvery == 0;
   };
   std::array<double, 3> sweep_estimates{}, race_estimates{};
   bool error_stale = false;  // r has moved since result.error was computed
+  // After r jumps (a Newton step, a restart), its earlier estimates say nothing of its rate.
+  const auto r_jumped = [&] {
+    sweep_estimates = {};
+    error_stale = false;
+  };
   const auto sweep = [&] {
     double estimate = 0.0;
     result.local_failures = sweep_over(r, order, random, estimate);
@@ -179,7 +191,7 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
   std::vector<int> race_order = order;
   std::mt19937_64 race_shuffle(options.seed + 1);
   double race_seconds = 0.0, newton_seconds = 0.0;
-  bool racing = false, race_started = false;
+  bool racing = false, race_started = false, race_stale = false;
   // The race's first sweep is free: a problem one sweep solves never waits for a Newton step.
   const auto race_sweeps = [&] {
     while (racing && running() && (race_seconds < options.race_share * newton_seconds || !race_started)) {
@@ -189,7 +201,8 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
       race_estimates = {estimate, race_estimates[0], race_estimates[1]};
       race_started = true;
       ++result.race_sweeps;
-      if (exact_after(race_estimates, result.race_sweeps)) consider(race, natural_map_error(problem, race));
+      race_stale = !exact_after(race_estimates, result.race_sweeps);
+      if (!race_stale) consider(race, natural_map_error(problem, race));
       race_seconds += elapsed() - sweep_start;
     }
   };
@@ -205,6 +218,7 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
       race_sweeps();
       if (!progressed) break;
       ++result.newton_steps;
+      sweep_estimates = {};  // r jumped
       evaluate();
       phase_best = std::min(phase_best, result.error);
       if (result.error < 0.5 * error_at_last_halving) {
@@ -220,7 +234,7 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
     if (best_error < result.error) {
       r = best;
       result.error = best_error;
-      error_stale = false;
+      r_jumped();
     }
   };
 
@@ -260,12 +274,13 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
         if (!running() || sweeps_steady(before, result.error)) break;
         r = start;
         result.error = start_error;
-        error_stale = false;
+        r_jumped();
       }
       sweep_block(options.opening_sweeps + attempt);
       if (running()) newton_phase();
     }
     racing = false;
+    if (race_stale) consider(race, natural_map_error(problem, race));
     resume_from_best();
   }
 
@@ -297,7 +312,7 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
     if (best_error > options.tolerance && phase_best > kNewtonPhaseGain * error_before_newton) {
       r = r_before_newton;
       result.error = error_before_newton;
-      error_stale = false;
+      r_jumped();
     } else {
       resume_from_best();
     }

@@ -247,6 +247,13 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     if (l.cohesive) prepare_cohesive_terms(k.wtn, l);
   };
 
+  const auto update_at_post = [&](std::size_t a, double ut, double un) {
+    Interaction2D& full = contacts[a];
+    if (law_updates_at_check[static_cast<std::size_t>(full.law)])
+      update_law_at_check(scene.laws[static_cast<std::size_t>(full.law)].law, full, Vector2d(ut, un),
+                          law_step);
+  };
+
   std::vector<std::uint32_t> order(count);
   std::iota(order.begin(), order.end(), 0u);
   if (options.quick_scramble) scramble.prepare(count);
@@ -297,6 +304,12 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       double rt, rn;
       ContactStatus status;
       local_solve(c, terms, uft, ufn, rt, rn, status);
+      // LMGC90's post pass (solve_nlgs i_post) re-evaluates the laws' state as a check does, from
+      // this local solution's velocity; the end of the step then stores it unless the final
+      // velocity's is taken.
+      if (post && any_update_at_check) [[unlikely]]
+        update_at_post(scrambled ? order[index] : index, c.wtt * rt + c.wtn * rn + uft,
+                       c.wtn * rt + c.wnn * rn + ufn);
       if (relaxed) {
         rt = relax * rt + keep * s.rt;
         rn = relax * rn + keep * s.rn;
