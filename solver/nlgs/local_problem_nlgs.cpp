@@ -34,7 +34,9 @@ constexpr int kOpeningNewtonAttempts = 4;
 // three estimates: the last rate, times its own improvement where the convergence speeds up (the last
 // sweeps of LMGC_GlobalFrictionContactProblem00046 divide the error by 1e2, then 1e8). The exact error
 // is computed when that prediction comes within kExactBelow × tolerance, after a line's first sweep,
-// and every kExactEvery sweeps (the milestones, the race's best).
+// and every kExactEvery sweeps (the race's best, a NaN). The milestones (time to 1e-4, ...) are
+// taken from the estimates as well: the sweep whose estimate first falls below one, at most one sweep
+// after the iterate that did.
 constexpr double kExactBelow = 10.0;
 constexpr int kExactEvery = 10;
 
@@ -125,19 +127,12 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
   };
   // Whether the sweep that ended with `estimate`, the n-th of its line, computes the exact error.
   // `estimates`: the line's last three, newest first.
-  // The error the exact check watches for: the tolerance, or a milestone not reached yet.
-  const auto watched_error = [&] {
-    double watched = options.tolerance;
-    for (std::size_t m = 0; m < options.milestones.size(); ++m)
-      if (result.milestone_seconds[m] < 0.0) watched = std::max(watched, options.milestones[m]);
-    return watched;
-  };
   const auto exact_after = [&](const std::array<double, 3>& estimates, int n) {
     const double rate = estimates[1] > 0.0 ? std::min(1.0, estimates[0] / estimates[1]) : 1.0;
     const double earlier_rate = estimates[2] > 0.0 ? std::min(1.0, estimates[1] / estimates[2]) : 1.0;
     const double speed_up = earlier_rate > 0.0 ? std::min(1.0, rate / earlier_rate) : 1.0;
     const double predicted = estimates[0] * rate * speed_up;
-    return !(predicted > kExactBelow * watched_error()) || n == 1 || n % kExactEvery == 0;
+    return !(predicted > kExactBelow * options.tolerance) || n == 1 || n % kExactEvery == 0;
   };
   std::array<double, 3> sweep_estimates{}, race_estimates{};
   bool error_stale = false;  // r has moved since result.error was computed
@@ -150,6 +145,7 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
     double estimate = 0.0;
     result.local_failures = sweep_over(r, order, random, estimate);
     sweep_estimates = {estimate, sweep_estimates[0], sweep_estimates[1]};
+    record(estimate, result.sweeps + result.race_sweeps + 1);
     error_stale = true;
   };
 
@@ -199,6 +195,7 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
       double estimate = 0.0;
       sweep_over(race, race_order, race_shuffle, estimate);
       race_estimates = {estimate, race_estimates[0], race_estimates[1]};
+      record(estimate, result.sweeps + result.race_sweeps + 1);
       race_started = true;
       ++result.race_sweeps;
       race_stale = !exact_after(race_estimates, result.race_sweeps);
