@@ -24,6 +24,7 @@
 #include "grammar/gpv/parser.hpp"
 #include "grammar/models/parser.hpp"
 #include "grammar/postpro/parser.hpp"
+#include "grammar/ptpt3_network/parser.hpp"
 #include "grammar/tact_behav/parser.hpp"
 #include "grammar/vloc_rloc/parser.hpp"
 #include "tests/support/run_tool.hpp"
@@ -45,6 +46,7 @@ enum class Reader {
   models,
   drv_dof,
   evolution,
+  ptpt3_network,
   dof,
   vloc_rloc,
   gpv,
@@ -128,6 +130,9 @@ const std::string kDrvDof =
 // An evolution file: one list-directed 't v' pair per line.
 const std::string kEvolution =
     "0.0000000D+00 0.0000000D+00\n0.1000000D+01 0.5000000D+00\n0.2000000D+01 0.5000000D+00\n";
+
+// A PTPT3 network: two links, one across the x period with iloop = 1.
+const std::string kPtpt3Network = " 1 3 0 0 0 0.1000000D+01\n 4 2 1 0 1 0.1000000D+01\n";
 
 // A DOF file holding the default case's disk (layout of tests/unit/grammar/dof), lines 1-14.
 const std::string kDashes = "!" + std::string(71, '-') + "\n";
@@ -397,6 +402,17 @@ std::vector<Fixture> fixtures() {
        .column = 181,
        .long_line = 3},
 
+      // ---- PTPT3_NETWORK.DAT
+      {"Ptpt3NetworkAccepted", ptpt3_network, kPtpt3Network, ""},
+      {"Ptpt3NetworkRealPoint", ptpt3_network, edit(kPtpt3Network, " 4 2 ", " 4.0 2 "), "L1004", error, 2, 2},
+      {"Ptpt3NetworkMalformedLength", ptpt3_network,
+       edit(kPtpt3Network, "1 0.1000000D+01", "1 0.1O00000D+01"), "L1002", error, 2, 12},
+      {"Ptpt3NetworkMissingLength", ptpt3_network, edit(kPtpt3Network, " 1 0.1000000D+01\n", " 1\n"), "L1015",
+       error, 2, 11},
+      {"Ptpt3NetworkTrailingText", ptpt3_network,
+       edit(kPtpt3Network, " 0.1000000D+01\n 4", " 0.1000000D+01 x\n 4"), "L1019", warning, 1, 26},
+      {"Ptpt3NetworkEmptyFileIsNoLink", ptpt3_network, "", ""},
+
       // ---- DOF.INI
       {"DofTruncatedBlock", dof, kDof.substr(0, kDof.find("$$$$$$")), "L1005", error, 11, 91},
       {"DofUnknownNodeType", dof, edit(kDof, " NO3xx", " NO7xx"), "L1001", error, 10, 2},
@@ -522,6 +538,9 @@ std::vector<grammar::Diagnostic> read_fixture(const Fixture& f) {
       break;
     case Reader::evolution:
       grammar::parse_evolution(source, sink);
+      break;
+    case Reader::ptpt3_network:
+      grammar::parse_ptpt3_network(source, sink);
       break;
     case Reader::dof:
       grammar::parse_dof(source, sink);
