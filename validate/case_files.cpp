@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <system_error>
@@ -43,6 +44,9 @@ struct DatboxFileKind {
   std::string_view name;
   Requirement requirement;
   void (*parse)(CaseFiles&, const SourceText&, DiagnosticSink&);
+  // A file LMGC90 reads only when the run's script asks for it: the option that says so, and how.
+  bool LoadOptions::*asked = nullptr;
+  std::string_view asked_as = {};
 };
 
 constexpr DatboxFileKind kDatboxFiles[] = {
@@ -75,7 +79,8 @@ constexpr DatboxFileKind kDatboxFiles[] = {
     {"PTPT3_NETWORK.DAT", Requirement::optional,
      [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) {
        c.ptpt3_network = grammar::parse_ptpt3_network(s, d);
-     }},
+     },
+     &LoadOptions::ptpt3_network, "lmgc-solve --ptpt3-network, PTPT3_LoadNetwork"},
 };
 
 bool read_whole_file(const fs::path& path, std::string& text) {
@@ -128,9 +133,13 @@ std::optional<CaseFiles> load_case(const fs::path& case_dir, DiagnosticSink& sin
     return &it->second;
   };
 
+  std::map<std::string, std::string_view> not_asked;  // file name → how a run asks for it
   for (const DatboxFileKind& kind : kDatboxFiles) {
     const std::string name(kind.name);
-    if (name == "PTPT3_NETWORK.DAT" && !options.ptpt3_network) continue;
+    if (kind.asked && !(options.*kind.asked)) {
+      not_asked.emplace(name, kind.asked_as);
+      continue;
+    }
     known.insert(name);
     const fs::path path = datbox / name;
     if (!fs::exists(path, ec)) {
@@ -176,11 +185,11 @@ std::optional<CaseFiles> load_case(const fs::path& case_dir, DiagnosticSink& sin
   std::sort(others.begin(), others.end());
   for (const auto& name : others) {
     files.unread_files.push_back(name);
+    const auto asked = not_asked.find(name);
     sink.report("L1021", grammar::Location{(datbox / name).string(), {}},
-                name == "PTPT3_NETWORK.DAT"
-                    ? "'" + name +
-                          "' is read only when the run asks for it (lmgc-solve --ptpt3-network, "
-                          "PTPT3_LoadNetwork); this run does not, so it is not checked"
+                asked != not_asked.end()
+                    ? "'" + name + "' is read only when the run asks for it (" + std::string(asked->second) +
+                          "); this run does not, so it is not checked"
                     : "'" + name + "' is not read by LMGC90; it is not checked");
   }
   return files;

@@ -23,8 +23,24 @@ Vector3d link_position(const Scene3D& scene, std::size_t k, LinkLength length) {
   return b.reference[body] + b.frame_initial[body] * c.shift;
 }
 
-Vector3d period_shift(const Scene3D& scene, const std::array<std::int32_t, 2>& periods) {
-  return Vector3d(periods[0] * scene.x_period, periods[1] * scene.y_period, 0.0);
+// The scene's PT3Dx contactors in contactor order: LMGC90's PT3Dx numbering, from 1.
+std::vector<std::size_t> point_contactors(const Scene3D& scene) {
+  std::vector<std::size_t> points;
+  for (std::size_t k = 0; k < scene.contactors.size(); ++k)
+    if (scene.contactors[k].shape == ContactorShape3D::point) points.push_back(k);
+  return points;
+}
+
+// The first PTPT3 visibility row for two colours, read in either order as get_isee reads rows; -1
+// when none.
+std::int32_t ptpt3_row(const Scene3D& scene, const std::string& a, const std::string& b) {
+  for (std::size_t r = 0; r < scene.visibility.size(); ++r) {
+    const Visibility3D& v = scene.visibility[r];
+    if (v.family == PairFamily3D::PTPT3 && ((v.candidate_color == a && v.antagonist_color == b) ||
+                                            (v.candidate_color == b && v.antagonist_color == a)))
+      return static_cast<std::int32_t>(r);
+  }
+  return -1;
 }
 
 // pair_rank: the links of one pair numbered 0, 1, ... in list order.
@@ -35,11 +51,13 @@ void rank_pairs(std::vector<PointLink3D>& links) {
 
 }  // namespace
 
+Vector3d period_shift(const Scene3D& scene, const std::array<std::int32_t, 2>& periods) {
+  return Vector3d(periods[0] * scene.x_period, periods[1] * scene.y_period, 0.0);
+}
+
 std::vector<PointLink3D> link_points_3d(const Scene3D& scene, LinkLength length) {
   std::vector<PointLink3D> links;
-  std::vector<std::size_t> points;
-  for (std::size_t k = 0; k < scene.contactors.size(); ++k)
-    if (scene.contactors[k].shape == ContactorShape3D::point) points.push_back(k);
+  const std::vector<std::size_t> points = point_contactors(scene);
   // The images tried besides the direct pair: those within one period of the candidate along each
   // periodic axis, counted in the periodic cell (points wrapped into it) and kept as the shift
   // between the points where they are, so that points outside the cell link as inside.
@@ -57,29 +75,23 @@ std::vector<PointLink3D> link_points_3d(const Scene3D& scene, LinkLength length)
     for (std::size_t q = p + 1; q < points.size(); ++q) {
       const Contactor3D& an = scene.contactors[points[q]];
       if (cd.body == an.body) continue;
-      for (std::size_t row = 0; row < scene.visibility.size(); ++row) {
-        const Visibility3D& v = scene.visibility[row];
-        // get_isee is symmetric: the row may name the two colours in either order.
-        if (v.family != PairFamily3D::PTPT3 ||
-            !((v.candidate_color == cd.color && v.antagonist_color == an.color) ||
-              (v.candidate_color == an.color && v.antagonist_color == cd.color)))
-          continue;
-        const Vector3d an_at = link_position(scene, points[q], length);
-        const std::array<std::int32_t, 2> an_cell = cell(an_at);
-        tried.assign(1, {0, 0});
-        for (int iy = -y_reach; iy <= y_reach; ++iy)
-          for (int ix = -x_reach; ix <= x_reach; ++ix) {
-            const std::array<std::int32_t, 2> periods = {ix + cd_cell[0] - an_cell[0],
-                                                         iy + cd_cell[1] - an_cell[1]};
-            if (std::find(tried.begin(), tried.end(), periods) == tried.end()) tried.push_back(periods);
-          }
-        for (const std::array<std::int32_t, 2>& periods : tried) {
-          const double distance = (cd_at - an_at - period_shift(scene, periods)).norm();
-          if (distance <= v.alert)
-            links.push_back({static_cast<std::int32_t>(points[p]), static_cast<std::int32_t>(points[q]),
-                             static_cast<std::int32_t>(row), distance, periods, false, 0});
+      const std::int32_t row = ptpt3_row(scene, cd.color, an.color);
+      if (row < 0) continue;
+      const double alert = scene.visibility[static_cast<std::size_t>(row)].alert;
+      const Vector3d an_at = link_position(scene, points[q], length);
+      const std::array<std::int32_t, 2> an_cell = cell(an_at);
+      tried.assign(1, {0, 0});
+      for (int iy = -y_reach; iy <= y_reach; ++iy)
+        for (int ix = -x_reach; ix <= x_reach; ++ix) {
+          const std::array<std::int32_t, 2> periods = {ix + cd_cell[0] - an_cell[0],
+                                                       iy + cd_cell[1] - an_cell[1]};
+          if (std::find(tried.begin(), tried.end(), periods) == tried.end()) tried.push_back(periods);
         }
-        break;
+      for (const std::array<std::int32_t, 2>& periods : tried) {
+        const double distance = (cd_at - an_at - period_shift(scene, periods)).norm();
+        if (distance <= alert)
+          links.push_back({static_cast<std::int32_t>(points[p]), static_cast<std::int32_t>(points[q]), row,
+                           distance, periods, false, 0});
       }
     }
   }
@@ -90,9 +102,7 @@ std::vector<PointLink3D> link_points_3d(const Scene3D& scene, LinkLength length)
 bool network_links_3d(const Scene3D& scene, const grammar::Ptpt3NetworkFile& network, LinkLength length,
                       std::vector<PointLink3D>& links, std::string& error) {
   links.clear();
-  std::vector<std::size_t> points;
-  for (std::size_t k = 0; k < scene.contactors.size(); ++k)
-    if (scene.contactors[k].shape == ContactorShape3D::point) points.push_back(k);
+  const std::vector<std::size_t> points = point_contactors(scene);
   for (std::size_t l = 0; l < network.links.size(); ++l) {
     const grammar::Ptpt3Link& link = network.links[l];
     const std::string where = "PTPT3_NETWORK.DAT link " + std::to_string(l + 1) + ": ";
@@ -113,14 +123,7 @@ bool network_links_3d(const Scene3D& scene, const grammar::Ptpt3NetworkFile& net
       error = where + "both points are on body " + std::to_string(cd.body + 1);
       return false;
     }
-    std::int32_t row = -1;
-    for (std::size_t r = 0; r < scene.visibility.size() && row < 0; ++r) {
-      const Visibility3D& v = scene.visibility[r];
-      if (v.family == PairFamily3D::PTPT3 &&
-          ((v.candidate_color == cd.color && v.antagonist_color == an.color) ||
-           (v.candidate_color == an.color && v.antagonist_color == cd.color)))
-        row = static_cast<std::int32_t>(r);
-    }
+    const std::int32_t row = ptpt3_row(scene, cd.color, an.color);
     if (row < 0) {
       error = where + "no PTPT3 visibility row reads PT3Dx " + cd.color + " against PT3Dx " + an.color;
       return false;

@@ -5,6 +5,7 @@
 // (PTPT: gap = distance); LMGC90 contact_3D/mod_PTPT3.f90 compute_box (:340-693), compute_contact
 // (:1018-1524).
 #include <Eigen/Core>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,9 @@ std::vector<PointLink3D> link_points_3d(const Scene3D& scene,
 // two points of one body, or a link without a row (lmgc-check reports these as L2021, L2022).
 bool network_links_3d(const Scene3D& scene, const grammar::Ptpt3NetworkFile& network, LinkLength length,
                       std::vector<PointLink3D>& links, std::string& error);
+
+// The offset of `periods` periodic images (x, y) in this scene.
+Eigen::Vector3d period_shift(const Scene3D& scene, const std::array<std::int32_t, 2>& periods);
 
 // PTPT3's frame and gap for points `candidate` and `antagonist`: n from the antagonist to the
 // candidate, gap = distance, point = midpoint, t by mod_PTPT3's rule (a fixed axis when n is along

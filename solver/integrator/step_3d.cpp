@@ -484,7 +484,7 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     };
     // A link across a periodic side sees the antagonist shifted by its periods, or the candidate
     // the other way (PointLink3D).
-    const Vector3d shift(link.periods[0] * scene.x_period, link.periods[1] * scene.y_period, 0.0);
+    const Vector3d shift = period_shift(scene, link.periods);
     const Vector3d cd_point = position(i, cd_body) - (link.shift_candidate ? shift : Vector3d::Zero()),
                    an_point = position(j, an_body) + (link.shift_candidate ? Vector3d::Zero() : shift);
     const ContactGeometry3D g = point_point_geometry(cd_point, an_point);

@@ -93,11 +93,12 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
   };
 
   // One sweep over the contacts of reactions x in the given order (r's, or the race's below); returns
-  // the number of local solves that failed, and in `estimate` the natural-map error ÷ |q| of the
-  // contacts as the sweep found them (each before its own solve).
+  // the number of local solves that failed. The natural-map error ÷ |q| of the contacts as the sweep
+  // found them (each before its own solve) goes first into the line's last three `estimates`, and to
+  // the milestones (`sweeps`: this sweep's count over both lines).
   const double q_scale = q_norm > 0.0 ? q_norm : 1.0;
   const auto sweep_over = [&](Eigen::VectorXd& x, std::vector<int>& sweep_order, std::mt19937_64& shuffle,
-                              double& estimate) {
+                              std::array<double, 3>& estimates, int sweeps) {
     if (options.order == ContactOrder::shuffled_each_sweep)
       std::shuffle(sweep_order.begin(), sweep_order.end(), shuffle);
     int failures = 0;
@@ -122,7 +123,9 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
       if (options.relax != 1.0) r_a = options.relax * r_a + (1.0 - options.relax) * r_old;
       x.template segment<Dim>(Dim * a) = r_a;
     }
-    estimate = std::sqrt(estimate_squared) / q_scale;
+    const double estimate = std::sqrt(estimate_squared) / q_scale;
+    estimates = {estimate, estimates[0], estimates[1]};
+    record(estimate, sweeps);
     return failures;
   };
   // Whether the sweep that ended with `estimate`, the n-th of its line, computes the exact error.
@@ -142,10 +145,8 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
     error_stale = false;
   };
   const auto sweep = [&] {
-    double estimate = 0.0;
-    result.local_failures = sweep_over(r, order, random, estimate);
-    sweep_estimates = {estimate, sweep_estimates[0], sweep_estimates[1]};
-    record(estimate, result.sweeps + result.race_sweeps + 1);
+    result.local_failures =
+        sweep_over(r, order, random, sweep_estimates, result.sweeps + result.race_sweeps + 1);
     error_stale = true;
   };
 
@@ -192,10 +193,7 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
   const auto race_sweeps = [&] {
     while (racing && running() && (race_seconds < options.race_share * newton_seconds || !race_started)) {
       const double sweep_start = elapsed();
-      double estimate = 0.0;
-      sweep_over(race, race_order, race_shuffle, estimate);
-      race_estimates = {estimate, race_estimates[0], race_estimates[1]};
-      record(estimate, result.sweeps + result.race_sweeps + 1);
+      sweep_over(race, race_order, race_shuffle, race_estimates, result.sweeps + result.race_sweeps + 1);
       race_started = true;
       ++result.race_sweeps;
       race_stale = !exact_after(race_estimates, result.race_sweeps);
@@ -215,7 +213,7 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
       race_sweeps();
       if (!progressed) break;
       ++result.newton_steps;
-      sweep_estimates = {};  // r jumped
+      r_jumped();
       evaluate();
       phase_best = std::min(phase_best, result.error);
       if (result.error < 0.5 * error_at_last_halving) {

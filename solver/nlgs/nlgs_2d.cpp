@@ -247,11 +247,12 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     if (l.cohesive) prepare_cohesive_terms(k.wtn, l);
   };
 
-  const auto update_at_post = [&](std::size_t a, double ut, double un) {
-    Interaction2D& full = contacts[a];
-    if (law_updates_at_check[static_cast<std::size_t>(full.law)])
-      update_law_at_check(scene.laws[static_cast<std::size_t>(full.law)].law, full, Vector2d(ut, un),
-                          law_step);
+  // A check's or the post pass's re-evaluation of contact a's law state (update_law_at_check) from
+  // the velocity (ut, un) of its local solution; true when the state changed.
+  const auto update_law_state = [&](std::size_t a, double ut, double un) {
+    Interaction2D& c = contacts[a];
+    const auto l = static_cast<std::size_t>(c.law);
+    return law_updates_at_check[l] && update_law_at_check(scene.laws[l].law, c, Vector2d(ut, un), law_step);
   };
 
   std::vector<std::uint32_t> order(count);
@@ -308,8 +309,8 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       // this local solution's velocity; the end of the step then stores it unless the final
       // velocity's is taken.
       if (post && any_update_at_check) [[unlikely]]
-        update_at_post(scrambled ? order[index] : index, c.wtt * rt + c.wtn * rn + uft,
-                       c.wtn * rt + c.wnn * rn + ufn);
+        update_law_state(scrambled ? order[index] : index, c.wtt * rt + c.wtn * rn + uft,
+                         c.wtn * rt + c.wnn * rn + ufn);
       if (relaxed) {
         rt = relax * rt + keep * s.rt;
         rn = relax * rn + keep * s.rn;
@@ -370,13 +371,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       const double u2t = c.wtt * r2t + c.wtn * r2n + uft, u2n = c.wtn * r2t + c.wnn * r2n + ufn;
       // Laws that re-evaluate their state at a check do it with this solution's velocity; the
       // sweeps after the check read the contact's new terms.
-      if (any_update_at_check && !c.inactive) {
-        Interaction2D& full = contacts[a];
-        const ContactLaw& law = scene.laws[static_cast<std::size_t>(full.law)].law;
-        if (law_updates_at_check[static_cast<std::size_t>(full.law)] &&
-            update_law_at_check(law, full, Vector2d(u2t, u2n), law_step))
-          refresh_law_terms(a);
-      }
+      if (any_update_at_check && !c.inactive && update_law_state(a, u2t, u2n)) refresh_law_terms(a);
       const double mt = 0.5 * (r1t + r2t), mn = 0.5 * (r1n + r2n);
       const double dvt = u(0) - u2t, dvn = u(1) - u2n;
       if (mt == 0.0 && mn == 0.0) ++vanishing;

@@ -92,8 +92,7 @@ TEST(LmgcSolve, APtpt3NetworkIsReadOnlyWithItsFlag) {
   std::ofstream(dir / "DATBOX" / "PTPT3_NETWORK.DAT") << " 1 9 1 0 0 1.0\n";
   EXPECT_EQ(run_tool("lmgc-solve", "'" + dir.string() + "' --quiet --steps 2").exit_code, 0);
   EXPECT_EQ(run_tool("lmgc-solve", "'" + dir.string() + "' --quiet --steps 2 --ptpt3-network").exit_code, 1);
-  EXPECT_EQ(run_tool("lmgc-check", "'" + dir.string() + "' --json").output.find("L2021") != std::string::npos,
-            true);
+  EXPECT_NE(run_tool("lmgc-check", "'" + dir.string() + "' --json").output.find("L2021"), std::string::npos);
 }
 
 TEST(LmgcSolve, UsageErrorsExitTwo) {
