@@ -6,9 +6,10 @@ For every example with reference_lmgc90/RUN.md: runs lmgc-solve (release build) 
 of the example's command.py (as RUN.md records them, plus the chipy calls of its script that have a
 flag: new rotation scheme, diagonal resolution, periodic sides, source point) for the number of
 steps LMGC90 ran (or --steps-cap), then reads OUTBOX/run_report.csv and prints one markdown table row: seconds per step,
-NLGS sweep rate (contact updates per second = sum(iterations x contacts) / time in the sweeps, the
+NLGS sweep rate (contact updates per second = sum(sweeps run x contacts) / time in the sweeps, the
 time LMGC90's "[NLGS2] iter" timer counts), mean NLGS
-iterations, steps that hit the iteration cap, and the achieved natural-map residual / |q| (median
+iterations (as LMGC90 counts them) and the share of them run (3D skips the rest of a block whose
+sweeps stand still), steps that hit the iteration cap, and the achieved natural-map residual / |q| (median
 and worst over the steps with contacts), next to LMGC90's seconds per step, sweep rate and
 unconverged steps from RUN.md. Single thread.
 
@@ -92,7 +93,7 @@ def main():
         print(f"no examples at {examples}", file=sys.stderr)
         return 2
     header = ("| example | steps | lmgc s/step | LMGC90 s/step | speed-up | lmgc updates/s | LMGC90 updates/s "
-              "| mean iterations | capped steps (lmgc / LMGC90) | residual/‖q‖ median | worst |")
+              "| mean iterations | sweeps run | capped steps (lmgc / LMGC90) | residual/‖q‖ median | worst |")
     lines = [header, "|" + "---|" * header.count("|")[:-1] if False else "|" + "---|" * (header.count("|") - 1)]
     for name in sorted(os.listdir(examples)):
         case = os.path.join(examples, name)
@@ -128,7 +129,11 @@ def main():
         # Sweeps alone, as LMGC90's rate in RUN.md ("[NLGS2] iter" of TIMER.OUT: scramble and
         # sweeps, no set-up, checks or post pass).
         sweeps = report["sweep_seconds"].sum()
-        rate = (iterations * contacts).sum() / sweeps if sweeps > 0 else float("nan")
+        # Sweeps run: the counted iterations less those skipped once the iterates stood still (3D).
+        skipped = report["sweeps_skipped"] if "sweeps_skipped" in report.dtype.names else 0 * iterations
+        run = iterations - skipped
+        rate = (run * contacts).sum() / sweeps if sweeps > 0 else float("nan")
+        run_share = run[with_contacts].sum() / max(iterations[with_contacts].sum(), 1)
         capped = int(((report["converged"] == 0) & with_contacts).sum())
         residual = report["residual_natural_map_over_q"][with_contacts]
         median = np.median(residual) if residual.size else 0.0
@@ -136,6 +141,7 @@ def main():
         lines.append(
             f"| {name} | {steps} | {per_step:.3g} | {lmgc90_per_step:.3g} | {lmgc90_per_step / per_step:.1f}x "
             f"| {rate:.3g} | {lmgc90_rate:.3g} | {iterations[with_contacts].mean() if with_contacts.any() else 0:.0f} "
+            f"| {100 * run_share:.0f}% "
             f"| {capped}/{int(with_contacts.sum())} / {lmgc90_capped} | {median:.2e} | {worst:.2e} |")
         print(lines[-1], f"(wall {wall:.1f} s)", file=sys.stderr)
     text = "\n".join(lines) + "\n"

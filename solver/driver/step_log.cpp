@@ -47,7 +47,8 @@ StepLog::StepLog(const std::filesystem::path& outbox, const RunOptions& options)
       last_flush_(start_),
       last_progress_(start_) {
   report_ << "step,time,contacts,active,iterations,converged,mean_dvor,quad_dv,quad_dvr,"
-             "residual_natural_map_over_q,kinetic_energy,step_seconds,nlgs_seconds,sweep_seconds\n";
+             "residual_natural_map_over_q,kinetic_energy,step_seconds,nlgs_seconds,sweep_seconds,sweeps_"
+             "skipped\n";
 }
 
 StepLog::~StepLog() {
@@ -60,7 +61,7 @@ void StepLog::record(long step, double time, std::size_t contacts, const NlgsRes
   if (!result.converged) ++summary.steps_not_converged;
   summary.worst_residual = std::max(summary.worst_residual, result.residual_relative);
   // step,time,contacts,active,iterations,converged,mean_dvor,quad_dv,quad_dvr,residual,energy,
-  // step, NLGS and sweep seconds
+  // step, NLGS and sweep seconds, sweeps skipped
   std::string line;
   line.reserve(192);
   append(line, step);
@@ -77,6 +78,7 @@ void StepLog::record(long step, double time, std::size_t contacts, const NlgsRes
   append(line, step_seconds, std::chars_format::scientific, 6);
   append(line, result.seconds, std::chars_format::scientific, 6);
   append(line, result.sweep_seconds, std::chars_format::scientific, 6);
+  append(line, result.sweeps_skipped);
   line.back() = '\n';
   report_ << line;
   ++recorded_;

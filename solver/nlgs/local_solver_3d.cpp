@@ -171,7 +171,8 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
 
 LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen::Matrix3d* W_inverse_given,
                                            const Eigen::Vector3d& q, double mu,
-                                           const Eigen::Vector3d& r_start, double tolerance, double forcing) {
+                                           const Eigen::Vector3d& r_start, double tolerance, double forcing,
+                                           double keep_tolerance) {
   LocalSolution3D s;
   // A caller's inverse is all NaN when W is singular or not finite (then W is checked here); the
   // caller computed it once per step, so W needs no check per call.
@@ -195,6 +196,22 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
     const Eigen::Matrix3d& W_inverse = given ? *W_inverse_given : own_inverse;
     const Eigen::Vector3d r_stick = -W_inverse * q;
     if (r_stick(0) > 0.0 && r_stick.tail<2>().norm() <= mu * r_stick(0)) {
+      // A previous reaction that already sticks within keep_tolerance is kept, so that converged
+      // sweeps stand still instead of trading round-off. Its velocity u = W r_start + q is
+      // W (r_start - r_stick); the natural map, at most (1 + mu) |u| near the cone's interior, is
+      // computed only when that bound passes.
+      if (keep_tolerance > 0.0 && r_start(0) > 0.0 && r_start != r_stick) {
+        const double bound = keep_tolerance / (1.0 + mu);
+        if ((W * (r_start - r_stick)).squaredNorm() <= bound * bound) {
+          const double residual = natural_map_3d(r_start, W * r_start + q, mu).norm();
+          if (residual <= keep_tolerance) {
+            s.r = r_start;
+            s.residual = residual;
+            s.state = classify(r_start, mu);
+            return s;
+          }
+        }
+      }
       // Inside the cone with u = W r + q = 0: exact up to the round-off of the inverse, checked
       // only when this function inverted W itself (a caller's inverse is trusted).
       s.r = r_stick;

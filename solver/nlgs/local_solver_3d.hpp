@@ -34,11 +34,13 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
 // inverts each block once per step instead of once per sweep. With `forcing` > 0 the iterative
 // cases also stop once the residual is below `forcing` times the residual of their start (the
 // previous reaction, or -q_n rho_n e_n when that is not in the cone's interior): an inexact solve,
-// for sweeps far from convergence.
+// for sweeps far from convergence. With `keep_tolerance` > 0, when the problem sticks and `r_start`
+// solves it within keep_tolerance, `r_start` itself is returned (as a sliding start already is within
+// `tolerance`): sweeps that have converged then repeat their reactions bit for bit.
 LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen::Matrix3d* W_inverse,
                                            const Eigen::Vector3d& q, double mu,
                                            const Eigen::Vector3d& r_start, double tolerance,
-                                           double forcing = 0.0);
+                                           double forcing = 0.0, double keep_tolerance = 0.0);
 
 // LMGC90's (t, n, s) order <-> the solver's normal-first (n, t, s): swapping the first two entries
 // (rows and columns of a block) is its own inverse.

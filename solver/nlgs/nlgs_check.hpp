@@ -37,7 +37,10 @@ struct NlgsNorms {
 };
 
 struct NlgsResult {
-  int iterations = 0;  // sweeps done
+  int iterations = 0;  // sweeps done, as LMGC90 counts them (gs_it1 per block)
+  // Of those, the sweeps left out because the iterates stood still: every contact's local solve
+  // returned its reaction unchanged, so the rest of the block would not change a bit.
+  int sweeps_skipped = 0;
   bool converged = false;
   bool diverged = false;  // NaN
   NlgsNorms norms;

@@ -183,6 +183,35 @@ RC_GTEST_PROP(SignoriniCoulomb3D, InexactSolveEndsWithinForcingTimesTheStartResi
   RC_ASSERT(natural_map_3d(exact.r, W * exact.r + q, mu).norm() <= 1e-9 * (1.0 + q.norm()));
 }
 
+// With a keep tolerance (the scene NLGS's), a sticking problem whose start lies within round-off
+// distance of its exact solution returns the start itself, bit for bit; a start farther away gets
+// the exact sticking solution; and whatever is returned solves the problem within the keep tolerance
+// or the exact solve's round-off.
+RC_GTEST_PROP(SignoriniCoulomb3D, StickingStartWithinTheKeepToleranceIsReturnedBitForBit, ()) {
+  const Matrix3d W = random_spd();
+  const double mu = in_range(0.05, 2.0);
+  const double rn = in_range(0.01, 5.0);
+  const double angle = in_range(-M_PI, M_PI);
+  const Vector3d r_stick(rn, 0.5 * mu * rn * std::cos(angle), 0.5 * mu * rn * std::sin(angle));
+  const Vector3d q = -W * r_stick;
+  RC_PRE(q(0) < 0.0);
+  const double tolerance = solver_tolerance(q), keep = tolerance / 20.0;
+  const bool near = *rc::gen::arbitrary<bool>();
+  // A start off the exact solution by 1e-3 (near) or 1e2 (far) of the keep tolerance, in velocity.
+  const Vector3d direction = random_q().normalized();
+  const Matrix3d W_inverse = W.inverse();
+  const Vector3d r_start = r_stick + (near ? 1e-3 : 1e2) * keep * (W_inverse * direction);
+  RC_LOG() << describe(W, q, mu) << "\nstart " << r_start.transpose() << (near ? " near" : " far") << "\n";
+  const LocalSolution3D s = solve_signorini_coulomb_3d(W, &W_inverse, q, mu, r_start, tolerance, 0.0, keep);
+  RC_ASSERT(!s.failed);
+  RC_ASSERT(s.state == LocalCase3D::stick);
+  if (near)
+    RC_ASSERT(s.r == r_start);
+  else
+    RC_ASSERT(s.r != r_start);
+  RC_ASSERT(natural_map_3d(s.r, W * s.r + q, mu).norm() <= std::max(keep, 1e-12 * (1.0 + q.norm())));
+}
+
 // A block whose W_nn is positive but so small that -q_n / W_nn overflows makes the closed-form
 // slide non-finite (inf × 0 = NaN in r_T): that candidate is not an answer, and whatever comes back
 // is either finite or flagged as failed.
