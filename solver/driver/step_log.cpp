@@ -47,8 +47,8 @@ StepLog::StepLog(const std::filesystem::path& outbox, const RunOptions& options)
       last_flush_(start_),
       last_progress_(start_) {
   report_ << "step,time,contacts,active,iterations,converged,mean_dvor,quad_dv,quad_dvr,"
-             "residual_natural_map_over_q,kinetic_energy,step_seconds,nlgs_seconds,sweep_seconds,sweeps_"
-             "skipped\n";
+             "residual_natural_map_over_q,kinetic_energy,step_seconds,nlgs_seconds,sweep_seconds,"
+             "sweeps_skipped\n";
 }
 
 StepLog::~StepLog() {

@@ -67,8 +67,8 @@ TEST(StillSweeps3D, ABlockThatStandsStillEndsAsTheShorterBlockWouldBitForBit) {
 }
 
 TEST(StillSweeps3D, SweepsThatStillMoveAreNotSkipped) {
-  // The first step of the column falling onto the ground: the reactions build up through the
-  // whole of a short block, none of it stands still.
+  // The settled column solved again without its warm start: the reactions build up from zero
+  // through the whole of a short block, none of it stands still.
   SettledColumn column = settled_column();
   column.state = RunState3D{};
   column.state.h = 1e-3;
