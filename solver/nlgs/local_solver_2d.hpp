@@ -109,7 +109,15 @@ inline bool solve_signorini_coulomb_2d(double wtt, double wtn, double wnn,
     rt = dft * inverse.det;
     status = ContactStatus::stick;
   } else {
-    return solve_signorini_coulomb_2d(wtt, wtn, wnn, qt, qn, mu, rt, rn, status);
+    // Through locals of its own: rt, rn and status, never address-taken, stay in registers in a sweep.
+    double fallback_rt = 0.0, fallback_rn = 0.0;
+    ContactStatus fallback_status = ContactStatus::noctc;
+    const bool solved =
+        solve_signorini_coulomb_2d(wtt, wtn, wnn, qt, qn, mu, fallback_rt, fallback_rn, fallback_status);
+    rt = fallback_rt;
+    rn = fallback_rn;
+    status = fallback_status;
+    return solved;
   }
   return true;
 }

@@ -9,6 +9,7 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <numeric>
@@ -25,17 +26,32 @@ using Eigen::Matrix2d;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 
-// Read by every sweep.
+// Read by every sweep. The (t, n) components of each term sit side by side in a Vector2d, so that a
+// sweep computes both components of the relative velocity, of W r and of the impulse on a body in one
+// packed operation each (Eigen's 2-double packets), lane by lane in the order the scalar formulas
+// take: the same values bit for bit, in fewer instructions (the sweep is bound by its instruction count).
 struct SweepContact2D {
-  std::int32_t cd = 0, an = 0;  // body indices
-  std::int32_t law_terms = -1;  // index into the LawTerms2D array; -1: plain (WW = W, no correction)
-  std::uint8_t inactive = 0;
-  double nx = 0, ny = 0;                              // normal; t = (ny, -nx)
-  double gcd_t = 0, gcd_n = 0, gan_t = 0, gan_n = 0;  // ℓ×t, ℓ×n of each body
-  double wtt = 0, wtn = 0, wnn = 0;                   // Delassus block W
-  double cov_t = 0, cov_n = 0;                        // law shift of the free velocity
+  Eigen::Vector2d normal = Eigen::Vector2d::Zero();  // (nx, ny); t = (ny, -nx)
+  Eigen::Vector2d lever_cd = Eigen::Vector2d::Zero(), lever_an = Eigen::Vector2d::Zero();  // (ℓ×t, ℓ×n)
+  Eigen::Vector2d w_t = Eigen::Vector2d::Zero(), w_n = Eigen::Vector2d::Zero();            // W's columns
+  Eigen::Vector2d cov = Eigen::Vector2d::Zero();  // law shift of the free velocity
   double mu = 0;
   SignoriniCoulombReciprocals2D inverse;  // of (W, mu): the sweeps multiply instead of dividing
+  std::int32_t cd = 0, an = 0;            // body indices
+  std::int32_t law_terms = -1;  // index into the LawTerms2D array; -1: plain (WW = W, no correction)
+  std::uint8_t inactive = 0;
+
+  double nx() const { return normal.x(); }
+  double ny() const { return normal.y(); }
+  double gcd_t() const { return lever_cd.x(); }
+  double gcd_n() const { return lever_cd.y(); }
+  double gan_t() const { return lever_an.x(); }
+  double gan_n() const { return lever_an.y(); }
+  double wtt() const { return w_t.x(); }
+  double wtn() const { return w_t.y(); }
+  double wnn() const { return w_n.y(); }
+  double cov_t() const { return cov.x(); }
+  double cov_n() const { return cov.y(); }
 };
 
 // Written by every sweep.
@@ -70,25 +86,32 @@ void prepare_cohesive_terms(double wtn, LawTerms2D& l) {
   l.A_WW = l.A * WW;
 }
 
-inline Vector2d relative_velocity(const SweepContact2D& c, const std::vector<Vector3d>& v) {
-  const Vector3d& a = v[static_cast<std::size_t>(c.cd)];
-  const Vector3d& b = v[static_cast<std::size_t>(c.an)];
-  const double tx = c.ny, ty = -c.nx;
-  const double ut = tx * (a.x() - b.x()) + ty * (a.y() - b.y()) + c.gcd_t * a.z() - c.gan_t * b.z();
-  const double un = c.nx * (a.x() - b.x()) + c.ny * (a.y() - b.y()) + c.gcd_n * a.z() - c.gan_n * b.z();
-  return Vector2d(ut, un);
+// Bodies' arrays by raw pointer: a sweep holds them in registers, where through the vectors it
+// reloaded their data pointers after every velocity store (Eigen's stores may alias anything).
+inline Vector2d relative_velocity(const SweepContact2D& c, const Vector3d* v) {
+  const Vector3d& a = v[c.cd];
+  const Vector3d& b = v[c.an];
+  // ut = ((tx dx + ty dy) + ℓt_cd a_ω) − ℓt_an b_ω and un alike, both lanes at once.
+  const Vector2d across_x(c.ny(), c.nx()), across_y(-c.nx(), c.ny());  // (tx, nx), (ty, ny)
+  return across_x * (a.x() - b.x()) + across_y * (a.y() - b.y()) + c.lever_cd * a.z() - c.lever_an * b.z();
+}
+
+// u − W r, both components at once: (u_t − (W_tt r_t + W_tn r_n), u_n − (W_tn r_t + W_nn r_n)).
+inline Vector2d minus_w_r(const SweepContact2D& c, const Vector2d& u, double rt, double rn) {
+  return u - (c.w_t * rt + c.w_n * rn);
 }
 
 [[gnu::always_inline]] inline void inject(const SweepContact2D& c, double dt_, double dn,
-                                          const std::vector<Vector3d>& inverse_mass,
-                                          std::vector<Vector3d>& v) {
-  const double tx = c.ny, ty = -c.nx;
-  const double fx = dt_ * tx + dn * c.nx, fy = dt_ * ty + dn * c.ny;
-  const auto i = static_cast<std::size_t>(c.cd), j = static_cast<std::size_t>(c.an);
+                                          const Vector3d* inverse_mass, Vector3d* v) {
+  const Vector2d tangent(c.ny(), -c.nx());
+  const Vector2d f = tangent * dt_ + c.normal * dn;  // (fx, fy)
+  const std::int32_t i = c.cd, j = c.an;
   const Vector3d& mi = inverse_mass[i];
   const Vector3d& mj = inverse_mass[j];
-  v[i] += Vector3d(mi.x() * fx, mi.y() * fy, mi.z() * (dt_ * c.gcd_t + dn * c.gcd_n));
-  v[j] -= Vector3d(mj.x() * fx, mj.y() * fy, mj.z() * (dt_ * c.gan_t + dn * c.gan_n));
+  v[i].head<2>() += mi.head<2>().cwiseProduct(f);
+  v[i].z() += mi.z() * (dt_ * c.gcd_t() + dn * c.gcd_n());
+  v[j].head<2>() -= mj.head<2>().cwiseProduct(f);
+  v[j].z() -= mj.z() * (dt_ * c.gan_t() + dn * c.gan_n());
 }
 
 Matrix2d delassus_block(const Interaction2D& c, const std::vector<Vector3d>& inverse_mass) {
@@ -110,7 +133,7 @@ Matrix2d delassus_block(const Interaction2D& c, const std::vector<Vector3d>& inv
 // problem is uu = A (v + WW radh) + A WW rr, solved for rr; then r = rr + radh + K uu.
 void cohesive_solve(const SweepContact2D& c, const LawTerms2D& l, double vt, double vn, double& rt,
                     double& rn, ContactStatus& status) {
-  const Vector2d shifted(vt + l.wwtt * l.radh_t, vn + c.wtn * l.radh_t);  // v + WW (radh_t, 0)
+  const Vector2d shifted(vt + l.wwtt * l.radh_t, vn + c.wtn() * l.radh_t);  // v + WW (radh_t, 0)
   const Vector2d uf = l.A * shifted;
   const LocalSolution2D s = solve_signorini_coulomb_2d(l.A_WW, uf, c.mu);
   const Vector2d uu = uf + l.A_WW * s.r;
@@ -126,9 +149,9 @@ void cohesive_solve(const SweepContact2D& c, const LawTerms2D& l, double vt, dou
                                        double& rt, double& rn, ContactStatus& status) {
   if (l.glued) {
     // Bilateral glue: WW r = -v.
-    const double det = l.wwtt * l.wwnn - c.wtn * c.wtn;
-    rt = -(l.wwnn * vt - c.wtn * vn) / det;
-    rn = -(-c.wtn * vt + l.wwtt * vn) / det;
+    const double det = l.wwtt * l.wwnn - c.wtn() * c.wtn();
+    rt = -(l.wwnn * vt - c.wtn() * vn) / det;
+    rn = -(-c.wtn() * vt + l.wwtt * vn) / det;
     status = ContactStatus::stick;
     return;
   }
@@ -137,7 +160,7 @@ void cohesive_solve(const SweepContact2D& c, const LawTerms2D& l, double vt, dou
     return;
   }
   ContactStatus plain = ContactStatus::noctc;
-  solve_signorini_coulomb_2d(l.wwtt, c.wtn, l.wwnn, vt, vn, c.mu, rt, rn, plain);
+  solve_signorini_coulomb_2d(l.wwtt, c.wtn(), l.wwnn, vt, vn, c.mu, rt, rn, plain);
   rt += l.cor_t;
   rn += l.cor_n;
   status = l.wet && (l.cor_n != 0.0 || l.cor_t != 0.0) ? wet_status(plain) : plain;
@@ -148,12 +171,18 @@ void cohesive_solve(const SweepContact2D& c, const LawTerms2D& l, double vt, dou
 [[gnu::always_inline]] inline void local_solve(const SweepContact2D& c, const std::vector<LawTerms2D>& terms,
                                                double uft, double ufn, double& rt, double& rn,
                                                ContactStatus& status) {
-  const double vt = uft + c.cov_t, vn = ufn + c.cov_n;
+  const double vt = uft + c.cov_t(), vn = ufn + c.cov_n();
   if (c.law_terms >= 0) [[unlikely]] {
-    law_terms_solve(c, terms[static_cast<std::size_t>(c.law_terms)], vt, vn, rt, rn, status);
+    // Through locals (as the plain path's fallback): the sweep's rt, rn and status stay in registers.
+    double law_rt = 0.0, law_rn = 0.0;
+    ContactStatus law_status = ContactStatus::noctc;
+    law_terms_solve(c, terms[static_cast<std::size_t>(c.law_terms)], vt, vn, law_rt, law_rn, law_status);
+    rt = law_rt;
+    rn = law_rn;
+    status = law_status;
     return;
   }
-  solve_signorini_coulomb_2d(c.wtt, c.wtn, c.wnn, c.inverse, vt, vn, c.mu, rt, rn, status);
+  solve_signorini_coulomb_2d(c.wtt(), c.wtn(), c.wnn(), c.inverse, vt, vn, c.mu, rt, rn, status);
 }
 
 }  // namespace
@@ -187,19 +216,14 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     k.cd = c.candidate_body;
     k.an = c.antagonist_body;
     k.inactive = c.inactive;
-    k.nx = c.normal.x();
-    k.ny = c.normal.y();
-    k.gcd_t = c.lever_candidate(0);
-    k.gcd_n = c.lever_candidate(1);
-    k.gan_t = c.lever_antagonist(0);
-    k.gan_n = c.lever_antagonist(1);
-    k.wtt = c.W(0, 0);
-    k.wtn = c.W(0, 1);
-    k.wnn = c.W(1, 1);
-    k.cov_t = c.covfree(0);
-    k.cov_n = c.covfree(1);
+    k.normal = c.normal;
+    k.lever_cd = c.lever_candidate;
+    k.lever_an = c.lever_antagonist;
+    k.w_t = Vector2d(c.W(0, 0), c.W(0, 1));
+    k.w_n = Vector2d(c.W(0, 1), c.W(1, 1));
+    k.cov = c.covfree;
     k.mu = c.mu;
-    k.inverse = signorini_coulomb_reciprocals_2d(k.wtt, k.wtn, k.wnn, k.mu);
+    k.inverse = signorini_coulomb_reciprocals_2d(k.wtt(), k.wtn(), k.wnn(), k.mu);
     LawTerms2D l;
     l.glued = std::holds_alternative<CoupledDof>(law);
     l.wet = std::holds_alternative<IqsWetDsClb>(law);
@@ -211,9 +235,9 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     l.kt = c.cohesive_slope(0);
     l.kn = c.cohesive_slope(1);
     l.radh_t = c.cohesive_shift_t;
-    const bool plain = !l.glued && !l.wet && !l.cohesive && l.wwtt == k.wtt && l.wwnn == k.wnn &&
+    const bool plain = !l.glued && !l.wet && !l.cohesive && l.wwtt == k.wtt() && l.wwnn == k.wnn() &&
                        l.cor_t == 0.0 && l.cor_n == 0.0;
-    if (l.cohesive) prepare_cohesive_terms(k.wtn, l);
+    if (l.cohesive) prepare_cohesive_terms(k.wtn(), l);
     if (!plain) {
       k.law_terms = static_cast<std::int32_t>(terms.size());
       terms.push_back(l);
@@ -222,11 +246,11 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     reaction[a].rn = c.r(1);
     reaction[a].status = c.status;
     // ‖q‖: free local velocities of the problem (law shifts included), fc3d/FORMAT.md §3.
-    q2 += (relative_velocity(k, bodies.velocity_free) + Vector2d(k.cov_t, k.cov_n)).squaredNorm();
+    q2 += (relative_velocity(k, bodies.velocity_free.data()) + Vector2d(k.cov_t(), k.cov_n())).squaredNorm();
   }
   for (std::size_t a = 0; a < count; ++a)
     if (reaction[a].rt != 0.0 || reaction[a].rn != 0.0)
-      inject(hot[a], reaction[a].rt, reaction[a].rn, inverse_mass, v);
+      inject(hot[a], reaction[a].rt, reaction[a].rn, inverse_mass.data(), v.data());
   result.free_velocity_norm = std::sqrt(q2);
   const LawTerms2D plain_terms;  // WW = W, no correction (wwtt, wwnn unused: W's are read)
   auto law_terms_of = [&](const SweepContact2D& c) -> const LawTerms2D& {
@@ -239,14 +263,14 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     const Interaction2D& c = contacts[a];
     SweepContact2D& k = hot[a];
     k.mu = c.mu;
-    k.inverse = signorini_coulomb_reciprocals_2d(k.wtt, k.wtn, k.wnn, k.mu);
+    k.inverse = signorini_coulomb_reciprocals_2d(k.wtt(), k.wtn(), k.wnn(), k.mu);
     if (k.law_terms < 0) return;
     LawTerms2D& l = terms[static_cast<std::size_t>(k.law_terms)];
     l.cohesive = c.cohesive;
     l.kt = c.cohesive_slope(0);
     l.kn = c.cohesive_slope(1);
     l.radh_t = c.cohesive_shift_t;
-    if (l.cohesive) prepare_cohesive_terms(k.wtn, l);
+    if (l.cohesive) prepare_cohesive_terms(k.wtn(), l);
   };
 
   // A check's or the post pass's re-evaluation of contact a's law state (update_law_at_check) from
@@ -293,8 +317,11 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
 
   // One Gauss–Seidel pass (in execution order, the sweep order's result); the post pass never skips and
   // is not counted as an iteration.
-  auto sweep = [&](bool post) {
+  auto sweep_as = [&](auto post_constant, auto relaxed_constant) {
+    constexpr bool post = decltype(post_constant)::value, relaxed = decltype(relaxed_constant)::value;
     const SweepContact2D* sweep_hot = hot_in_order.data();
+    Vector3d* const velocity = v.data();
+    const Vector3d* const inverse_masses = inverse_mass.data();
     ContactReaction2D* sweep_reaction = reaction_in_order.data();
     for (std::size_t index = 0; index < count; ++index) {
       ContactReaction2D& s = sweep_reaction[index];
@@ -306,15 +333,15 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       const SweepContact2D& c = sweep_hot[index];
       if (c.inactive) {
         if (s.rt != 0.0 || s.rn != 0.0) {
-          inject(c, -s.rt, -s.rn, inverse_mass, v);
+          inject(c, -s.rt, -s.rn, inverse_masses, velocity);
           s.rt = s.rn = 0.0;
         }
         s.status = ContactStatus::noctc;
         continue;
       }
-      const Vector2d u = relative_velocity(c, v);
-      const double uft = u(0) - (c.wtt * s.rt + c.wtn * s.rn);
-      const double ufn = u(1) - (c.wtn * s.rt + c.wnn * s.rn);
+      const Vector2d u = relative_velocity(c, velocity);
+      const Vector2d uf = minus_w_r(c, u, s.rt, s.rn);
+      const double uft = uf.x(), ufn = uf.y();
       double rt, rn;
       ContactStatus status;
       local_solve(c, terms, uft, ufn, rt, rn, status);
@@ -322,8 +349,9 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       // this local solution's velocity; the end of the step then stores it unless the final
       // velocity's is taken.
       if (post && any_update_at_check) [[unlikely]]
-        update_law_state(execution[index], c.wtt * rt + c.wtn * rn + uft, c.wtn * rt + c.wnn * rn + ufn);
-      if (relaxed) {
+        update_law_state(execution[index], c.wtt() * rt + c.wtn() * rn + uft,
+                         c.wtn() * rt + c.wnn() * rn + ufn);
+      if constexpr (relaxed) {
         rt = relax * rt + keep * s.rt;
         rn = relax * rn + keep * s.rn;
       }
@@ -331,30 +359,44 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       if (std::fabs(rn) < 1e-24) rn = 0.0;
       // Injected even when zero: whether a reaction changed is as good as random in a sweep of
       // active contacts, and the mispredicted test cost more than the update (200DK_BoxJC_MD 15%).
-      inject(c, rt - s.rt, rn - s.rn, inverse_mass, v);
+      inject(c, rt - s.rt, rn - s.rn, inverse_masses, velocity);
       s.rt = rt;
       s.rn = rn;
       s.status = status;
-      if (rt != 0.0 || rn != 0.0) s.visits.restart();
+      // rt != 0 || rn != 0 on the bits, less the sign (-0 is zero, NaN is not): no branch.
+      s.visits.restart_if(((std::bit_cast<std::uint64_t>(rt) | std::bit_cast<std::uint64_t>(rn)) << 1) != 0);
     }
-    if (!post) ++result.iterations;
+    if constexpr (!post) ++result.iterations;
+  };
+  auto sweep = [&](bool post) {
+    if (post) {
+      if (relaxed)
+        sweep_as(std::true_type{}, std::true_type{});
+      else
+        sweep_as(std::true_type{}, std::false_type{});
+    } else {
+      if (relaxed)
+        sweep_as(std::false_type{}, std::true_type{});
+      else
+        sweep_as(std::false_type{}, std::false_type{});
+    }
   };
 
   // Natural-map residual of one contact at the current state (law in auxiliary variables).
   auto residual2_of = [&](const SweepContact2D& c, const ContactReaction2D& s, double uft, double ufn) {
     if (c.inactive) return s.rt * s.rt + s.rn * s.rn;
     const LawTerms2D& l = law_terms_of(c);
-    const double wwtt = c.law_terms >= 0 ? l.wwtt : c.wtt, wwnn = c.law_terms >= 0 ? l.wwnn : c.wnn;
+    const double wwtt = c.law_terms >= 0 ? l.wwtt : c.wtt(), wwnn = c.law_terms >= 0 ? l.wwnn : c.wnn();
     if (l.cohesive) {
       // Natural map of the auxiliary problem: uu = v + WW r, rr = r − radh − K uu.
-      const double ut = uft + c.cov_t + wwtt * s.rt + c.wtn * s.rn;
-      const double un = ufn + c.cov_n + c.wtn * s.rt + wwnn * s.rn;
+      const double ut = uft + c.cov_t() + wwtt * s.rt + c.wtn() * s.rn;
+      const double un = ufn + c.cov_n() + c.wtn() * s.rt + wwnn * s.rn;
       const double rrt = s.rt - l.radh_t - l.kt * ut, rrn = s.rn - l.kn * un;
       return natural_map_residual_squared_2d(Vector2d(rrt, rrn), Vector2d(ut, un), c.mu);
     }
     const double rrt = s.rt - l.cor_t, rrn = s.rn - l.cor_n;
-    const double ut = uft + c.cov_t + wwtt * rrt + c.wtn * rrn;
-    const double un = ufn + c.cov_n + c.wtn * rrt + wwnn * rrn;
+    const double ut = uft + c.cov_t() + wwtt * rrt + c.wtn() * rrn;
+    const double un = ufn + c.cov_n() + c.wtn() * rrt + wwnn * rrn;
     if (l.glued) return ut * ut + un * un;
     return natural_map_residual_squared_2d(Vector2d(rrt, rrn), Vector2d(ut, un), c.mu);
   };
@@ -370,9 +412,9 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       const SweepContact2D& c = hot[a];
       ContactReaction2D& s = reaction[a];
       s.visits.restart();  // after every check
-      const Vector2d u = relative_velocity(c, v);
-      const double uft = u(0) - (c.wtt * s.rt + c.wtn * s.rn);
-      const double ufn = u(1) - (c.wtn * s.rt + c.wnn * s.rn);
+      const Vector2d u = relative_velocity(c, v.data());
+      const Vector2d uf = minus_w_r(c, u, s.rt, s.rn);
+      const double uft = uf.x(), ufn = uf.y();
       residual2 += residual2_of(c, s, uft, ufn);
       double r1t = s.rt, r1n = s.rn, r2t = 0, r2n = 0;
       if (!c.inactive) {
@@ -381,7 +423,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       } else {
         r1t = r1n = 0.0;
       }
-      const double u2t = c.wtt * r2t + c.wtn * r2n + uft, u2n = c.wtn * r2t + c.wnn * r2n + ufn;
+      const double u2t = c.wtt() * r2t + c.wtn() * r2n + uft, u2n = c.wtn() * r2t + c.wnn() * r2n + ufn;
       // Laws that re-evaluate their state at a check do it with this solution's velocity; the
       // sweeps after the check read the contact's new terms.
       if (any_update_at_check && !c.inactive && update_law_state(a, u2t, u2n)) refresh_law_terms(a);
@@ -391,14 +433,14 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       if (s.rt != 0.0 || s.rn != 0.0) ++result.active;
       if (normal_only) {
         // 'QuaN ': normal components only.
-        const double dvdv = dvn * dvn, wrr = 0.5 * c.wnn * (r1n * r1n + r2n * r2n);
+        const double dvdv = dvn * dvn, wrr = 0.5 * c.wnn() * (r1n * r1n + r2n * r2n);
         sums.dvdv += dvdv;
         sums.max_dvdv = std::max(sums.max_dvdv, dvdv);
         sums.dvdvrr += dvdv * mn * mn;
         sums.max_dvdvrr = std::max(sums.max_dvdvrr, dvdv * mn * mn);
         sums.dvor += mn * dvn;
         sums.wrr += wrr;
-        sums.wrwr += c.wnn * wrr;
+        sums.wrwr += c.wnn() * wrr;
         continue;
       }
       const double dvdv = dvt * dvt + dvn * dvn, rr = mt * mt + mn * mn;
@@ -407,8 +449,8 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       sums.dvdvrr += dvdv * rr;
       sums.max_dvdvrr = std::max(sums.max_dvdvrr, dvdv * rr);
       sums.dvor += mt * dvt + mn * dvn;
-      const double w1t = c.wtt * r1t + c.wtn * r1n, w1n = c.wtn * r1t + c.wnn * r1n;
-      const double w2t = c.wtt * r2t + c.wtn * r2n, w2n = c.wtn * r2t + c.wnn * r2n;
+      const double w1t = c.wtt() * r1t + c.wtn() * r1n, w1n = c.wtn() * r1t + c.wnn() * r1n;
+      const double w2t = c.wtt() * r2t + c.wtn() * r2n, w2n = c.wtn() * r2t + c.wnn() * r2n;
       sums.wrr += 0.5 * (w1t * r1t + w1n * r1n + w2t * r2t + w2n * r2n);
       sums.wrwr += 0.5 * (w1t * w1t + w1n * w1n + w2t * w2t + w2n * w2n);
     }
@@ -450,7 +492,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   v = bodies.velocity_free;
   for (std::size_t a = 0; a < count; ++a)
     if (reaction[a].rt != 0.0 || reaction[a].rn != 0.0)
-      inject(hot[a], reaction[a].rt, reaction[a].rn, inverse_mass, v);
+      inject(hot[a], reaction[a].rt, reaction[a].rn, inverse_mass.data(), v.data());
   if (count > 0) {
     gather();
     sweep(true);
@@ -464,9 +506,9 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     const SweepContact2D& k = hot[a];
     const ContactReaction2D& s = reaction[a];
     Interaction2D& c = contacts[a];
-    const Vector2d u = relative_velocity(k, v);
-    residual2 +=
-        residual2_of(k, s, u(0) - (k.wtt * s.rt + k.wtn * s.rn), u(1) - (k.wtn * s.rt + k.wnn * s.rn));
+    const Vector2d u = relative_velocity(k, v.data());
+    const Vector2d uf = minus_w_r(k, u, s.rt, s.rn);
+    residual2 += residual2_of(k, s, uf.x(), uf.y());
     if (s.rt != 0.0 || s.rn != 0.0) ++result.active;
     c.r = Vector2d(s.rt, s.rn);
     c.u = u;
@@ -474,10 +516,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     const bool wet_or_cohesive = l.wet || l.cohesive;
     c.status = (s.rt == 0.0 && s.rn == 0.0 && !wet_or_cohesive) ? ContactStatus::noctc : s.status;
     // Contact impulses of every body (Ireac = Σ H r), driven dofs included (TORQUE EVOLUTION).
-    const double tx = k.ny, ty = -k.nx;
-    const Vector3d f(s.rt * tx + s.rn * k.nx, s.rt * ty + s.rn * k.ny, 0.0);
-    bodies.impulse[static_cast<std::size_t>(k.cd)] += f + Vector3d(0, 0, s.rt * k.gcd_t + s.rn * k.gcd_n);
-    bodies.impulse[static_cast<std::size_t>(k.an)] -= f + Vector3d(0, 0, s.rt * k.gan_t + s.rn * k.gan_n);
+    const double tx = k.ny(), ty = -k.nx();
+    const Vector3d f(s.rt * tx + s.rn * k.nx(), s.rt * ty + s.rn * k.ny(), 0.0);
+    bodies.impulse[static_cast<std::size_t>(k.cd)] += f + Vector3d(0, 0, s.rt * k.gcd_t() + s.rn * k.gcd_n());
+    bodies.impulse[static_cast<std::size_t>(k.an)] -= f + Vector3d(0, 0, s.rt * k.gan_t() + s.rn * k.gan_n());
     finish_step_2d(scene.laws[static_cast<std::size_t>(c.law)].law, c, h, time);
   }
   result.residual_absolute = std::sqrt(residual2);

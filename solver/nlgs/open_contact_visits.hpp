@@ -23,6 +23,11 @@ struct OpenContactVisits {
     count = 0;
     threshold = 1;
   }
+  // restart() when `condition`, without a branch (the sweeps' test of a new reaction is unpredictable).
+  void restart_if(bool condition) {
+    count = condition ? 0 : count;
+    threshold = condition ? 1 : threshold;
+  }
 };
 
 }  // namespace lmgc::solver
