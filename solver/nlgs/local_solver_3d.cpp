@@ -197,13 +197,15 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
     const Eigen::Vector3d r_stick = -W_inverse * q;
     if (r_stick(0) > 0.0 && r_stick.tail<2>().norm() <= mu * r_stick(0)) {
       // A previous reaction that already sticks within keep_tolerance is kept, so that converged
-      // sweeps stand still instead of trading round-off. Its velocity u = W r_start + q is
-      // W (r_start - r_stick); the natural map, at most (1 + mu) |u| near the cone's interior, is
-      // computed only when that bound passes.
+      // sweeps stand still instead of trading round-off. The natural map, at most (1 + mu) |u| near
+      // the cone's interior, is computed only when that bound passes. u = W r_start + q directly:
+      // as W (r_start - r_stick) it carried r_stick's round-off, which an ill-conditioned block
+      // amplifies beyond the keep tolerance (a property test's nearly rank-one W).
       if (keep_tolerance > 0.0 && r_start(0) > 0.0 && r_start != r_stick) {
         const double bound = keep_tolerance / (1.0 + mu);
-        if ((W * (r_start - r_stick)).squaredNorm() <= bound * bound) {
-          const double residual = natural_map_3d(r_start, W * r_start + q, mu).norm();
+        const Eigen::Vector3d u_start = W * r_start + q;
+        if (u_start.squaredNorm() <= bound * bound) {
+          const double residual = natural_map_3d(r_start, u_start, mu).norm();
           if (residual <= keep_tolerance) {
             s.r = r_start;
             s.residual = residual;
