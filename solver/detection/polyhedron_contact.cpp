@@ -36,16 +36,23 @@ struct Separation {
   double gap = 0.0;
   std::size_t candidate_vertex = 0, antagonist_vertex = 0;
 };
+// The first vertex of the extreme value wins, as with `if (d < low)`; the selections are written
+// without branches (which vertex is lowest along a trial axis is as good as random: the Cundall
+// search and the axis candidates call this some 200 times per pair and step).
 Separation separation(const PlacedPolyhedron& cd, const PlacedPolyhedron& an, const Vector3d& n) {
   Separation s;
   double low = std::numeric_limits<double>::infinity(), high = -std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < cd.vertices.size(); ++k) {
     const double d = n.dot(cd.vertices[k]);
-    if (d < low) low = d, s.candidate_vertex = k;
+    const bool lower = d < low;
+    low = lower ? d : low;
+    s.candidate_vertex = lower ? k : s.candidate_vertex;
   }
   for (std::size_t k = 0; k < an.vertices.size(); ++k) {
     const double d = n.dot(an.vertices[k]);
-    if (d > high) high = d, s.antagonist_vertex = k;
+    const bool higher = d > high;
+    high = higher ? d : high;
+    s.antagonist_vertex = higher ? k : s.antagonist_vertex;
   }
   s.gap = low - high;
   return s;
