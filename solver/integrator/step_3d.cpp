@@ -66,10 +66,8 @@ Vector3d local_velocity(const Interaction3D& c, const std::vector<Vector6d>& V) 
          c.lever_antagonist * va.tail<3>();
 }
 
-// V += M⁻¹ H r for an impulse r (t, n, s) of one contact; also adds H r to `impulse` when given
-// (the sweeps leave it out: Ireac is summed once from the final reactions).
-void inject(const Interaction3D& c, const Vector3d& r, RigidBodies3D& b, std::vector<Vector6d>& V,
-            std::vector<Vector6d>* impulse = nullptr) {
+// V += M⁻¹ H r for an impulse r (t, n, s) of one contact.
+void inject(const Interaction3D& c, const Vector3d& r, RigidBodies3D& b, std::vector<Vector6d>& V) {
   // Fixed-size halves throughout: this runs once per contact and sweep.
   const Vector3d force = c.frame.transpose() * r;
   const Vector3d torque_cd = c.lever_candidate.transpose() * r;
@@ -82,12 +80,19 @@ void inject(const Interaction3D& c, const Vector3d& r, RigidBodies3D& b, std::ve
   V[cd].tail<3>() += m_cd.tail<3>().cwiseProduct(torque_cd);
   V[an].head<3>() -= m_an.head<3>().cwiseProduct(force);
   V[an].tail<3>() -= m_an.tail<3>().cwiseProduct(torque_an);
-  if (impulse) {
-    (*impulse)[cd].head<3>() += force;
-    (*impulse)[cd].tail<3>() += torque_cd;
-    (*impulse)[an].head<3>() -= force;
-    (*impulse)[an].tail<3>() -= torque_an;
-  }
+}
+
+// Ireac += H r of one contact (the end of the solve sums it from the final reactions).
+void add_impulse(const Interaction3D& c, const Vector3d& r, std::vector<Vector6d>& impulse) {
+  const Vector3d force = c.frame.transpose() * r;
+  const Vector3d torque_cd = c.lever_candidate.transpose() * r;
+  const Vector3d torque_an = c.lever_antagonist.transpose() * r;
+  const auto cd = static_cast<std::size_t>(c.candidate_body),
+             an = static_cast<std::size_t>(c.antagonist_body);
+  impulse[cd].head<3>() += force;
+  impulse[cd].tail<3>() += torque_cd;
+  impulse[an].head<3>() -= force;
+  impulse[an].tail<3>() -= torque_an;
 }
 
 // Delassus block Hᵀ M⁻¹ H of one contact (rigid bodies: exact, numerics.md §3).
@@ -570,15 +575,27 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   std::vector<std::uint8_t> law_updates_at_check(scene.laws.size());
   for (std::size_t l = 0; l < scene.laws.size(); ++l)
     law_updates_at_check[l] = updates_at_check(scene.laws[l].law);
-  for (Interaction3D& c : contacts) {
+  // Whether each contact is without reaction, beside its visits: a sweep passes most open contacts
+  // by on these 12 bytes without reading their 640-byte interaction (open_contact_visits.hpp). In a
+  // 64k-sphere box 98% of the contacts are open, and each pass-by read two cache lines of it.
+  struct OpenContact {
+    OpenContactVisits visits;
+    bool no_reaction = true;
+    bool solved_next() const { return !no_reaction || !visits.skips_next(); }
+  };
+  std::vector<OpenContact> open(contacts.size());
+  // One pass over the interactions (on large scenes each pass streams them from memory): the law's
+  // problem, |q|, the warm start's impulse and whether the contact starts without reaction.
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    Interaction3D& c = contacts[k];
     // Each law's derived problem (its own file, solver/laws/*.hpp).
     if (!prepare_law(scene.laws[static_cast<std::size_t>(c.law)].law, c, law_step)) c.inactive = true;
     if (c.inactive) c.r.setZero();
     const Vector3d q = local_velocity(c, b.velocity_free) + c.covfree;
     if (!c.inactive) q_squared += q.squaredNorm();
-  }
-  for (const Interaction3D& c : contacts)
     if (!c.inactive && !c.r.isZero(0.0)) inject(c, c.r, b, V);
+    open[k].no_reaction = c.r.isZero(0.0);
+  }
   result.free_velocity_norm = std::sqrt(q_squared);
 
   const double local_tolerance = 1e-10 * std::max(result.free_velocity_norm, 1e-300);
@@ -657,16 +674,6 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   std::vector<std::size_t> order(contacts.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   if (options.quick_scramble) state.scramble.prepare(contacts.size());
-  // Whether each contact is without reaction, beside its visits: a sweep passes most open contacts
-  // by on these 12 bytes without reading their 640-byte interaction (open_contact_visits.hpp). In a
-  // 64k-sphere box 98% of the contacts are open, and each pass-by read two cache lines of it.
-  struct OpenContact {
-    OpenContactVisits visits;
-    bool no_reaction = true;
-    bool solved_next() const { return !no_reaction || !visits.skips_next(); }
-  };
-  std::vector<OpenContact> open(contacts.size());
-  for (std::size_t k = 0; k < contacts.size(); ++k) open[k].no_reaction = contacts[k].r.isZero(0.0);
   // The reaction a sweep gives contact k, relaxed.
   const auto sweep_reaction = [&](std::size_t k) {
     Vector3d q_local;
@@ -756,15 +763,12 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   }
   if (contacts.empty()) result.converged = true;
 
-  // Ireac of every body from the final reactions.
-  std::vector<Vector6d> unused(V.size(), Vector6d::Zero());
-  for (const Interaction3D& c : contacts)
-    if (!c.inactive && !c.r.isZero(0.0)) inject(c, c.r, b, unused, &b.impulse);
-
-  // End of the solve: relative velocities, statuses, and the natural-map residual of the local
-  // problems (fc3d/FORMAT.md §3) in the auxiliary variables u + covfree.
+  // End of the solve, in one pass: Ireac of every body from the final reactions, relative velocities,
+  // statuses, and the natural-map residual of the local problems (fc3d/FORMAT.md §3) in the auxiliary
+  // variables u + covfree.
   double residual_squared = 0.0;
   for (Interaction3D& c : contacts) {
+    if (!c.inactive && !c.r.isZero(0.0)) add_impulse(c, c.r, b.impulse);
     c.u = local_velocity(c, V);
     if (c.inactive) {
       c.status = ContactStatus::noctc;
