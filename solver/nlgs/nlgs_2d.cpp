@@ -1,6 +1,6 @@
 // NLGS over 2D interactions. spec: numerics.md §3-§4, docs/lmgc90-facts/rigid-2d.md §5.
 // The sweeps read a compact array of contacts (bodies, local frame, levers, Delassus block, free
-// velocity shift, μ, the block's reciprocals: 136 bytes) and write a separate one of reactions (32 bytes).
+// velocity shift, μ, the block's reciprocals: 144 bytes) and write a separate one of reactions (32 bytes).
 // Laws that modify the block or add a correction (cohesive, wet, glued, elastic...) keep those terms in a
 // third array that only they read. On a 64k-disk box the sweeps stream these arrays from L3: one
 // 192-byte record read and written back per update was nearly twice the traffic. The full
@@ -326,7 +326,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
     for (std::size_t index = 0; index < count; ++index) {
       ContactReaction2D& s = sweep_reaction[index];
       // A contact without reaction that this sweep passes by is decided on the 32-byte reaction alone:
-      // in a packing most contacts are open, and reading their 136-byte record as well made the
+      // in a packing most contacts are open, and reading their 144-byte record as well made the
       // sweeps of large scenes stream nearly five times the memory (an inactive one gets its noctc
       // status at the next visit, or in the post pass, which never skips).
       if (!post && s.rt == 0.0 && s.rn == 0.0 && s.visits.skip()) continue;
