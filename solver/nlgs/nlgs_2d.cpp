@@ -96,9 +96,14 @@ inline Vector2d relative_velocity(const SweepContact2D& c, const Vector3d* v) {
   return across_x * (a.x() - b.x()) + across_y * (a.y() - b.y()) + c.lever_cd * a.z() - c.lever_an * b.z();
 }
 
-// u − W r, both components at once: (u_t − (W_tt r_t + W_tn r_n), u_n − (W_tn r_t + W_nn r_n)).
+// W r, both components at once: (W_tt r_t + W_tn r_n, W_tn r_t + W_nn r_n).
+inline Vector2d w_times(const SweepContact2D& c, double rt, double rn) {
+  return c.w_t * rt + c.w_n * rn;
+}
+
+// u − W r.
 inline Vector2d minus_w_r(const SweepContact2D& c, const Vector2d& u, double rt, double rn) {
-  return u - (c.w_t * rt + c.w_n * rn);
+  return u - w_times(c, rt, rn);
 }
 
 [[gnu::always_inline]] inline void inject(const SweepContact2D& c, double dt_, double dn,
@@ -317,8 +322,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
 
   // One Gauss–Seidel pass (in execution order, the sweep order's result); the post pass never skips and
   // is not counted as an iteration.
-  auto sweep_as = [&](auto post_constant, auto relaxed_constant) {
-    constexpr bool post = decltype(post_constant)::value, relaxed = decltype(relaxed_constant)::value;
+  auto sweep = [&](bool post) {
     const SweepContact2D* sweep_hot = hot_in_order.data();
     Vector3d* const velocity = v.data();
     const Vector3d* const inverse_masses = inverse_mass.data();
@@ -348,10 +352,11 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       // LMGC90's post pass (solve_nlgs i_post) re-evaluates the laws' state as a check does, from
       // this local solution's velocity; the end of the step then stores it unless the final
       // velocity's is taken.
-      if (post && any_update_at_check) [[unlikely]]
-        update_law_state(execution[index], c.wtt() * rt + c.wtn() * rn + uft,
-                         c.wtn() * rt + c.wnn() * rn + ufn);
-      if constexpr (relaxed) {
+      if (post && any_update_at_check) [[unlikely]] {
+        const Vector2d u_solved = w_times(c, rt, rn) + uf;
+        update_law_state(execution[index], u_solved.x(), u_solved.y());
+      }
+      if (relaxed) {
         rt = relax * rt + keep * s.rt;
         rn = relax * rn + keep * s.rn;
       }
@@ -366,20 +371,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       // rt != 0 || rn != 0 on the bits, less the sign (-0 is zero, NaN is not): no branch.
       s.visits.restart_if(((std::bit_cast<std::uint64_t>(rt) | std::bit_cast<std::uint64_t>(rn)) << 1) != 0);
     }
-    if constexpr (!post) ++result.iterations;
-  };
-  auto sweep = [&](bool post) {
-    if (post) {
-      if (relaxed)
-        sweep_as(std::true_type{}, std::true_type{});
-      else
-        sweep_as(std::true_type{}, std::false_type{});
-    } else {
-      if (relaxed)
-        sweep_as(std::false_type{}, std::true_type{});
-      else
-        sweep_as(std::false_type{}, std::false_type{});
-    }
+    if (!post) ++result.iterations;
   };
 
   // Natural-map residual of one contact at the current state (law in auxiliary variables).
@@ -423,7 +415,8 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       } else {
         r1t = r1n = 0.0;
       }
-      const double u2t = c.wtt() * r2t + c.wtn() * r2n + uft, u2n = c.wtn() * r2t + c.wnn() * r2n + ufn;
+      const Vector2d u2 = w_times(c, r2t, r2n) + uf;
+      const double u2t = u2.x(), u2n = u2.y();
       // Laws that re-evaluate their state at a check do it with this solution's velocity; the
       // sweeps after the check read the contact's new terms.
       if (any_update_at_check && !c.inactive && update_law_state(a, u2t, u2n)) refresh_law_terms(a);
@@ -449,8 +442,8 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
       sums.dvdvrr += dvdv * rr;
       sums.max_dvdvrr = std::max(sums.max_dvdvrr, dvdv * rr);
       sums.dvor += mt * dvt + mn * dvn;
-      const double w1t = c.wtt() * r1t + c.wtn() * r1n, w1n = c.wtn() * r1t + c.wnn() * r1n;
-      const double w2t = c.wtt() * r2t + c.wtn() * r2n, w2n = c.wtn() * r2t + c.wnn() * r2n;
+      const Vector2d w1 = w_times(c, r1t, r1n), w2 = w_times(c, r2t, r2n);
+      const double w1t = w1.x(), w1n = w1.y(), w2t = w2.x(), w2n = w2.y();
       sums.wrr += 0.5 * (w1t * r1t + w1n * r1n + w2t * r2t + w2n * r2n);
       sums.wrwr += 0.5 * (w1t * w1t + w1n * w1n + w2t * w2t + w2n * w2n);
     }
