@@ -66,33 +66,37 @@ Vector3d local_velocity(const Interaction3D& c, const std::vector<Vector6d>& V) 
          c.lever_antagonist * va.tail<3>();
 }
 
+// H r of one contact's impulse r (t, n, s): the force and each body's moment in its own axes.
+struct ContactImpulse {
+  Vector3d force, torque_candidate, torque_antagonist;
+};
+ContactImpulse impulse_of(const Interaction3D& c, const Vector3d& r) {
+  return {c.frame.transpose() * r, c.lever_candidate.transpose() * r, c.lever_antagonist.transpose() * r};
+}
+
 // V += M⁻¹ H r for an impulse r (t, n, s) of one contact.
 void inject(const Interaction3D& c, const Vector3d& r, RigidBodies3D& b, std::vector<Vector6d>& V) {
   // Fixed-size halves throughout: this runs once per contact and sweep.
-  const Vector3d force = c.frame.transpose() * r;
-  const Vector3d torque_cd = c.lever_candidate.transpose() * r;
-  const Vector3d torque_an = c.lever_antagonist.transpose() * r;
+  const ContactImpulse f = impulse_of(c, r);
   const auto cd = static_cast<std::size_t>(c.candidate_body),
              an = static_cast<std::size_t>(c.antagonist_body);
   const Vector6d& m_cd = b.inverse_mass[cd];
   const Vector6d& m_an = b.inverse_mass[an];
-  V[cd].head<3>() += m_cd.head<3>().cwiseProduct(force);
-  V[cd].tail<3>() += m_cd.tail<3>().cwiseProduct(torque_cd);
-  V[an].head<3>() -= m_an.head<3>().cwiseProduct(force);
-  V[an].tail<3>() -= m_an.tail<3>().cwiseProduct(torque_an);
+  V[cd].head<3>() += m_cd.head<3>().cwiseProduct(f.force);
+  V[cd].tail<3>() += m_cd.tail<3>().cwiseProduct(f.torque_candidate);
+  V[an].head<3>() -= m_an.head<3>().cwiseProduct(f.force);
+  V[an].tail<3>() -= m_an.tail<3>().cwiseProduct(f.torque_antagonist);
 }
 
 // Ireac += H r of one contact (the end of the solve sums it from the final reactions).
 void add_impulse(const Interaction3D& c, const Vector3d& r, std::vector<Vector6d>& impulse) {
-  const Vector3d force = c.frame.transpose() * r;
-  const Vector3d torque_cd = c.lever_candidate.transpose() * r;
-  const Vector3d torque_an = c.lever_antagonist.transpose() * r;
+  const ContactImpulse f = impulse_of(c, r);
   const auto cd = static_cast<std::size_t>(c.candidate_body),
              an = static_cast<std::size_t>(c.antagonist_body);
-  impulse[cd].head<3>() += force;
-  impulse[cd].tail<3>() += torque_cd;
-  impulse[an].head<3>() -= force;
-  impulse[an].tail<3>() -= torque_an;
+  impulse[cd].head<3>() += f.force;
+  impulse[cd].tail<3>() += f.torque_candidate;
+  impulse[an].head<3>() -= f.force;
+  impulse[an].tail<3>() -= f.torque_antagonist;
 }
 
 // Delassus block Hᵀ M⁻¹ H of one contact (rigid bodies: exact, numerics.md §3).
