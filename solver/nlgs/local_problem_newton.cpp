@@ -56,8 +56,9 @@ void alart_curnier(const Eigen::Matrix<double, Dim, 1>& r, const Eigen::Matrix<d
 }  // namespace
 
 template <int Dim>
-AlartCurnierNewton<Dim>::AlartCurnierNewton(const FrictionalContactProblem<Dim>& problem)
-    : problem_(problem) {
+AlartCurnierNewton<Dim>::AlartCurnierNewton(const FrictionalContactProblem<Dim>& problem,
+                                            double pattern_slack)
+    : problem_(problem), pattern_slack_(pattern_slack) {
   const int contacts = problem.contact_count;
   rho_n_.resize(contacts);
   rho_t_.resize(contacts);
@@ -70,32 +71,104 @@ AlartCurnierNewton<Dim>::AlartCurnierNewton(const FrictionalContactProblem<Dim>&
     rho_n_(a) = wnn > 0.0 ? 1.0 / wnn : 1.0;
     rho_t_(a) = wtt > 0.0 ? 1.0 / wtt : rho_n_(a);
   }
+  A_.resize(contacts);
+  B_.resize(contacts);
+  open_.assign(contacts, 0);
+  pattern_index_.assign(contacts, -1);
 
-  const int size = Dim * contacts;
-  std::vector<Eigen::Triplet<double>> pattern;
-  pattern.reserve(problem.blocks.size() * Dim * Dim + static_cast<std::size_t>(size));
-  for (int a = 0; a < contacts; ++a)
+  column_start_.assign(contacts + 1, 0);
+  for (int a = 0; a < contacts; ++a) {
     for (int k = problem.row_start[a]; k < problem.row_start[a + 1]; ++k)
-      for (int i = 0; i < Dim; ++i)
-        for (int j = 0; j < Dim; ++j) pattern.emplace_back(Dim * a + i, Dim * problem.column[k] + j, 1.0);
-  for (int i = 0; i < size; ++i) pattern.emplace_back(i, i, 1.0);
+      ++column_start_[problem.column[k] + 1];
+    if (problem.diagonal[a] < 0) ++column_start_[a + 1];
+  }
+  for (int b = 0; b < contacts; ++b) column_start_[b + 1] += column_start_[b];
+  column_row_.resize(column_start_[contacts]);
+  column_block_.resize(column_start_[contacts]);
+  std::vector<int> next(column_start_.begin(), column_start_.end() - 1);
+  std::vector<Eigen::Triplet<double>> block_pattern;
+  block_pattern.reserve(column_row_.size());
+  for (int a = 0; a < contacts; ++a) {  // rows in order, so each column's list is in row order
+    for (int k = problem.row_start[a]; k < problem.row_start[a + 1]; ++k) {
+      const int b = problem.column[k];
+      column_row_[next[b]] = a;
+      column_block_[next[b]++] = k;
+      block_pattern.emplace_back(a, b, 1.0);
+    }
+    if (problem.diagonal[a] < 0) {
+      column_row_[next[a]] = a;
+      column_block_[next[a]++] = -1;
+      block_pattern.emplace_back(a, a, 1.0);
+    }
+  }
+  Eigen::SparseMatrix<double> pattern(contacts, contacts);
+  pattern.setFromTriplets(block_pattern.begin(), block_pattern.end());
+  pattern.makeCompressed();
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> ordering;
+  Eigen::COLAMDOrdering<int>()(pattern, ordering);
+  ordered_contacts_.resize(contacts);
+  for (int b = 0; b < contacts; ++b)
+    ordered_contacts_[ordering.size() == contacts ? ordering.indices()(b) : b] = b;
+}
+
+// The LU's contacts: those of the current pattern (at first, all of them) and the active ones, or the
+// active ones alone when that set would hold more than pattern_slack_ times as many. A pattern with a
+// few open contacts costs the LU little more (Capsules: its 30 of 286 open contacts in or out, the
+// same factorisation time), while cutting it out anew at every step would; a pattern that keeps its
+// old contacts is cut out less often while the active set comes and goes.
+template <int Dim>
+void AlartCurnierNewton<Dim>::build_pattern(int active) {
+  const int contacts = problem_.contact_count;
+  int union_size = 0;
+  for (int a = 0; a < contacts; ++a) union_size += !open_[a] || !pattern_built_ || pattern_index_[a] >= 0;
+  const bool keep = union_size <= pattern_slack_ * active;
+  pattern_size_ = 0;
+  for (int a = 0; a < contacts; ++a)
+    pattern_index_[a] =
+        !open_[a] || (keep && (!pattern_built_ || pattern_index_[a] >= 0)) ? pattern_size_++ : -1;
+  pattern_built_ = true;
+
+  // Column Dim g + j of jacobian_ is unknown j of the g-th pattern contact in the ordering; its rows
+  // are in the pattern's order, which is the contacts' order.
+  const int size = Dim * pattern_size_;
+  int entries = 0;
+  for (int b = 0; b < contacts; ++b)
+    if (pattern_index_[b] >= 0)
+      for (int e = column_start_[b]; e < column_start_[b + 1]; ++e)
+        if (pattern_index_[column_row_[e]] >= 0) entries += column_block_[e] >= 0 ? Dim * Dim : Dim;
   jacobian_.resize(size, size);
-  jacobian_.setFromTriplets(pattern.begin(), pattern.end());
-  jacobian_.makeCompressed();
-  const auto entry = [&](int row, int col) {
-    const int* begin = jacobian_.innerIndexPtr() + jacobian_.outerIndexPtr()[col];
-    const int* end = jacobian_.innerIndexPtr() + jacobian_.outerIndexPtr()[col + 1];
-    return static_cast<int>(std::lower_bound(begin, end, row) - jacobian_.innerIndexPtr());
-  };
-  block_entry_.resize(problem.blocks.size() * Dim * Dim);
-  for (int a = 0; a < contacts; ++a)
-    for (int k = problem.row_start[a]; k < problem.row_start[a + 1]; ++k)
-      for (int i = 0; i < Dim; ++i)
-        for (int j = 0; j < Dim; ++j)
-          block_entry_[Dim * Dim * k + Dim * i + j] = entry(Dim * a + i, Dim * problem.column[k] + j);
+  jacobian_.resizeNonZeros(entries);
+  int* outer = jacobian_.outerIndexPtr();
+  int* inner = jacobian_.innerIndexPtr();
+  block_entry_.assign(problem_.blocks.size() * Dim * Dim, -1);
   diagonal_entry_.resize(size);
-  for (int i = 0; i < size; ++i) diagonal_entry_[i] = entry(i, i);
-  lu_.analyzePattern(jacobian_);
+  position_.resize(size);
+  int column = 0, entry = 0;
+  outer[0] = 0;
+  for (const int b : ordered_contacts_) {
+    const int col_contact = pattern_index_[b];
+    if (col_contact < 0) continue;
+    for (int j = 0; j < Dim; ++j, ++column) {
+      position_[Dim * col_contact + j] = column;
+      for (int e = column_start_[b]; e < column_start_[b + 1]; ++e) {
+        const int row_contact = pattern_index_[column_row_[e]];
+        if (row_contact < 0) continue;
+        const int k = column_block_[e];
+        if (k < 0) {  // W_bb missing: the diagonal entry alone
+          diagonal_entry_[Dim * row_contact + j] = entry;
+          inner[entry++] = Dim * row_contact + j;
+          continue;
+        }
+        for (int i = 0; i < Dim; ++i) {
+          if (row_contact == col_contact && i == j) diagonal_entry_[Dim * row_contact + j] = entry;
+          block_entry_[Dim * Dim * k + Dim * i + j] = entry;
+          inner[entry++] = Dim * row_contact + i;
+        }
+      }
+      outer[column + 1] = entry;
+    }
+  }
+  if (size > 0) lu_.analyzePattern(jacobian_);
 }
 
 template <int Dim>
@@ -113,54 +186,103 @@ double AlartCurnierNewton<Dim>::merit(const Eigen::VectorXd& r) const {
 
 template <int Dim>
 NewtonStepReport AlartCurnierNewton<Dim>::step(Eigen::VectorXd& r) {
-  using Block = Eigen::Matrix<double, Dim, Dim>;
+  using Local = Eigen::Matrix<double, Dim, 1>;
   const int contacts = problem_.contact_count;
   const int size = Dim * contacts;
   const Eigen::VectorXd u = apply_delassus(problem_, r) + problem_.q;
   Eigen::VectorXd phi(size);
-  double* values = jacobian_.valuePtr();
-  std::fill(values, values + jacobian_.nonZeros(), 0.0);
   double scale = 0.0;
+  int active = 0;
+  bool outside = false;  // an active contact is outside the pattern
   for (int a = 0; a < contacts; ++a) {
-    Block A, B;
-    Eigen::Matrix<double, Dim, 1> phi_a;
+    Local phi_a;
     alart_curnier<Dim>(r.template segment<Dim>(Dim * a), u.template segment<Dim>(Dim * a), problem_.mu(a),
-                       rho_n_(a), rho_t_(a), phi_a, &A, &B);
+                       rho_n_(a), rho_t_(a), phi_a, &A_[a], &B_[a]);
     phi.template segment<Dim>(Dim * a) = phi_a;
-    // J_ab = delta_ab A_a + B_a W_ab.
+    const bool open = B_[a].isZero(0.0);
+    open_[a] = open;
+    active += !open;
+    outside = outside || (!open && pattern_index_[a] < 0);
+    // The shift's scale is the largest entry of J over W's blocks, as for the whole system.
     for (int k = problem_.row_start[a]; k < problem_.row_start[a + 1]; ++k) {
-      Block J = B * problem_.blocks[k];
-      if (problem_.column[k] == a) J += A;
-      const int* slot = &block_entry_[Dim * Dim * k];
-      for (int i = 0; i < Dim; ++i)
-        for (int j = 0; j < Dim; ++j) values[slot[Dim * i + j]] = J(i, j);
+      if (open) {
+        if (problem_.column[k] == a) scale = std::max(scale, A_[a].cwiseAbs().maxCoeff());
+        continue;
+      }
+      Block J = B_[a] * problem_.blocks[k];
+      if (problem_.column[k] == a) J += A_[a];
       scale = std::max(scale, J.cwiseAbs().maxCoeff());
     }
-    if (problem_.diagonal[a] < 0)
-      for (int i = 0; i < Dim; ++i) values[diagonal_entry_[Dim * a + i]] = A(i, i);
   }
   const double merit_before = 0.5 * phi.squaredNorm();
   NewtonStepReport report;
   report.merit = merit_before;
   if (merit_before == 0.0) return report;
 
+  if (!pattern_built_ || outside || pattern_size_ > pattern_slack_ * active) build_pattern(active);
+  double* values = jacobian_.valuePtr();
+  std::fill(values, values + jacobian_.nonZeros(), 0.0);
+  for (int a = 0; a < contacts; ++a) {
+    const int row = pattern_index_[a];
+    if (row < 0) continue;
+    for (int k = problem_.row_start[a]; k < problem_.row_start[a + 1]; ++k) {
+      const int* slot = &block_entry_[Dim * Dim * k];
+      if (slot[0] < 0) continue;
+      Block J = B_[a] * problem_.blocks[k];
+      if (problem_.column[k] == a) J += A_[a];
+      for (int i = 0; i < Dim; ++i)
+        for (int j = 0; j < Dim; ++j) values[slot[Dim * i + j]] = J(i, j);
+    }
+    if (problem_.diagonal[a] < 0)
+      for (int i = 0; i < Dim; ++i) values[diagonal_entry_[Dim * row + i]] = A_[a](i, i);
+  }
+
   // Regularised semismooth Newton: J + delta I with delta shrinking with the residual, so that a
   // singular J (W rank-deficient, redundant sticking contacts) still gives a bounded direction while
   // the fast local convergence is kept as phi -> 0.
   const double relative_residual = std::sqrt(2.0 * merit_before) / std::max(r.norm(), 1e-300);
   double shift = scale * std::min(1e-3, relative_residual);
-  Eigen::VectorXd direction;
+  Eigen::VectorXd direction(size), reduced_rhs(Dim * pattern_size_);
+  bool solved = false;
   double applied_shift = 0.0;
-  for (int attempt = 0; attempt < 6 && direction.size() != size;
-       ++attempt, shift = std::max(shift * 100.0, 1e-12 * scale)) {
+  for (int attempt = 0; attempt < 6 && !solved; ++attempt, shift = std::max(shift * 100.0, 1e-12 * scale)) {
     for (const int slot : diagonal_entry_) values[slot] += shift - applied_shift;
     applied_shift = shift;
-    lu_.factorize(jacobian_);
-    if (lu_.info() != Eigen::Success) continue;
-    Eigen::VectorXd candidate = lu_.solve(-phi);
-    if (lu_.info() == Eigen::Success && candidate.allFinite()) direction = std::move(candidate);
+    // The open contacts outside the pattern first: (A_a + shift I) d_a = -phi_a (A_a's diagonal alone
+    // without W_aa, as the whole system has it).
+    bool finite = true;
+    for (int a = 0; a < contacts; ++a) {
+      if (pattern_index_[a] >= 0) continue;
+      Block M = problem_.diagonal[a] >= 0 ? A_[a] : Block(A_[a].diagonal().asDiagonal());
+      M.diagonal().array() += shift;
+      const Local d = M.partialPivLu().solve(-phi.template segment<Dim>(Dim * a));
+      finite = finite && d.allFinite();
+      direction.template segment<Dim>(Dim * a) = d;
+    }
+    if (!finite) continue;
+    // Then the pattern's, with the others' steps moved to the right: -phi_a - B_a sum_b W_ab d_b.
+    for (int a = 0; a < contacts; ++a) {
+      const int row = pattern_index_[a];
+      if (row < 0) continue;
+      Local coupling = Local::Zero();
+      if (!open_[a])
+        for (int k = problem_.row_start[a]; k < problem_.row_start[a + 1]; ++k)
+          if (pattern_index_[problem_.column[k]] < 0)
+            coupling += problem_.blocks[k] * direction.template segment<Dim>(Dim * problem_.column[k]);
+      reduced_rhs.template segment<Dim>(Dim * row) = -phi.template segment<Dim>(Dim * a) - B_[a] * coupling;
+    }
+    if (pattern_size_ > 0) {
+      lu_.factorize(jacobian_);
+      if (lu_.info() != Eigen::Success) continue;
+      const Eigen::VectorXd reduced = lu_.solve(reduced_rhs);
+      if (lu_.info() != Eigen::Success || !reduced.allFinite()) continue;
+      for (int a = 0; a < contacts; ++a)
+        if (const int row = pattern_index_[a]; row >= 0)
+          for (int i = 0; i < Dim; ++i) direction(Dim * a + i) = reduced(position_[Dim * row + i]);
+    }
+    solved = true;
   }
-  if (direction.size() != size) return report;
+  if (!solved) return report;
 
   if (recent_merits_.size() == kNonmonotoneMemory) recent_merits_.erase(recent_merits_.begin());
   recent_merits_.push_back(merit_before);

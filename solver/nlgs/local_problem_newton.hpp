@@ -10,6 +10,7 @@
 // crawls along the kinks of the merit with steps of 1e-4 or less and never finishes; allowed to rise
 // for a few steps, the iterates leave the kink and Newton converges.
 #include <Eigen/Core>
+#include <Eigen/LU>
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 #include <vector>
@@ -26,22 +27,46 @@ struct NewtonStepReport {
 template <int Dim>
 class AlartCurnierNewton {
  public:
-  explicit AlartCurnierNewton(const FrictionalContactProblem<Dim>& problem);
+  // pattern_slack: how many contacts the sparse LU's pattern may hold per active contact before it
+  // is cut down to them (see build_pattern); infinity keeps the whole system in the LU.
+  static constexpr double kDefaultPatternSlack = 1.5;
+  explicit AlartCurnierNewton(const FrictionalContactProblem<Dim>& problem,
+                              double pattern_slack = kDefaultPatternSlack);
   // One Newton step from r (updated in place). Successive calls share the line search's memory of
   // recent merits, so r must not be changed between them (start a new object after sweeps).
   NewtonStepReport step(Eigen::VectorXd& r);
 
  private:
+  using Block = Eigen::Matrix<double, Dim, Dim>;
   const FrictionalContactProblem<Dim>& problem_;
+  double pattern_slack_;
   Eigen::VectorXd rho_n_, rho_t_;
   std::vector<double> recent_merits_;  // at most kNonmonotoneMemory, oldest first
-  // The Jacobian keeps one sparsity pattern (every block of W, and the diagonal) for the object's
-  // life, so the LU's fill-reducing ordering is computed once: on the FC2D granular flows the ordering
-  // was a fifth of the time of a step.
+  // phi's derivatives of the current step: J_ab = delta_ab A_a + B_a W_ab.
+  std::vector<Block> A_, B_;
+  // A contact whose B is zero (open: phi_a = r_a) has the row J_a = [0 … A_a … 0]: its step is
+  // -A_a⁻¹ phi_a, known without the others. The sparse LU solves for the pattern's contacts, a set
+  // that holds every active one (see build_pattern); the open ones outside it are solved alone. Near a
+  // solution most contacts of a granular problem are open (Confeti-ex13: 67 of 107).
+  std::vector<char> open_;
+  std::vector<int> pattern_index_;  // position of each contact in the LU's system, -1 if left out
+  int pattern_size_ = 0;            // contacts in the LU's system
+  bool pattern_built_ = false;
+  // W's blocks by block column: the row contact and block index of each, in row order, with a block
+  // index of -1 where W_bb is missing (the diagonal is always in the pattern).
+  std::vector<int> column_start_, column_row_, column_block_;
+  // A fill-reducing ordering of the contacts (COLAMD), computed once on W's block pattern. The LU's
+  // system is cut out of the whole one with its columns in this order, so a new pattern costs one
+  // pass over W's blocks, not an ordering. For a symmetric pattern such as a Delassus operator's, a
+  // principal submatrix eliminated in the induced order fills in no more than the whole system.
+  std::vector<int> ordered_contacts_;
+  // The pattern's system, its columns in the ordering: column position_[i] holds unknown i.
   Eigen::SparseMatrix<double> jacobian_;
-  std::vector<int> block_entry_;     // value index of entry (i, j) of blocks[k]: Dim*Dim*k + Dim*i + j
-  std::vector<int> diagonal_entry_;  // value index of the diagonal entry of each row
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
+  std::vector<int> block_entry_;     // value index of entry (i, j) of blocks[k], -1 if cut
+  std::vector<int> diagonal_entry_;  // value index of the diagonal entry of each unknown
+  std::vector<int> position_;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::NaturalOrdering<int>> lu_;
+  void build_pattern(int active);
   double merit(const Eigen::VectorXd& r) const;
 };
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include "solver/io/fclib/fclib_reader.hpp"
 #include "solver/nlgs/frictional_contact_problem.hpp"
+#include "solver/nlgs/local_problem_newton.hpp"
 #include "solver/nlgs/local_problem_nlgs.hpp"
 #include "tests/support/shared_data.hpp"
 
@@ -298,6 +300,65 @@ TEST(LocalProblemNlgs, NewtonFirstSolvesARandomWellConditionedProblemInAFewNewto
   EXPECT_EQ(result.race_sweeps, 0);
   EXPECT_LT(result.newton_steps, 30);  // semismooth Newton on an SPD W: a few steps, not a crawl
   EXPECT_NEAR(natural_map_error(p, r), result.error, 1e-15);
+}
+
+// A chain of bodies, contact a between bodies a and a + 1 (H block-sparse, so W_ab = 0 unless the
+// contacts share a body), two contacts in three separating fast (q_n of about 5 W_nn).
+FrictionalContactProblem<3> chain_problem(int contacts, std::uint64_t seed) {
+  const int bodies = contacts + 1;
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(6 * bodies, 3 * contacts);
+  for (int a = 0; a < contacts; ++a)
+    for (int body : {a, a + 1})
+      for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 3; ++j) H(6 * body + i, 3 * a + j) = uniform(random);
+  const Eigen::MatrixXd W = H.transpose() * H;
+  Eigen::VectorXd q(3 * contacts), mu(contacts);
+  for (int a = 0; a < contacts; ++a) {
+    q(3 * a) = a % 3 == 0 ? -0.5 : 20.0 + uniform(random);  // W_nn is about 4
+    q(3 * a + 1) = 0.1 * uniform(random);
+    q(3 * a + 2) = 0.1 * uniform(random);
+    mu(a) = 0.3;
+  }
+  return problem_of<3>(W, q, mu);
+}
+
+// Newton solves the open contacts on their own and only the others in the sparse LU, with the open
+// ones' steps moved to the right (local_problem_newton.hpp). From reactions that pull the separating
+// contacts (r_n < 0, r_T != 0: open, B = 0, with steps that are not zero) and press the others, each
+// step must be the whole system's: the same iterates as with the whole system in the LU (pattern
+// slack infinity), to round-off.
+TEST(AlartCurnierNewton, StepsWithOpenContactsCutOutOfTheLuEqualTheWholeSystemsSteps) {
+  const int contacts = 30;
+  const FrictionalContactProblem<3> p = chain_problem(contacts, 11);
+  ASSERT_EQ(p.blocks.size(), 3u * contacts - 2);  // block tridiagonal
+  Eigen::VectorXd cut = Eigen::VectorXd::Zero(3 * contacts);
+  for (int a = 0; a < contacts; ++a)
+    cut.segment<3>(3 * a) = a % 3 == 0 ? Eigen::Vector3d(1.0, 0.0, 0.0) : Eigen::Vector3d(-0.5, 0.25, -0.25);
+  Eigen::VectorXd whole = cut;
+  AlartCurnierNewton<3> cutting(p), keeping_all(p, std::numeric_limits<double>::infinity());
+  for (int step = 0; step < 4; ++step) {
+    const NewtonStepReport a = cutting.step(cut), b = keeping_all.step(whole);
+    EXPECT_EQ(a.progressed, b.progressed) << "step " << step;
+    EXPECT_LE((cut - whole).norm(), 1e-10 * whole.norm()) << "step " << step;
+  }
+  int open = 0;
+  for (int a = 0; a < contacts; ++a) open += cut(3 * a) < 1e-9;
+  EXPECT_GE(open, contacts / 2);  // the cut was exercised
+  EXPECT_LT(open, contacts);      // and so was the LU
+}
+
+TEST(LocalProblemNlgs, NewtonWithMostContactsOpenSolvesABlockSparseChainInAFewNewtonSteps) {
+  const FrictionalContactProblem<3> p = chain_problem(30, 11);
+  LocalProblemNlgsOptions options;
+  options.tolerance = 1e-12;
+  options.race_share = 0.0;
+  Eigen::VectorXd r;
+  const LocalProblemNlgsResult result = solve_local_problem_nlgs(p, r, options);
+  EXPECT_TRUE(result.converged) << "error " << result.error;
+  EXPECT_EQ(result.sweeps, 0);
+  EXPECT_LT(result.newton_steps, 20);
 }
 
 TEST(LocalProblemNlgs, ExactSolutionAsStartNeedsNoSweep) {
