@@ -172,8 +172,8 @@ void AlartCurnierNewton<Dim>::build_pattern(int active) {
 }
 
 template <int Dim>
-double AlartCurnierNewton<Dim>::merit(const Eigen::VectorXd& r) const {
-  const Eigen::VectorXd u = apply_delassus(problem_, r) + problem_.q;
+double AlartCurnierNewton<Dim>::merit(const Eigen::VectorXd& r, Eigen::VectorXd& u) const {
+  u = apply_delassus(problem_, r) + problem_.q;
   double sum = 0.0;
   Eigen::Matrix<double, Dim, 1> phi;
   for (int a = 0; a < problem_.contact_count; ++a) {
@@ -189,51 +189,46 @@ NewtonStepReport AlartCurnierNewton<Dim>::step(Eigen::VectorXd& r) {
   using Local = Eigen::Matrix<double, Dim, 1>;
   const int contacts = problem_.contact_count;
   const int size = Dim * contacts;
-  const Eigen::VectorXd u = apply_delassus(problem_, r) + problem_.q;
+  // u = W r + q, as the last accepted line-search trial computed it for this r.
+  if (!u_current_) u_ = apply_delassus(problem_, r) + problem_.q;
+  u_current_ = false;
   Eigen::VectorXd phi(size);
-  double scale = 0.0;
   int active = 0;
   bool outside = false;  // an active contact is outside the pattern
   for (int a = 0; a < contacts; ++a) {
     Local phi_a;
-    alart_curnier<Dim>(r.template segment<Dim>(Dim * a), u.template segment<Dim>(Dim * a), problem_.mu(a),
+    alart_curnier<Dim>(r.template segment<Dim>(Dim * a), u_.template segment<Dim>(Dim * a), problem_.mu(a),
                        rho_n_(a), rho_t_(a), phi_a, &A_[a], &B_[a]);
     phi.template segment<Dim>(Dim * a) = phi_a;
     const bool open = B_[a].isZero(0.0);
     open_[a] = open;
     active += !open;
     outside = outside || (!open && pattern_index_[a] < 0);
-    // The shift's scale is the largest entry of J over W's blocks, as for the whole system.
-    for (int k = problem_.row_start[a]; k < problem_.row_start[a + 1]; ++k) {
-      if (open) {
-        if (problem_.column[k] == a) scale = std::max(scale, A_[a].cwiseAbs().maxCoeff());
-        continue;
-      }
-      Block J = B_[a] * problem_.blocks[k];
-      if (problem_.column[k] == a) J += A_[a];
-      scale = std::max(scale, J.cwiseAbs().maxCoeff());
-    }
   }
   const double merit_before = 0.5 * phi.squaredNorm();
   NewtonStepReport report;
   report.merit = merit_before;
   if (merit_before == 0.0) return report;
 
+  // J's blocks go into the pattern's values (every value is written: an open row's blocks are zero
+  // but for A_a); the shift's scale is the largest entry of J over W's blocks, as for the whole system.
   if (!pattern_built_ || outside || pattern_size_ > pattern_slack_ * active) build_pattern(active);
   double* values = jacobian_.valuePtr();
-  std::fill(values, values + jacobian_.nonZeros(), 0.0);
+  double scale = 0.0;
   for (int a = 0; a < contacts; ++a) {
     const int row = pattern_index_[a];
-    if (row < 0) continue;
+    if (open_[a] && problem_.diagonal[a] >= 0) scale = std::max(scale, A_[a].cwiseAbs().maxCoeff());
+    if (open_[a] && row < 0) continue;
     for (int k = problem_.row_start[a]; k < problem_.row_start[a + 1]; ++k) {
+      Block J = open_[a] ? Block::Zero() : Block(B_[a] * problem_.blocks[k]);
+      if (problem_.column[k] == a) J += A_[a];
+      if (!open_[a]) scale = std::max(scale, J.cwiseAbs().maxCoeff());
       const int* slot = &block_entry_[Dim * Dim * k];
       if (slot[0] < 0) continue;
-      Block J = B_[a] * problem_.blocks[k];
-      if (problem_.column[k] == a) J += A_[a];
       for (int i = 0; i < Dim; ++i)
         for (int j = 0; j < Dim; ++j) values[slot[Dim * i + j]] = J(i, j);
     }
-    if (problem_.diagonal[a] < 0)
+    if (row >= 0 && problem_.diagonal[a] < 0)
       for (int i = 0; i < Dim; ++i) values[diagonal_entry_[Dim * row + i]] = A_[a](i, i);
   }
 
@@ -290,9 +285,10 @@ NewtonStepReport AlartCurnierNewton<Dim>::step(Eigen::VectorXd& r) {
   double t = 1.0;
   for (int halving = 0; halving < kMaxLineSearchHalvings; ++halving, t *= 0.5) {
     const Eigen::VectorXd trial = r + t * direction;
-    const double trial_merit = merit(trial);
+    const double trial_merit = merit(trial, u_);
     if (trial_merit <= reference - 1e-4 * t * merit_before) {
       r = trial;
+      u_current_ = true;
       report.progressed = true;
       report.merit = trial_merit;
       return report;

@@ -42,6 +42,8 @@ class AlartCurnierNewton {
   double pattern_slack_;
   Eigen::VectorXd rho_n_, rho_t_;
   std::vector<double> recent_merits_;  // at most kNonmonotoneMemory, oldest first
+  Eigen::VectorXd u_;
+  bool u_current_ = false;  // u_ = W r + q for the r the last step returned
   // phi's derivatives of the current step: J_ab = delta_ab A_a + B_a W_ab.
   std::vector<Block> A_, B_;
   // A contact whose B is zero (open: phi_a = r_a) has the row J_a = [0 … A_a … 0]: its step is
@@ -67,7 +69,8 @@ class AlartCurnierNewton {
   std::vector<int> position_;
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::NaturalOrdering<int>> lu_;
   void build_pattern(int active);
-  double merit(const Eigen::VectorXd& r) const;
+  // ½|phi(r)|², and u = W r + q on the way.
+  double merit(const Eigen::VectorXd& r, Eigen::VectorXd& u) const;
 };
 
 }  // namespace lmgc::solver
