@@ -54,19 +54,18 @@ class AlartCurnierNewton {
   std::vector<int> pattern_index_;  // position of each contact in the LU's system, -1 if left out
   int pattern_size_ = 0;            // contacts in the LU's system
   bool pattern_built_ = false;
-  // W's blocks by block column: the row contact and block index of each, in row order, with a block
-  // index of -1 where W_bb is missing (the diagonal is always in the pattern).
+  // W's blocks by block column: the row contact and block index of each, rows in the ordering's
+  // order, with a block index of -1 where W_bb is missing (the diagonal is always in the pattern).
   std::vector<int> column_start_, column_row_, column_block_;
   // A fill-reducing ordering of the contacts (COLAMD), computed once on W's block pattern. The LU's
   // system is cut out of the whole one with its columns in this order, so a new pattern costs one
   // pass over W's blocks, not an ordering. For a symmetric pattern such as a Delassus operator's, a
   // principal submatrix eliminated in the induced order fills in no more than the whole system.
   std::vector<int> ordered_contacts_;
-  // The pattern's system, its columns in the ordering: column position_[i] holds unknown i.
+  // The pattern's system.
   Eigen::SparseMatrix<double> jacobian_;
   std::vector<int> block_entry_;     // value index of entry (i, j) of blocks[k], -1 if cut
   std::vector<int> diagonal_entry_;  // value index of the diagonal entry of each unknown
-  std::vector<int> position_;
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::NaturalOrdering<int>> lu_;
   void build_pattern(int active);
   // ½|phi(r)|², and u = W r + q on the way.
