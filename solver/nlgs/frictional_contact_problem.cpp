@@ -106,7 +106,12 @@ Eigen::Matrix<double, 2, 1> natural_map<2>(const Eigen::Vector2d& r, const Eigen
 
 template <int Dim>
 double natural_map_error(const FrictionalContactProblem<Dim>& problem, const Eigen::VectorXd& r) {
-  const Eigen::VectorXd u = apply_delassus(problem, r) + problem.q;
+  return natural_map_error(problem, r, apply_delassus(problem, r) + problem.q);
+}
+
+template <int Dim>
+double natural_map_error(const FrictionalContactProblem<Dim>& problem, const Eigen::VectorXd& r,
+                         const Eigen::VectorXd& u) {
   double sum = 0.0;
   for (int a = 0; a < problem.contact_count; ++a)
     sum += natural_map<Dim>(r.template segment<Dim>(Dim * a), u.template segment<Dim>(Dim * a), problem.mu(a))
@@ -127,5 +132,9 @@ template Eigen::VectorXd apply_delassus<2>(const FrictionalContactProblem<2>&, c
 template Eigen::VectorXd apply_delassus<3>(const FrictionalContactProblem<3>&, const Eigen::VectorXd&);
 template double natural_map_error<2>(const FrictionalContactProblem<2>&, const Eigen::VectorXd&);
 template double natural_map_error<3>(const FrictionalContactProblem<3>&, const Eigen::VectorXd&);
+template double natural_map_error<2>(const FrictionalContactProblem<2>&, const Eigen::VectorXd&,
+                                     const Eigen::VectorXd&);
+template double natural_map_error<3>(const FrictionalContactProblem<3>&, const Eigen::VectorXd&,
+                                     const Eigen::VectorXd&);
 
 }  // namespace lmgc::solver

@@ -43,5 +43,9 @@ Eigen::Matrix<double, Dim, 1> natural_map(const Eigen::Matrix<double, Dim, 1>& r
 // sqrt(sum_a |F_a(r)|^2) / |q| — the error every run reports (fc3d/FORMAT.md §3, measure 1).
 template <int Dim>
 double natural_map_error(const FrictionalContactProblem<Dim>& problem, const Eigen::VectorXd& r);
+// The same with u = W r + q already computed (bit for bit the same value).
+template <int Dim>
+double natural_map_error(const FrictionalContactProblem<Dim>& problem, const Eigen::VectorXd& r,
+                         const Eigen::VectorXd& u);
 
 }  // namespace lmgc::solver

@@ -163,7 +163,7 @@ void AlartCurnierNewton<Dim>::build_pattern(int active) {
   jacobian_.resizeNonZeros(entries);
   int* outer = jacobian_.outerIndexPtr();
   int* inner = jacobian_.innerIndexPtr();
-  block_entry_.assign(problem_.blocks.size() * Dim * Dim, -1);
+  block_entry_.resize(problem_.blocks.size() * Dim * Dim);  // set for the pattern's blocks only
   diagonal_entry_.resize(size);
   int column = 0, entry = 0;
   outer[0] = 0;
@@ -244,8 +244,8 @@ NewtonStepReport AlartCurnierNewton<Dim>::step(Eigen::VectorXd& r) {
       Block J = open_[a] ? Block::Zero() : Block(B_[a] * problem_.blocks[k]);
       if (problem_.column[k] == a) J += A_[a];
       if (!open_[a]) scale = std::max(scale, J.cwiseAbs().maxCoeff());
+      if (row < 0 || pattern_index_[problem_.column[k]] < 0) continue;
       const int* slot = &block_entry_[Dim * Dim * k];
-      if (slot[0] < 0) continue;
       for (int i = 0; i < Dim; ++i)
         for (int j = 0; j < Dim; ++j) values[slot[Dim * i + j]] = J(i, j);
     }

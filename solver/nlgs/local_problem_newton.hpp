@@ -35,6 +35,8 @@ class AlartCurnierNewton {
   // One Newton step from r (updated in place). Successive calls share the line search's memory of
   // recent merits, so r must not be changed between them (start a new object after sweeps).
   NewtonStepReport step(Eigen::VectorXd& r);
+  // u = W r + q for the r the last step returned, when that step progressed.
+  const Eigen::VectorXd& velocity() const { return u_; }
 
  private:
   using Block = Eigen::Matrix<double, Dim, Dim>;
@@ -64,7 +66,7 @@ class AlartCurnierNewton {
   std::vector<int> ordered_contacts_;
   // The pattern's system.
   Eigen::SparseMatrix<double> jacobian_;
-  std::vector<int> block_entry_;     // value index of entry (i, j) of blocks[k], -1 if cut
+  std::vector<int> block_entry_;     // value index of entry (i, j) of blocks[k] in the pattern
   std::vector<int> diagonal_entry_;  // value index of the diagonal entry of each unknown
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::NaturalOrdering<int>> lu_;
   void build_pattern(int active);

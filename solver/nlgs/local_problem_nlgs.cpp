@@ -163,8 +163,9 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
       best = x;
     }
   };
-  const auto evaluate = [&] {
-    result.error = natural_map_error(problem, r);
+  // u: W r + q when the caller has it (a Newton step computed it for its line search).
+  const auto evaluate = [&](const Eigen::VectorXd* u = nullptr) {
+    result.error = u ? natural_map_error(problem, r, *u) : natural_map_error(problem, r);
     error_stale = false;
     consider(r, result.error);
   };
@@ -214,7 +215,7 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
       if (!progressed) break;
       ++result.newton_steps;
       r_jumped();
-      evaluate();
+      evaluate(&newton.velocity());
       phase_best = std::min(phase_best, result.error);
       if (result.error < 0.5 * error_at_last_halving) {
         error_at_last_halving = result.error;
