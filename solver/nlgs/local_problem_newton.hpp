@@ -60,8 +60,8 @@ class AlartCurnierNewton {
   // order, with a block index of -1 where W_bb is missing (the diagonal is always in the pattern).
   std::vector<int> column_start_, column_row_, column_block_;
   // A fill-reducing ordering of the contacts (COLAMD), computed once on W's block pattern. The LU's
-  // system is cut out of the whole one with its columns in this order, so a new pattern costs one
-  // pass over W's blocks, not an ordering. For a symmetric pattern such as a Delassus operator's, a
+  // system is cut out of the whole one with its rows and columns in this order, so a new pattern
+  // costs one pass over W's blocks, not an ordering. For a symmetric pattern such as a Delassus operator's, a
   // principal submatrix eliminated in the induced order fills in no more than the whole system.
   std::vector<int> ordered_contacts_;
   // The pattern's system.
