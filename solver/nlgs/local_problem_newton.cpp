@@ -143,15 +143,15 @@ AlartCurnierNewton<Dim>::AlartCurnierNewton(const FrictionalContactProblem<Dim>&
 template <int Dim>
 void AlartCurnierNewton<Dim>::build_pattern(int active) {
   const int contacts = problem_.contact_count;
+  const auto in_old_pattern = [&](int a) { return !pattern_built_ || pattern_index_[a] >= 0; };
   int union_size = 0;
-  for (int a = 0; a < contacts; ++a) union_size += !open_[a] || !pattern_built_ || pattern_index_[a] >= 0;
-  const bool keep = union_size <= pattern_slack_ * active;
+  for (int a = 0; a < contacts; ++a) union_size += !open_[a] || in_old_pattern(a);
+  const bool keep_old = union_size <= pattern_slack_ * active;
   // The pattern's contacts are numbered in the ordering's order: the LU's rows and columns both
   // follow it (P^T J P), so J's diagonal stays on the LU's diagonal.
   pattern_size_ = 0;
   for (const int a : ordered_contacts_)
-    pattern_index_[a] =
-        !open_[a] || (keep && (!pattern_built_ || pattern_index_[a] >= 0)) ? pattern_size_++ : -1;
+    pattern_index_[a] = !open_[a] || (keep_old && in_old_pattern(a)) ? pattern_size_++ : -1;
   pattern_built_ = true;
 
   // Row and column Dim g + i of jacobian_ are unknown i of pattern contact g.
