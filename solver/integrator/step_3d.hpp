@@ -16,10 +16,10 @@ struct RunState3D {
   double theta = 0.5;
   std::vector<Interaction3D> contacts;
   std::vector<StoredInteraction3D> previous;  // last step's, by recup_rloc's key (store_interactions)
-  // Detection's list before sorting, kept from step to step for its memory: a list built afresh took
+  // Detection's points before sorting, kept from step to step for its memory: a list built afresh took
   // new pages from the system at every step on large scenes (64k spheres: 9-12% of a step in kernel
   // page handling, perf).
-  std::vector<Interaction3D> detected;
+  std::vector<DetectedPoint3D> detected;
   bool laws_initialized = false;  // a step with interactions has been solved (LawStep::first_step)
   QuickScramble scramble;         // the sweep order's random lists, step after step
 };

@@ -140,6 +140,20 @@ struct Interaction3D {
   Eigen::Vector3d cohesive_shift = Eigen::Vector3d::Zero();  // cohesive: (radh_t, 0, radh_s)
 };
 
+// A contact point as detection finds it: the pair, its visibility row, the local frame, the point
+// and gap. The interaction (levers, Delassus block, start velocity) is built from it once detection's
+// points are in sweep order, so that 640-byte records are written once and never moved.
+struct DetectedPoint3D {
+  PairFamily3D family = PairFamily3D::SPSPx;
+  bool levers_to_contactors = false;           // PTPT3: each lever reaches its contactor's centre
+  std::int32_t candidate = 0, antagonist = 0;  // contactor ids
+  std::int32_t visibility = 0, vertex = 0;
+  Eigen::Matrix3d frame = Eigen::Matrix3d::Zero();  // rows t, n, s
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d image = Eigen::Vector3d::Zero();  // the antagonist's periodic shift
+  double gap = 0.0, surface = 0.0, reference_gap = 0.0;
+};
+
 // What the next step's warm start (recup_rloc) reads of an interaction: LMGC90's verlet list entry.
 // Kept apart from Interaction3D (640 bytes) because the whole list is stored every step.
 struct StoredInteraction3D {
