@@ -28,7 +28,8 @@ Interaction3D random_interaction() {
 
 // The stored entry a contact should take: the first of its pair, in the stored list's order, that
 // has its vertex and (PRPRx) lies within 1e-3 of its point; null when none.
-const StoredInteraction3D* first_match(const std::vector<StoredInteraction3D>& stored, const Interaction3D& c) {
+const StoredInteraction3D* first_match(const std::vector<StoredInteraction3D>& stored,
+                                       const Interaction3D& c) {
   for (const StoredInteraction3D& p : stored)
     if (p.family == c.family && p.candidate == c.candidate && p.antagonist == c.antagonist &&
         p.vertex == c.vertex &&
