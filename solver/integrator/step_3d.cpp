@@ -52,7 +52,7 @@ std::string_view seen_as(const std::string& type) {
 constexpr std::size_t kPrefetchDistance = 32;
 
 // Asks for the cache lines a sweep's local solve reads of an interaction: its first 376 bytes (up to
-// W), seven lines at most as records of 640 bytes fall.
+// r), seven lines at most as records of 624 bytes fall.
 void prefetch_interaction(const Interaction3D& c) {
   const char* bytes = reinterpret_cast<const char*>(&c);
   for (std::size_t offset = 0; offset <= 384; offset += 64) __builtin_prefetch(bytes + offset);
@@ -600,7 +600,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   for (std::size_t l = 0; l < scene.laws.size(); ++l)
     law_updates_at_check[l] = updates_at_check(scene.laws[l].law);
   // Whether each contact is without reaction, beside its visits: a sweep passes most open contacts
-  // by on these 12 bytes without reading their 640-byte interaction (open_contact_visits.hpp). In a
+  // by on these 12 bytes without reading their 624-byte interaction (open_contact_visits.hpp). In a
   // 64k-sphere box 98% of the contacts are open, and each pass-by read two cache lines of it.
   struct OpenContact {
     OpenContactVisits visits;

@@ -109,31 +109,35 @@ struct Interaction3D {
   // in body axes: the rotational part of Hᵀ (numerics.md §2).
   Eigen::Matrix3d lever_candidate = Eigen::Matrix3d::Zero();
   Eigen::Matrix3d lever_antagonist = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d r = Eigen::Vector3d::Zero();  // impulse over the step (t, n, s)
   Eigen::Vector3d covfree = Eigen::Vector3d::Zero();
   Eigen::Matrix3d W = Eigen::Matrix3d::Zero();  // Delassus block (t, n, s)
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();  // impulse over the step (t, n, s)
 
+  // What the warm start exchanges with the stored list (recup_rloc, store_interactions) follows r,
+  // together: at 64k spheres both passes stream every interaction from memory, and these fields lay
+  // over six of its cache lines.
   PairFamily3D family = PairFamily3D::SPSPx;
+  ContactStatus status = ContactStatus::nknow;
+  ContactStatus status_begin = ContactStatus::nknow;
   std::int32_t candidate = 0, antagonist = 0;  // contactor ids
+  // PRPLx: the candidate vertex (1-based, Vloc_Rloc's CDVER); PRPRx: 0. Warm start key of PRPLx.
+  std::int32_t vertex = 0;
+  std::array<double, 6> internal{};
+  // The contact point about the candidate's centre in its frame: PRPRx's warm-start key
+  // (recup_rloc_PRPRx matches points closer than 1e-3).
+  Eigen::Vector3d candidate_point = Eigen::Vector3d::Zero();
+
   std::int32_t law = 0, visibility = 0;
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   double gap_begin = 0.0;
   Eigen::Vector3d velocity_begin = Eigen::Vector3d::Zero();  // local (t, n, s) at t_begin
   Eigen::Vector3d u = Eigen::Vector3d::Zero();               // relative velocity at the end of the step
-  ContactStatus status = ContactStatus::nknow;
-  ContactStatus status_begin = ContactStatus::nknow;
-  std::array<double, 6> internal{};
   // A law's value that the step's convergence checks may change before the end of the step stores
   // it (LMGC90's taz(1)): IQS_MAC_CZM's damage β.
   double law_working = 0.0;
-  // PRPLx: the candidate vertex (1-based, Vloc_Rloc's CDVER); PRPRx: 0. Warm start key of PRPLx.
-  std::int32_t vertex = 0;
   // Contact surface of the cohesive laws (get_surf_*: SPSPx π (r₁r₂)²/(r₁+r₂)², SPPLx π r², PRPRx the
   // overlap area shared by the pair's points, PRPLx 0 as LMGC90 has it).
   double surface = 0.0;
-  // The contact point about the candidate's centre in its frame: PRPRx's warm-start key
-  // (recup_rloc_PRPRx matches points closer than 1e-3).
-  Eigen::Vector3d candidate_point = Eigen::Vector3d::Zero();
   // PTPT3: the link's length in the reference configuration (nonuc0, the rods' and wires' gapREF).
   double reference_gap = 0.0;
   Eigen::Vector3d cohesive_slope = Eigen::Vector3d::Zero();  // cohesive: (k_t, k_n, k_t)
@@ -142,7 +146,7 @@ struct Interaction3D {
 
 // A contact point as detection finds it: the pair, its visibility row, the local frame, the point
 // and gap. The interaction (levers, Delassus block, start velocity) is built from it once detection's
-// points are in sweep order, so that 640-byte records are written once and never moved.
+// points are in sweep order, so that 624-byte records are written once and never moved.
 struct DetectedPoint3D {
   PairFamily3D family = PairFamily3D::SPSPx;
   bool levers_to_contactors = false;           // PTPT3: each lever reaches its contactor's centre
@@ -155,7 +159,7 @@ struct DetectedPoint3D {
 };
 
 // What the next step's warm start (recup_rloc) reads of an interaction: LMGC90's verlet list entry.
-// Kept apart from Interaction3D (640 bytes) because the whole list is stored every step.
+// Kept apart from Interaction3D (624 bytes) because the whole list is stored every step.
 struct StoredInteraction3D {
   PairFamily3D family = PairFamily3D::SPSPx;
   ContactStatus status = ContactStatus::nknow;
