@@ -13,8 +13,8 @@ namespace lmgc::solver {
 
 // The positions of `list` in the order of their keys; empty when `list` is already in that order.
 // `key_of(interaction)` returns the (high, low) halves of its 128-bit sort key.
-template <class Interaction, class KeyOf>
-std::vector<std::uint32_t> interaction_order(const std::vector<Interaction>& list, KeyOf&& key_of) {
+template <class List, class KeyOf>
+std::vector<std::uint32_t> interaction_order(const List& list, KeyOf&& key_of) {
   struct SortKey {
     std::uint64_t high, low;
     std::uint32_t index;
@@ -37,12 +37,12 @@ std::vector<std::uint32_t> interaction_order(const std::vector<Interaction>& lis
 
 // Sorts `list` in place, cycle by cycle, so that it keeps its buffer from step to step (a new one
 // each step took fresh pages from the system on large scenes).
-template <class Interaction, class KeyOf>
-void sort_interactions(std::vector<Interaction>& list, KeyOf&& key_of) {
+template <class List, class KeyOf>
+void sort_interactions(List& list, KeyOf&& key_of) {
   std::vector<std::uint32_t> order = interaction_order(list, key_of);
   for (std::size_t start = 0; start < order.size(); ++start) {
     if (order[start] == start) continue;
-    Interaction moving = std::move(list[start]);
+    typename List::value_type moving = std::move(list[start]);
     std::size_t hole = start;
     while (order[hole] != start) {
       const std::size_t from = order[hole];

@@ -268,7 +268,7 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     p.radius = c.bounding_radius;
   }
 
-  std::vector<DetectedPoint3D>& found = state.detected;
+  LargeArray<DetectedPoint3D>& found = state.detected;
   found.clear();
   // One point per contact point, in detection's order; the interactions are built from them once
   // they are sorted (below). `image`: the antagonist's periodic shift (zero but across a periodic
@@ -541,8 +541,8 @@ auto recup_key(const Interaction& c) {
 }
 }  // namespace
 
-void store_interactions(RunState3D& state, const std::vector<Interaction3D>& interactions) {
-  std::vector<StoredInteraction3D>& stored = state.previous;
+void store_interactions(RunState3D& state, std::span<const Interaction3D> interactions) {
+  LargeArray<StoredInteraction3D>& stored = state.previous;
   stored.clear();  // keeps its buffer
   for (const Interaction3D& c : interactions) stored.emplace_back(c);
   const auto by_key = [](const StoredInteraction3D& a, const StoredInteraction3D& b) {
@@ -559,7 +559,7 @@ void recup_rloc(RunState3D& state) {
   // Detection lists the contacts by the same key, so the pairs are found by walking both lists
   // together; a contact out of that order is looked up by bisection. (A bisection per contact read
   // some 18 scattered entries of the 22 MB list at 64k spheres.)
-  const std::vector<StoredInteraction3D>& previous = state.previous;
+  const LargeArray<StoredInteraction3D>& previous = state.previous;
   const auto key_below = [](const StoredInteraction3D& p, const auto& k) { return recup_key(p) < k; };
   auto cursor = previous.begin();  // the first entry not below the last contact's key
   for (Interaction3D& c : state.contacts) {
@@ -588,7 +588,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   const auto start = std::chrono::steady_clock::now();
   RigidBodies3D& b = scene.bodies;
   NlgsResult result;
-  std::vector<Interaction3D>& contacts = state.contacts;
+  LargeArray<Interaction3D>& contacts = state.contacts;
   std::vector<Vector6d>& V = b.velocity;
   V = b.velocity_free;
   for (auto& impulse : b.impulse) impulse.setZero();

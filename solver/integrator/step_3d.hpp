@@ -1,8 +1,10 @@
 #pragma once
 // One Moreau–Jean θ-scheme step of a rigid 3D scene, as the stages of LMGC90's step
 // (spec: numerics.md §1.2, §2-§5): each stage a plain function over the scene's flat arrays.
+#include <span>
 #include <vector>
 
+#include "solver/model/large_array.hpp"
 #include "solver/model/scene_3d.hpp"
 #include "solver/nlgs/nlgs_check.hpp"
 #include "solver/nlgs/quick_scramble.hpp"
@@ -14,12 +16,12 @@ struct RunState3D {
   long step = 0;
   double h = 1e-3;
   double theta = 0.5;
-  std::vector<Interaction3D> contacts;
-  std::vector<StoredInteraction3D> previous;  // last step's, by recup_rloc's key (store_interactions)
+  LargeArray<Interaction3D> contacts;
+  LargeArray<StoredInteraction3D> previous;  // last step's, by recup_rloc's key (store_interactions)
   // Detection's points before sorting, kept from step to step for its memory: a list built afresh took
   // new pages from the system at every step on large scenes (64k spheres: 9-12% of a step in kernel
   // page handling, perf).
-  std::vector<DetectedPoint3D> detected;
+  LargeArray<DetectedPoint3D> detected;
   bool laws_initialized = false;  // a step with interactions has been solved (LawStep::first_step)
   QuickScramble scramble;         // the sweep order's random lists, step after step
 };
@@ -34,7 +36,7 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state);
 void recup_rloc(RunState3D& state);
 // The verlet list the next recup_rloc reads: `interactions` stored by pair (family, candidate,
 // antagonist), equal pairs in their order (a step's interactions are already in that order).
-void store_interactions(RunState3D& state, const std::vector<Interaction3D>& interactions);
+void store_interactions(RunState3D& state, std::span<const Interaction3D> interactions);
 // NLGS in LMGC90's Exchange_Local_Global form: every local solve sees the bodies' current velocities
 // and injects its impulse increment at once (numerics.md §3).
 NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& options);

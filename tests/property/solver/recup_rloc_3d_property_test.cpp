@@ -6,6 +6,7 @@
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
+#include <span>
 #include <vector>
 
 #include "solver/integrator/step_3d.hpp"
@@ -28,8 +29,7 @@ Interaction3D random_interaction() {
 
 // The stored entry a contact should take: the first of its pair, in the stored list's order, that
 // has its vertex and (PRPRx) lies within 1e-3 of its point; null when none.
-const StoredInteraction3D* first_match(const std::vector<StoredInteraction3D>& stored,
-                                       const Interaction3D& c) {
+const StoredInteraction3D* first_match(std::span<const StoredInteraction3D> stored, const Interaction3D& c) {
   for (const StoredInteraction3D& p : stored)
     if (p.family == c.family && p.candidate == c.candidate && p.antagonist == c.antagonist &&
         p.vertex == c.vertex &&
@@ -54,7 +54,7 @@ RC_GTEST_PROP(RecupRloc3D, EveryContactInAnyOrderTakesTheFirstMatchingStoredEntr
     std::stable_sort(contacts.begin(), contacts.end(), [](const Interaction3D& a, const Interaction3D& b) {
       return std::tie(a.family, a.candidate, a.antagonist) < std::tie(b.family, b.candidate, b.antagonist);
     });
-  state.contacts = contacts;
+  state.contacts.assign(contacts.begin(), contacts.end());
   recup_rloc(state);
   for (std::size_t k = 0; k < contacts.size(); ++k) {
     const StoredInteraction3D* match = first_match(state.previous, contacts[k]);

@@ -126,7 +126,7 @@ TEST(StateFiles3D, VlocRlocRoundTripsThroughTheGrammarWriterAndParser) {
 
 TEST(StateFiles3D, VlocRlocHoldsTheRunStateInLmgc90sLayout) {
   const SceneRun r = run(3);
-  const std::vector<Interaction3D>& contacts = r.state.contacts;
+  const auto& contacts = r.state.contacts;
   // Sphere–ground, two cluster spheres–ground, sphere–sphere.
   ASSERT_EQ(contacts.size(), 4u);
   const grammar::VlocRlocFile f = parse_vloc(grammar::write_vloc_rloc(vloc_rloc_file_3d(r.scene, r.state)));
@@ -239,7 +239,7 @@ TEST(StateFiles3D, WarmStartGivesBackTheReactionsAndStatuses) {
   SceneRun r = run(3);
   const grammar::VlocRlocFile f = parse_vloc(grammar::write_vloc_rloc(vloc_rloc_file_3d(r.scene, r.state)));
   const std::vector<Interaction3D> warm = warm_start_3d(f, r.scene, kH);
-  const std::vector<Interaction3D>& contacts = r.state.contacts;
+  const auto& contacts = r.state.contacts;
   ASSERT_EQ(warm.size(), contacts.size());
   for (std::size_t k = 0; k < warm.size(); ++k) {
     EXPECT_EQ(warm[k].family, contacts[k].family);

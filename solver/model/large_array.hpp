@@ -1,0 +1,54 @@
+#pragma once
+// Flat arrays that a large scene's step streams through (interactions, detection's points, the
+// stored verlet list, the bodies' state): from 2 MB up, each is allocated on 2 MB boundaries and the
+// kernel is asked to back it with transparent huge pages (madvise, the mode Debian's kernels default
+// to). With 4 KB pages, every pass over a 120 MB list of interactions and every body lookup of a
+// sweep walked the page tables: at 64k spheres a step took 0.28-0.34 s with ordinary pages and
+// 0.24-0.28 s with huge ones for every allocation (glibc.malloc.hugetlb=1, same binary). The advice
+// is only a hint: where the kernel has no huge page to give, or THP is off, the pages are ordinary.
+#include <sys/mman.h>
+
+#include <cstddef>
+#include <cstdlib>
+#include <new>
+#include <vector>
+
+namespace lmgc::solver {
+
+inline constexpr std::size_t kHugePageBytes = std::size_t{2} << 20;
+
+template <class T>
+struct HugePageAllocator {
+  static_assert(alignof(T) <= alignof(std::max_align_t), "malloc's alignment must do for T");
+  using value_type = T;
+
+  HugePageAllocator() = default;
+  template <class U>
+  HugePageAllocator(const HugePageAllocator<U>&) noexcept {}
+
+  T* allocate(std::size_t n) {
+    if (n > std::size_t(-1) / sizeof(T)) throw std::bad_array_new_length();
+    const std::size_t bytes = n * sizeof(T);
+    void* p = nullptr;
+    if (bytes < kHugePageBytes) {
+      p = std::malloc(bytes);
+    } else {
+      const std::size_t whole_pages = (bytes + kHugePageBytes - 1) / kHugePageBytes * kHugePageBytes;
+      p = std::aligned_alloc(kHugePageBytes, whole_pages);
+      if (p) madvise(p, whole_pages, MADV_HUGEPAGE);  // a refusal leaves ordinary pages
+    }
+    if (!p) throw std::bad_alloc();
+    return static_cast<T*>(p);
+  }
+  void deallocate(T* p, std::size_t) noexcept { std::free(p); }
+
+  template <class U>
+  bool operator==(const HugePageAllocator<U>&) const noexcept {
+    return true;
+  }
+};
+
+template <class T>
+using LargeArray = std::vector<T, HugePageAllocator<T>>;
+
+}  // namespace lmgc::solver

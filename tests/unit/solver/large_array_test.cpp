@@ -1,0 +1,35 @@
+// LargeArray (solver/model/large_array.hpp): a std::vector whose buffers from 2 MB up start on a
+// 2 MB boundary, where the kernel can back them with transparent huge pages.
+#include "solver/model/large_array.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <numeric>
+
+namespace lmgc::solver {
+namespace {
+
+std::uintptr_t address(const void* p) {
+  return reinterpret_cast<std::uintptr_t>(p);
+}
+
+TEST(LargeArray, BuffersFromTwoMegabytesUpStartOnAHugePageBoundary) {
+  LargeArray<double> large(kHugePageBytes / sizeof(double) + 1);
+  EXPECT_EQ(address(large.data()) % kHugePageBytes, 0u);
+  large.reserve(3 * kHugePageBytes / sizeof(double));  // a larger buffer, on a boundary too
+  EXPECT_EQ(address(large.data()) % kHugePageBytes, 0u);
+}
+
+TEST(LargeArray, KeepsItsElementsAcrossGrowthLikeAVector) {
+  LargeArray<std::int64_t> a;
+  for (std::int64_t k = 0; k < 400000; ++k) a.push_back(k);  // grows from bytes to 3.2 MB
+  std::int64_t expected = 0;
+  for (std::int64_t value : a) EXPECT_EQ(value, expected++);
+  EXPECT_EQ(std::accumulate(a.begin(), a.end(), std::int64_t{0}), 399999LL * 400000 / 2);
+  LargeArray<std::int64_t> small(3, 7);
+  EXPECT_EQ(small[2], 7);
+}
+
+}  // namespace
+}  // namespace lmgc::solver
