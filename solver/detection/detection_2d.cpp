@@ -107,7 +107,7 @@ PairRoles pair_roles(const VisibilityIndex2D& index, std::size_t i, std::size_t 
 }  // namespace
 
 void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
-                        std::span<const Vector3d> coordinates, std::vector<Interaction2D>& out) {
+                        std::span<const Vector3d> coordinates, LargeArray<Interaction2D>& out) {
   out.clear();
   const std::size_t n = scene.contactors.size();
   if (n == 0) return;

@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "solver/model/large_array.hpp"
 #include "solver/model/scene_2d.hpp"
 
 namespace lmgc::solver {
@@ -32,6 +33,6 @@ bool pair_family_of(const std::string& candidate_type, const std::string& antago
 // local relative velocity at the bodies' velocity_begin. The result is sorted by (family,
 // candidate, antagonist, candidate vertex): the order of the NLGS sweep and of Vloc_Rloc files.
 void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
-                        std::span<const Eigen::Vector3d> coordinates, std::vector<Interaction2D>& out);
+                        std::span<const Eigen::Vector3d> coordinates, LargeArray<Interaction2D>& out);
 
 }  // namespace lmgc::solver

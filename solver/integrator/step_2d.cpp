@@ -71,7 +71,7 @@ void recup_rloc(RunState2D& state) {
   auto key = [](const auto& c) {
     return std::make_tuple(c.family, c.candidate, c.antagonist, c.candidate_vertex);
   };
-  const std::vector<StoredInteraction2D>& previous = state.previous;
+  const LargeArray<StoredInteraction2D>& previous = state.previous;
   // PLPLx between two parallel faces: which polygon holds the vertices depends on round-off, so a
   // pair may come back with its roles swapped (LMGC90's own detection keeps them; its
   // recup_rloc_ByPosition_PLPLx matches either role by position). The swapped pair's previous
@@ -130,7 +130,7 @@ NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& 
   return result;
 }
 
-void store_interactions(RunState2D& state, const std::vector<Interaction2D>& interactions) {
+void store_interactions(RunState2D& state, std::span<const Interaction2D> interactions) {
   state.previous.clear();  // keeps its buffer
   for (const Interaction2D& c : interactions) state.previous.emplace_back(c);
 }

@@ -2,6 +2,7 @@
 // One Moreau–Jean θ-scheme step of a rigid 2D scene, as the stages of LMGC90's step
 // (spec: numerics.md §1.1, state-and-outputs.md §2.2): each stage is a plain function over the
 // scene's flat arrays, so a driver can call them one by one as LMGC90's command.py does.
+#include <span>
 #include <vector>
 
 #include "solver/detection/detection_2d.hpp"
@@ -16,9 +17,9 @@ struct RunState2D {
   long step = 0;      // Nstep
   double h = 1e-3;    // time step
   double theta = 0.5;
-  std::vector<Interaction2D> contacts;        // this step's interactions
-  std::vector<StoredInteraction2D> previous;  // last step's (the "verlet" list used for warm start)
-  bool laws_initialized = false;  // a step with interactions has been solved (LawStep::first_step)
+  LargeArray<Interaction2D> contacts;        // this step's interactions
+  LargeArray<StoredInteraction2D> previous;  // last step's (the "verlet" list used for warm start)
+  bool laws_initialized = false;             // a step with interactions has been solved (LawStep::first_step)
   VisibilityIndex2D visibility;
   QuickScramble scramble;  // the sweep order's random lists, step after step
 };
@@ -34,7 +35,7 @@ NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& 
 void stock_rloc(RunState2D& state);
 // The verlet list the next recup_rloc reads (stock_rloc's, or a warm start's from Vloc_Rloc.INI):
 // sorted like detection's interactions, by (family, candidate, antagonist, vertex).
-void store_interactions(RunState2D& state, const std::vector<Interaction2D>& interactions);
+void store_interactions(RunState2D& state, std::span<const Interaction2D> interactions);
 // X = X_begin + h((1-θ) V_begin + θ V).
 void compute_dof(Scene2D& scene, const RunState2D& state);
 // Bodies out of the scene's bounds become invisible (frozen at the bound, zero velocity).

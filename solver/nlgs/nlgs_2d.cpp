@@ -192,7 +192,7 @@ void cohesive_solve(const SweepContact2D& c, const LawTerms2D& l, double vt, dou
 
 }  // namespace
 
-NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vector<Interaction2D>& contacts,
+NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray<Interaction2D>& contacts,
                          double h, double time, const NlgsOptions& options, bool first_step,
                          bool first_preparation, QuickScramble& scramble) {
   NlgsResult result;
@@ -201,8 +201,12 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
   const std::vector<Vector3d>& inverse_mass = bodies.inverse_mass;
 
   // Prep: Delassus blocks, the laws' local problems, the sweep arrays; V = V_free + M⁻¹ H r_warm.
-  std::vector<SweepContact2D> hot(count);
-  std::vector<ContactReaction2D> reaction(count);
+  // The sweep arrays outlive the call (one set per thread), so that a large scene keeps their pages,
+  // huge ones where the kernel gives them (large_array.hpp), instead of new ones at every step.
+  thread_local LargeArray<SweepContact2D> hot;
+  thread_local LargeArray<ContactReaction2D> reaction;
+  hot.assign(count, SweepContact2D{});
+  reaction.assign(count, ContactReaction2D{});
   std::vector<LawTerms2D> terms;
   const LawStep law_step{h, 0.0, first_step, first_preparation};
   std::vector<std::uint8_t> law_updates_at_check(scene.laws.size());
@@ -306,8 +310,8 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vecto
         execution);
   };
   reorder();
-  std::vector<SweepContact2D> hot_in_order;
-  std::vector<ContactReaction2D> reaction_in_order;
+  thread_local LargeArray<SweepContact2D> hot_in_order;
+  thread_local LargeArray<ContactReaction2D> reaction_in_order;
   auto gather = [&] {
     hot_in_order.resize(count);
     reaction_in_order.resize(count);

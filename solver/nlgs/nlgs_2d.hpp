@@ -5,6 +5,7 @@
 
 #include "solver/bodies/rigid_bodies_2d.hpp"
 #include "solver/model/interaction_2d.hpp"
+#include "solver/model/large_array.hpp"
 #include "solver/model/scene_2d.hpp"
 #include "solver/nlgs/nlgs_check.hpp"
 #include "solver/nlgs/quick_scramble.hpp"
@@ -15,7 +16,7 @@ namespace lmgc::solver {
 // `contacts` (warm start), iterates, then sets velocities (bodies.velocity = V_free + M⁻¹ H r),
 // relative velocities and statuses. `first_step`, `first_preparation`: LawStep's. `scramble`: the
 // run's quick-scramble generator, used when options.quick_scramble.
-NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, std::vector<Interaction2D>& contacts,
+NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray<Interaction2D>& contacts,
                          double h, double time, const NlgsOptions& options, bool first_step,
                          bool first_preparation, QuickScramble& scramble);
 

@@ -78,7 +78,7 @@ auto sweep_key(const Interaction2D& c) {
 RC_GTEST_PROP(Detection2D, ListIsInSweepOrderAndFindsEveryDiskPairWithinTheAlertDistance, ()) {
   RandomScene s = random_scene();
   const VisibilityIndex2D index = build_visibility_index(s.scene);
-  std::vector<Interaction2D> found;
+  LargeArray<Interaction2D> found;
   detect_contacts_2d(s.scene, index, s.coordinates, found);
   for (std::size_t k = 1; k < found.size(); ++k) RC_ASSERT(!(sweep_key(found[k]) < sweep_key(found[k - 1])));
 
@@ -122,7 +122,7 @@ RC_GTEST_PROP(Detection2D, PeriodicListIsInSweepOrderAndFindsDiskPairsAcrossTheS
   Scene2D scene = b.build();
   scene.x_period = period;
   const VisibilityIndex2D index = build_visibility_index(scene);
-  std::vector<Interaction2D> found;
+  LargeArray<Interaction2D> found;
   detect_contacts_2d(scene, index, coordinates, found);
   for (std::size_t k = 1; k < found.size(); ++k) RC_ASSERT(!(sweep_key(found[k]) < sweep_key(found[k - 1])));
 
@@ -151,7 +151,7 @@ RC_GTEST_PROP(Detection2D, PeriodicListIsInSweepOrderAndFindsDiskPairsAcrossTheS
 RC_GTEST_PROP(Detection2D, EachInteractionCarriesTheRelativeVelocityOfItsBodiesAtTheStartOfTheStep, ()) {
   RandomScene s = random_scene();
   const VisibilityIndex2D index = build_visibility_index(s.scene);
-  std::vector<Interaction2D> found;
+  LargeArray<Interaction2D> found;
   detect_contacts_2d(s.scene, index, s.coordinates, found);
   const std::vector<Vector3d>& v = s.scene.bodies.velocity_begin;
   for (const Interaction2D& c : found) {

@@ -31,5 +31,15 @@ TEST(LargeArray, KeepsItsElementsAcrossGrowthLikeAVector) {
   EXPECT_EQ(small[2], 7);
 }
 
+TEST(LargeArray, OverAlignedElementsKeepTheirAlignmentInSmallBuffers) {
+  struct alignas(64) Line {
+    double value = 0.0;
+  };
+  for (std::size_t count : {1u, 3u, 100u}) {
+    LargeArray<Line> lines(count);
+    EXPECT_EQ(address(lines.data()) % 64, 0u) << count;
+  }
+}
+
 }  // namespace
 }  // namespace lmgc::solver
