@@ -114,8 +114,8 @@ struct Interaction3D {
   Eigen::Vector3d r = Eigen::Vector3d::Zero();  // impulse over the step (t, n, s)
 
   // What the warm start exchanges with the stored list (recup_rloc, store_interactions) follows r,
-  // together: at 64k spheres both passes stream every interaction from memory, and these fields lay
-  // over six of its cache lines.
+  // together: at 64k spheres both passes stream every interaction from memory, and these fields,
+  // spread over six of a record's cache lines before, now take three.
   PairFamily3D family = PairFamily3D::SPSPx;
   ContactStatus status = ContactStatus::nknow;
   ContactStatus status_begin = ContactStatus::nknow;
