@@ -276,10 +276,9 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
   // contact point.
   const auto add_point = [&](std::size_t i, std::size_t j, const Vector3d& image, int row, const Vector3d& t,
                              const Vector3d& normal, const Vector3d& s, const Vector3d& point, double gap,
-                             int vertex, double surface, bool levers_to_contactors = false) {
+                             int vertex, double surface) {
     DetectedPoint3D& d = found.emplace_back();
     d.family = scene.visibility[static_cast<std::size_t>(row)].family;
-    d.levers_to_contactors = levers_to_contactors;
     d.candidate = static_cast<std::int32_t>(i);
     d.antagonist = static_cast<std::int32_t>(j);
     d.visibility = row;
@@ -479,7 +478,7 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
                    an_point = position(j, an_body) + (link.shift_candidate ? Vector3d::Zero() : shift);
     const ContactGeometry3D g = point_point_geometry(cd_point, an_point);
     add_point(i, j, Vector3d::Zero(), link.visibility, g.tangent, g.normal, g.second_tangent, g.point, g.gap,
-              link.pair_rank, 0.0, true);  // centre[k]: lever point about the (wrapped) centre
+              link.pair_rank, 0.0);
     found.back().reference_gap = link.reference_length;
   }
   // The interaction of one point: local frame rows (t, n, s), lever rows, Delassus block.
@@ -502,7 +501,8 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     c.reference_gap = d.reference_gap;
     for (int side = 0; side < 2; ++side) {
       const auto body = static_cast<std::size_t>(side == 0 ? cd.body : an.body);
-      const Vector3d& own = d.levers_to_contactors
+      // PTPT3 (only the links above make its points): about the contactors' (wrapped) centres.
+      const Vector3d& own = d.family == PairFamily3D::PTPT3
                                 ? centre[static_cast<std::size_t>(side == 0 ? d.candidate : d.antagonist)]
                                 : d.point;
       const Vector3d lever = own - body_centre[body] - (side == 0 ? Vector3d::Zero() : d.image);

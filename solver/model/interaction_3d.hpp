@@ -148,8 +148,7 @@ struct Interaction3D {
 // and gap. The interaction (levers, Delassus block, start velocity) is built from it once detection's
 // points are in sweep order, so that 624-byte records are written once and never moved.
 struct DetectedPoint3D {
-  PairFamily3D family = PairFamily3D::SPSPx;
-  bool levers_to_contactors = false;           // PTPT3: each lever reaches its contactor's centre
+  PairFamily3D family = PairFamily3D::SPSPx;   // PTPT3: each lever reaches its contactor's centre
   std::int32_t candidate = 0, antagonist = 0;  // contactor ids
   std::int32_t visibility = 0, vertex = 0;
   Eigen::Matrix3d frame = Eigen::Matrix3d::Zero();  // rows t, n, s
