@@ -8,6 +8,11 @@
 // so the processor overlaps them instead of waiting for each one's velocities (in detection order
 // a candidate's contacts follow one another, each on the velocities the previous one wrote).
 // A body that no update moves (every inverse mass 0: walls, driven bodies) orders nothing.
+// The levels are formed within windows of consecutive updates of the sweep order, run one window
+// after the other. Over a whole scene the chains of a packing in detection order run across its
+// width (a 64k-disk layer 2000 disks wide: 2092 levels of about 60 updates each, spread over the
+// whole layer), so each level walked the whole body array, from L3 at 64k disks; within a window
+// the bodies a level touches stay in L2 (64k-disk layer, 50 sweeps: 82-113 -> 44-50 ms per step).
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -16,38 +21,51 @@ namespace lmgc::solver {
 
 class SweepWavefront {
  public:
+  // Updates per window: every RIGID_2D example fits in one (1024DK_BoxJC: about 2000 contacts);
+  // 1024 to 4096 ran the 64k-disk box and layer equally fast, 16384 the box 1.8x slower.
+  static constexpr std::size_t default_window = 4096;
+
   // `order`: the sweep order (contact indices). `bodies_of(k)` gives contact k's two body indices,
-  // `movable(i)` whether body i can move, `body_count` the number of bodies. `execution` receives
-  // the same indices in the order to run them.
+  // `movable(i)` whether body i can move, `body_count` the number of bodies, `window` (at least 1)
+  // the updates per window. `execution` receives the same indices in the order to run them.
   template <typename Index, typename BodiesOf, typename Movable>
   void reorder(const std::vector<Index>& order, BodiesOf&& bodies_of, Movable&& movable,
-               std::size_t body_count, std::vector<Index>& execution) {
+               std::size_t body_count, std::vector<Index>& execution, std::size_t window = default_window) {
     const std::size_t n = order.size();
+    window = std::max<std::size_t>(window, 1);
     body_level_.assign(body_count, 0u);
     level_.resize(n);
-    std::uint32_t depth = 0;
-    for (std::size_t p = 0; p < n; ++p) {
-      const auto [i, j] = bodies_of(order[p]);
-      const bool moves_i = movable(i), moves_j = movable(j);
-      std::uint32_t level = 0;
-      if (moves_i) level = body_level_[static_cast<std::size_t>(i)];
-      if (moves_j) level = std::max(level, body_level_[static_cast<std::size_t>(j)]);
-      ++level;
-      if (moves_i) body_level_[static_cast<std::size_t>(i)] = level;
-      if (moves_j) body_level_[static_cast<std::size_t>(j)] = level;
-      level_[p] = level;
-      depth = std::max(depth, level);
-    }
-    // Counting sort by level, stable: sweep order within a level.
-    start_.assign(static_cast<std::size_t>(depth) + 2, 0u);
-    for (std::size_t p = 0; p < n; ++p) ++start_[level_[p] + 1];
-    for (std::size_t l = 1; l < start_.size(); ++l) start_[l] += start_[l - 1];
     execution.resize(n);
-    for (std::size_t p = 0; p < n; ++p) execution[start_[level_[p]]++] = order[p];
+    std::uint32_t base = 0, depth = 0;
+    for (std::size_t w0 = 0; w0 < n; w0 += window) {
+      const std::size_t w1 = std::min(n, w0 + window);
+      std::uint32_t top = base;
+      for (std::size_t p = w0; p < w1; ++p) {
+        const auto [i, j] = bodies_of(order[p]);
+        const bool moves_i = movable(i), moves_j = movable(j);
+        // Levels of earlier windows are at most `base`: a window starts again from level 1.
+        std::uint32_t level = base;
+        if (moves_i) level = std::max(level, body_level_[static_cast<std::size_t>(i)]);
+        if (moves_j) level = std::max(level, body_level_[static_cast<std::size_t>(j)]);
+        ++level;
+        if (moves_i) body_level_[static_cast<std::size_t>(i)] = level;
+        if (moves_j) body_level_[static_cast<std::size_t>(j)] = level;
+        level_[p] = level - base;
+        top = std::max(top, level);
+      }
+      const std::uint32_t local_depth = top - base;
+      depth = std::max(depth, local_depth);
+      // Counting sort by level, stable: sweep order within a level.
+      start_.assign(static_cast<std::size_t>(local_depth) + 2, 0u);
+      for (std::size_t p = w0; p < w1; ++p) ++start_[level_[p] + 1];
+      for (std::size_t l = 1; l < start_.size(); ++l) start_[l] += start_[l - 1];
+      for (std::size_t p = w0; p < w1; ++p) execution[w0 + start_[level_[p]]++] = order[p];
+      base = top;
+    }
     depth_ = depth;
   }
 
-  // Levels of the last reorder (the longest chain of updates that share bodies).
+  // Levels of the last reorder (the longest chain of updates that share bodies within a window).
   std::uint32_t depth() const { return depth_; }
 
  private:

@@ -1,7 +1,7 @@
 // Properties of the wavefront execution order of a Gauss–Seidel sweep (solver/nlgs/sweep_wavefront.hpp)
 // on random contact lists: it is a permutation of the sweep order, every two contacts that share a
 // movable body keep their order, and a Gauss–Seidel sweep run in it gives the same velocities bit for
-// bit as in the sweep order.
+// bit as in the sweep order; for any window of updates, the default one included.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -20,6 +20,7 @@ struct RandomSweep {
   std::vector<std::pair<int, int>> contacts;  // body pairs
   std::vector<bool> movable;
   std::vector<std::uint32_t> order;  // a sweep order: a permutation of the contacts
+  std::size_t window = SweepWavefront::default_window;
 };
 
 RandomSweep random_sweep() {
@@ -37,6 +38,8 @@ RandomSweep random_sweep() {
   for (std::size_t k = 0; k < n; ++k) s.order[k] = static_cast<std::uint32_t>(k);
   for (std::size_t k = n; k > 1; --k)
     std::swap(s.order[k - 1], s.order[*rc::gen::inRange<std::size_t>(0, k)]);
+  // Windows from one update to more than the list, or the default one.
+  if (*rc::gen::inRange(0, 4) != 0) s.window = *rc::gen::inRange<std::size_t>(1, 130);
   return s;
 }
 
@@ -44,7 +47,8 @@ std::vector<std::uint32_t> wavefront_of(const RandomSweep& s, SweepWavefront& wa
   std::vector<std::uint32_t> execution;
   wavefront.reorder(
       s.order, [&](std::uint32_t k) { return s.contacts[k]; },
-      [&](int i) { return static_cast<bool>(s.movable[static_cast<std::size_t>(i)]); }, s.bodies, execution);
+      [&](int i) { return static_cast<bool>(s.movable[static_cast<std::size_t>(i)]); }, s.bodies, execution,
+      s.window);
   return execution;
 }
 
@@ -115,6 +119,25 @@ TEST(SweepWavefront, AChainOfContactsOnOneBodyHasOneLevelPerContact) {
   s.movable[0] = false;
   EXPECT_EQ(wavefront_of(s, wavefront), (std::vector<std::uint32_t>{0, 1, 2, 3}));
   EXPECT_EQ(wavefront.depth(), 1u);
+}
+
+TEST(SweepWavefront, LevelsAreFormedWithinEachWindow) {
+  // Windows of two updates: {(0,1), (0,2)} then {(0,3), (4,5)}. The second window starts again
+  // from level 1: (4,5) now runs after (0,2), in its window's first level beside (0,3).
+  RandomSweep s;
+  s.bodies = 6;
+  s.contacts = {{0, 1}, {0, 2}, {0, 3}, {4, 5}};
+  s.movable.assign(6, true);
+  s.order = {0, 1, 2, 3};
+  s.window = 2;
+  SweepWavefront wavefront;
+  EXPECT_EQ(wavefront_of(s, wavefront), (std::vector<std::uint32_t>{0, 1, 2, 3}));
+  EXPECT_EQ(wavefront.depth(), 2u);
+  // Windows of three: {(0,1), (0,2), (4,5)} then {(0,3)}: (4,5) joins the first level.
+  s.order = {0, 1, 3, 2};
+  s.window = 3;
+  EXPECT_EQ(wavefront_of(s, wavefront), (std::vector<std::uint32_t>{0, 3, 1, 2}));
+  EXPECT_EQ(wavefront.depth(), 2u);
 }
 
 }  // namespace
