@@ -54,11 +54,11 @@ struct SweepContact2D {
   double cov_n() const { return cov.y(); }
 };
 
-// Written by every sweep.
+// Written by every sweep: 24 bytes. The status is not kept here: the post pass, which solves every
+// contact, gives each its final one, so the sweeps before it need not store theirs.
 struct ContactReaction2D {
   double rt = 0, rn = 0;  // impulse
   OpenContactVisits visits;
-  ContactStatus status = ContactStatus::noctc;
 };
 
 // The terms of a law beyond plain Signorini–Coulomb on W (contact-laws.md §2-§3).
@@ -226,8 +226,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
   // huge ones where the kernel gives them (large_array.hpp), instead of new ones at every step.
   thread_local LargeArray<SweepContact2D> hot, hot_spare;
   thread_local LargeArray<ContactReaction2D> reaction, reaction_spare;
+  thread_local LargeArray<ContactStatus> final_status;  // by slot, from the post pass
   hot.assign(count, SweepContact2D{});
   reaction.assign(count, ContactReaction2D{});
+  final_status.assign(count, ContactStatus::noctc);
   std::vector<LawTerms2D> terms;
   const LawStep law_step{h, 0.0, first_step, first_preparation};
   std::vector<std::uint8_t> law_updates_at_check(scene.laws.size());
@@ -275,7 +277,6 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     ContactReaction2D& s = reaction[slot[a]];
     s.rt = c.r(0);
     s.rn = c.r(1);
-    s.status = c.status;
     // ‖q‖: free local velocities of the problem (law shifts included), fc3d/FORMAT.md §3.
     q2 += (relative_velocity(k, bodies.velocity_free.data()) + Vector2d(k.cov_t(), k.cov_n())).squaredNorm();
   }
@@ -345,10 +346,9 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     ContactReaction2D* sweep_reaction = reaction.data();
     for (std::size_t index = 0; index < count; ++index) {
       ContactReaction2D& s = sweep_reaction[index];
-      // A contact without reaction that this sweep passes by is decided on the 32-byte reaction alone:
+      // A contact without reaction that this sweep passes by is decided on its reaction record alone:
       // in a packing most contacts are open, and reading their 144-byte record as well made the
-      // sweeps of large scenes stream nearly five times the memory (an inactive one gets its noctc
-      // status at the next visit, or in the post pass, which never skips).
+      // sweeps of large scenes stream nearly five times the memory (the post pass never skips).
       if (!post && s.rt == 0.0 && s.rn == 0.0 && s.visits.skip()) continue;
       const SweepContact2D& c = sweep_hot[index];
       if (c.inactive) {
@@ -356,7 +356,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
           inject(c, -s.rt, -s.rn, inverse_masses, velocity);
           s.rt = s.rn = 0.0;
         }
-        s.status = ContactStatus::noctc;
+        if (post) final_status[index] = ContactStatus::noctc;
         continue;
       }
       const Vector2d u = relative_velocity(c, velocity);
@@ -383,7 +383,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
       inject(c, rt - s.rt, rn - s.rn, inverse_masses, velocity);
       s.rt = rt;
       s.rn = rn;
-      s.status = status;
+      if (post) final_status[index] = status;
       // rt != 0 || rn != 0 on the bits, less the sign (-0 is zero, NaN is not): no branch.
       s.visits.restart_if(((std::bit_cast<std::uint64_t>(rt) | std::bit_cast<std::uint64_t>(rn)) << 1) != 0);
     }
@@ -512,7 +512,8 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     c.u = u;
     const LawTerms2D& l = law_terms_of(k);
     const bool wet_or_cohesive = l.wet || l.cohesive;
-    c.status = (s.rt == 0.0 && s.rn == 0.0 && !wet_or_cohesive) ? ContactStatus::noctc : s.status;
+    c.status =
+        (s.rt == 0.0 && s.rn == 0.0 && !wet_or_cohesive) ? ContactStatus::noctc : final_status[slot[a]];
     // Contact impulses of every body (Ireac = Σ H r), driven dofs included (TORQUE EVOLUTION).
     const double tx = k.ny(), ty = -k.nx();
     const Vector3d f(s.rt * tx + s.rn * k.nx(), s.rt * ty + s.rn * k.ny(), 0.0);
