@@ -1,8 +1,8 @@
 // NLGS over 2D interactions. spec: numerics.md §3-§4, docs/lmgc90-facts/rigid-2d.md §5.
 // The sweeps read a compact array of contacts (bodies, local frame, levers, Delassus block, free
-// velocity shift, μ, the block's reciprocals: 144 bytes) and write a separate one of reactions (32 bytes).
+// velocity shift, μ, the block's reciprocals: 128 bytes) and write a separate one of reactions (24 bytes).
 // Laws that modify the block or add a correction (cohesive, wet, glued, elastic...) keep those terms in a
-// third array that only they read. On a 64k-disk box the sweeps stream these arrays from L3: one
+// third array that only they read. On a 64k-disk box the sweeps stream these arrays from memory: one
 // 192-byte record read and written back per update was nearly twice the traffic. The full
 // Interaction2D records are read before and written after.
 #include "solver/nlgs/nlgs_2d.hpp"
@@ -30,16 +30,27 @@ using Eigen::Vector3d;
 // sweep computes both components of the relative velocity, of W r and of the impulse on a body in one
 // packed operation each (Eigen's 2-double packets), lane by lane in the order the scalar formulas
 // take: the same values bit for bit, in fewer instructions (the sweep is bound by its instruction count).
-struct SweepContact2D {
+// Two whole cache lines: a sweep of a large scene streams these records from memory at the memory's
+// bandwidth, and the 144-byte record it replaced (W_tn stored twice, the tangential law shift of
+// every contact) touched three lines per visit.
+struct alignas(64) SweepContact2D {
   Eigen::Vector2d normal = Eigen::Vector2d::Zero();  // (nx, ny); t = (ny, -nx)
   Eigen::Vector2d lever_cd = Eigen::Vector2d::Zero(), lever_an = Eigen::Vector2d::Zero();  // (ℓ×t, ℓ×n)
-  Eigen::Vector2d w_t = Eigen::Vector2d::Zero(), w_n = Eigen::Vector2d::Zero();            // W's columns
-  Eigen::Vector2d cov = Eigen::Vector2d::Zero();  // law shift of the free velocity
+  Eigen::Vector2d w_t = Eigen::Vector2d::Zero();  // W's first column (W_tt, W_tn)
+  double w_nn = 0;
+  double cov_n = 0;  // law shift of the normal free velocity
   double mu = 0;
   SignoriniCoulombReciprocals2D inverse;  // of (W, mu): the sweeps multiply instead of dividing
   std::int32_t cd = 0, an = 0;            // body indices
-  std::int32_t law_terms = -1;  // index into the LawTerms2D array; -1: plain (WW = W, no correction)
-  std::uint8_t inactive = 0;
+  // Index into the LawTerms2D array; plain (WW = W, no correction, a zero tangential shift) or inactive.
+  std::int32_t law_terms = plain;
+  // A plain contact's tangential law shift, +0 or -0 (RST_CLB's rstt = 0 times a negative v_t): its
+  // sign is kept, since adding +0 turns a -0 velocity into +0 where adding -0 keeps it.
+  float zero_shift_t = 0.0f;
+
+  static constexpr std::int32_t plain = -1, inactive_contact = -2;
+  bool inactive() const { return law_terms == inactive_contact; }
+  bool has_law_terms() const { return law_terms >= 0; }
 
   double nx() const { return normal.x(); }
   double ny() const { return normal.y(); }
@@ -49,10 +60,10 @@ struct SweepContact2D {
   double gan_n() const { return lever_an.y(); }
   double wtt() const { return w_t.x(); }
   double wtn() const { return w_t.y(); }
-  double wnn() const { return w_n.y(); }
-  double cov_t() const { return cov.x(); }
-  double cov_n() const { return cov.y(); }
+  double wnn() const { return w_nn; }
+  Eigen::Vector2d w_n() const { return Eigen::Vector2d(w_t.y(), w_nn); }  // W's second column
 };
+static_assert(sizeof(SweepContact2D) == 128);
 
 // Written by every sweep: 24 bytes. The status is not kept here: the post pass, which solves every
 // contact, gives each its final one, so the sweeps before it need not store theirs.
@@ -64,6 +75,10 @@ struct ContactReaction2D {
 // The terms of a law beyond plain Signorini–Coulomb on W (contact-laws.md §2-§3).
 struct LawTerms2D {
   std::uint8_t glued = 0, wet = 0, cohesive = 0;
+  // Plain Signorini–Coulomb on W but for a tangential shift (RST_CLB's restitution): solved as the
+  // sweep's plain path solves, with the block's reciprocals.
+  std::uint8_t shift_only = 0;
+  double cov_t = 0;                   // law shift of the tangential free velocity
   double wwtt = 0, wwnn = 0;          // modified diagonal of the law (WW off-diagonal = W's)
   double cor_t = 0, cor_n = 0;        // law correction added to the reaction
   double kt = 0, kn = 0, radh_t = 0;  // cohesive zone: r_coh = (radh_t, 0) + diag(kt, kn) uu
@@ -98,7 +113,7 @@ inline Vector2d relative_velocity(const SweepContact2D& c, const Vector3d* v) {
 
 // W r, both components at once: (W_tt r_t + W_tn r_n, W_tn r_t + W_nn r_n).
 inline Vector2d w_times(const SweepContact2D& c, double rt, double rn) {
-  return c.w_t * rt + c.w_n * rn;
+  return c.w_t * rt + c.w_n() * rn;
 }
 
 // u − W r.
@@ -164,6 +179,10 @@ void cohesive_solve(const SweepContact2D& c, const LawTerms2D& l, double vt, dou
     cohesive_solve(c, l, vt, vn, rt, rn, status);
     return;
   }
+  if (l.shift_only) {
+    solve_signorini_coulomb_2d(c.wtt(), c.wtn(), c.wnn(), c.inverse, vt, vn, c.mu, rt, rn, status);
+    return;
+  }
   ContactStatus plain = ContactStatus::noctc;
   solve_signorini_coulomb_2d(l.wwtt, c.wtn(), l.wwnn, vt, vn, c.mu, rt, rn, plain);
   rt += l.cor_t;
@@ -176,17 +195,18 @@ void cohesive_solve(const SweepContact2D& c, const LawTerms2D& l, double vt, dou
 [[gnu::always_inline]] inline void local_solve(const SweepContact2D& c, const std::vector<LawTerms2D>& terms,
                                                double uft, double ufn, double& rt, double& rn,
                                                ContactStatus& status) {
-  const double vt = uft + c.cov_t(), vn = ufn + c.cov_n();
-  if (c.law_terms >= 0) [[unlikely]] {
+  if (c.has_law_terms()) [[unlikely]] {
+    const LawTerms2D& l = terms[static_cast<std::size_t>(c.law_terms)];
     // Through locals (as the plain path's fallback): the sweep's rt, rn and status stay in registers.
     double law_rt = 0.0, law_rn = 0.0;
     ContactStatus law_status = ContactStatus::noctc;
-    law_terms_solve(c, terms[static_cast<std::size_t>(c.law_terms)], vt, vn, law_rt, law_rn, law_status);
+    law_terms_solve(c, l, uft + l.cov_t, ufn + c.cov_n, law_rt, law_rn, law_status);
     rt = law_rt;
     rn = law_rn;
     status = law_status;
     return;
   }
+  const double vt = uft + static_cast<double>(c.zero_shift_t), vn = ufn + c.cov_n;
   solve_signorini_coulomb_2d(c.wtt(), c.wtn(), c.wnn(), c.inverse, vt, vn, c.mu, rt, rn, status);
 }
 
@@ -247,13 +267,12 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     SweepContact2D& k = hot[slot[a]];
     k.cd = c.candidate_body;
     k.an = c.antagonist_body;
-    k.inactive = c.inactive;
     k.normal = c.normal;
     k.lever_cd = c.lever_candidate;
     k.lever_an = c.lever_antagonist;
     k.w_t = Vector2d(c.W(0, 0), c.W(0, 1));
-    k.w_n = Vector2d(c.W(0, 1), c.W(1, 1));
-    k.cov = c.covfree;
+    k.w_nn = c.W(1, 1);
+    k.cov_n = c.covfree(1);
     k.mu = c.mu;
     k.inverse = signorini_coulomb_reciprocals_2d(k.wtt(), k.wtn(), k.wnn(), k.mu);
     LawTerms2D l;
@@ -267,10 +286,16 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     l.kt = c.cohesive_slope(0);
     l.kn = c.cohesive_slope(1);
     l.radh_t = c.cohesive_shift_t;
-    const bool plain = !l.glued && !l.wet && !l.cohesive && l.wwtt == k.wtt() && l.wwnn == k.wnn() &&
-                       l.cor_t == 0.0 && l.cor_n == 0.0;
+    l.cov_t = c.covfree(0);
+    const bool plain_but_shift = !l.glued && !l.wet && !l.cohesive && l.wwtt == k.wtt() &&
+                                 l.wwnn == k.wnn() && l.cor_t == 0.0 && l.cor_n == 0.0;
+    l.shift_only = plain_but_shift;
     if (l.cohesive) prepare_cohesive_terms(k.wtn(), l);
-    if (!plain) {
+    if (c.inactive) {
+      k.law_terms = SweepContact2D::inactive_contact;  // no law term is read for it
+    } else if (plain_but_shift && l.cov_t == 0.0) {
+      k.zero_shift_t = static_cast<float>(l.cov_t);  // exact, sign included
+    } else {
       k.law_terms = static_cast<std::int32_t>(terms.size());
       terms.push_back(l);
     }
@@ -278,7 +303,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     s.rt = c.r(0);
     s.rn = c.r(1);
     // ‖q‖: free local velocities of the problem (law shifts included), fc3d/FORMAT.md §3.
-    q2 += (relative_velocity(k, bodies.velocity_free.data()) + Vector2d(k.cov_t(), k.cov_n())).squaredNorm();
+    q2 += (relative_velocity(k, bodies.velocity_free.data()) + c.covfree).squaredNorm();
   }
   // Injected in contact order, as the velocities' sums always were.
   auto inject_all = [&] {
@@ -291,7 +316,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
   result.free_velocity_norm = std::sqrt(q2);
   const LawTerms2D plain_terms;  // WW = W, no correction (wwtt, wwnn unused: W's are read)
   auto law_terms_of = [&](const SweepContact2D& c) -> const LawTerms2D& {
-    return c.law_terms >= 0 ? terms[static_cast<std::size_t>(c.law_terms)] : plain_terms;
+    return c.has_law_terms() ? terms[static_cast<std::size_t>(c.law_terms)] : plain_terms;
   };
 
   // After a check changed a contact's law state (update_law_at_check): its μ and cohesive terms.
@@ -301,7 +326,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     SweepContact2D& k = hot[slot[a]];
     k.mu = c.mu;
     k.inverse = signorini_coulomb_reciprocals_2d(k.wtt(), k.wtn(), k.wnn(), k.mu);
-    if (k.law_terms < 0) return;
+    if (!k.has_law_terms()) return;
     LawTerms2D& l = terms[static_cast<std::size_t>(k.law_terms)];
     l.cohesive = c.cohesive;
     l.kt = c.cohesive_slope(0);
@@ -347,11 +372,11 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     for (std::size_t index = 0; index < count; ++index) {
       ContactReaction2D& s = sweep_reaction[index];
       // A contact without reaction that this sweep passes by is decided on its reaction record alone:
-      // in a packing most contacts are open, and reading their 144-byte record as well made the
+      // in a packing most contacts are open, and reading their sweep record as well made the
       // sweeps of large scenes stream nearly five times the memory (the post pass never skips).
       if (!post && s.rt == 0.0 && s.rn == 0.0 && s.visits.skip()) continue;
       const SweepContact2D& c = sweep_hot[index];
-      if (c.inactive) {
+      if (c.inactive()) {
         if (s.rt != 0.0 || s.rn != 0.0) {
           inject(c, -s.rt, -s.rn, inverse_masses, velocity);
           s.rt = s.rn = 0.0;
@@ -392,19 +417,20 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
 
   // Natural-map residual of one contact at the current state (law in auxiliary variables).
   auto residual2_of = [&](const SweepContact2D& c, const ContactReaction2D& s, double uft, double ufn) {
-    if (c.inactive) return s.rt * s.rt + s.rn * s.rn;
+    if (c.inactive()) return s.rt * s.rt + s.rn * s.rn;
     const LawTerms2D& l = law_terms_of(c);
-    const double wwtt = c.law_terms >= 0 ? l.wwtt : c.wtt(), wwnn = c.law_terms >= 0 ? l.wwnn : c.wnn();
+    const double wwtt = c.has_law_terms() ? l.wwtt : c.wtt(), wwnn = c.has_law_terms() ? l.wwnn : c.wnn();
+    const double cov_t = c.has_law_terms() ? l.cov_t : static_cast<double>(c.zero_shift_t);
     if (l.cohesive) {
       // Natural map of the auxiliary problem: uu = v + WW r, rr = r − radh − K uu.
-      const double ut = uft + c.cov_t() + wwtt * s.rt + c.wtn() * s.rn;
-      const double un = ufn + c.cov_n() + c.wtn() * s.rt + wwnn * s.rn;
+      const double ut = uft + cov_t + wwtt * s.rt + c.wtn() * s.rn;
+      const double un = ufn + c.cov_n + c.wtn() * s.rt + wwnn * s.rn;
       const double rrt = s.rt - l.radh_t - l.kt * ut, rrn = s.rn - l.kn * un;
       return natural_map_residual_squared_2d(Vector2d(rrt, rrn), Vector2d(ut, un), c.mu);
     }
     const double rrt = s.rt - l.cor_t, rrn = s.rn - l.cor_n;
-    const double ut = uft + c.cov_t() + wwtt * rrt + c.wtn() * rrn;
-    const double un = ufn + c.cov_n() + c.wtn() * rrt + wwnn * rrn;
+    const double ut = uft + cov_t + wwtt * rrt + c.wtn() * rrn;
+    const double un = ufn + c.cov_n + c.wtn() * rrt + wwnn * rrn;
     if (l.glued) return ut * ut + un * un;
     return natural_map_residual_squared_2d(Vector2d(rrt, rrn), Vector2d(ut, un), c.mu);
   };
@@ -425,7 +451,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
       const double uft = uf.x(), ufn = uf.y();
       residual2 += residual2_of(c, s, uft, ufn);
       double r1t = s.rt, r1n = s.rn, r2t = 0, r2n = 0;
-      if (!c.inactive) {
+      if (!c.inactive()) {
         ContactStatus status;
         local_solve(c, terms, uft, ufn, r2t, r2n, status);
       } else {
@@ -435,7 +461,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
       const double u2t = u2.x(), u2n = u2.y();
       // Laws that re-evaluate their state at a check do it with this solution's velocity; the
       // sweeps after the check read the contact's new terms.
-      if (any_update_at_check && !c.inactive && update_law_state(a, u2t, u2n)) refresh_law_terms(a);
+      if (any_update_at_check && !c.inactive() && update_law_state(a, u2t, u2n)) refresh_law_terms(a);
       const double mt = 0.5 * (r1t + r2t), mn = 0.5 * (r1n + r2n);
       const double dvt = u(0) - u2t, dvn = u(1) - u2n;
       if (mt == 0.0 && mn == 0.0) ++vanishing;
