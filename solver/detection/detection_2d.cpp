@@ -155,7 +155,10 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
     bool operator<(const RoughPair& o) const { return std::tie(i, j, shift) < std::tie(o.i, o.j, o.shift); }
     bool operator==(const RoughPair& o) const { return i == o.i && j == o.j && shift == o.shift; }
   };
-  std::vector<RoughPair> rough;
+  // Kept from step to step (one per thread): grown again at every step, a 64k-disk layer's 4.6 MB
+  // list was reallocated about twenty times (pairs 15.6-17.4 -> 13.9-14.5 ms per step).
+  thread_local std::vector<RoughPair> rough;
+  rough.clear();
   // Called by the grid, which holds only contactors of visible bodies.
   auto consider = [&](std::size_t i, std::size_t j) {
     if (body_of[i] == body_of[j]) return;
