@@ -57,6 +57,17 @@ class MultilevelGrid {
         l.entries.push_back({l.cell_of(centres[i]), i});
       }
     for (Level& l : levels_) l.sort_entries();
+    // Levels are powers of two of the radius: a scene with a few long walls has many empty ones
+    // between its grains' and its walls' (a 64k-disk layer: 11 levels, 3 of them occupied), and
+    // each item looked into every one above its own.
+    occupied_.clear();
+    for (std::size_t l = 0; l < levels_.size(); ++l)
+      if (!levels_[l].entries.empty()) occupied_.push_back(l);
+    occupied_from_.resize(levels_.size() + 1);
+    for (std::size_t l = 0, k = 0; l <= levels_.size(); ++l) {
+      while (k < occupied_.size() && occupied_[k] < l) ++k;
+      occupied_from_[l] = k;
+    }
   }
 
   int level_of(std::size_t i) const { return level_of_[i]; }
@@ -112,8 +123,9 @@ class MultilevelGrid {
       const int li = level_of_[i];
       if (li < 0) continue;
       const Eigen::Vector3d reach = Eigen::Vector3d::Constant(radii[i] + margin);
-      for (std::size_t l = static_cast<std::size_t>(li); l < levels_.size(); ++l)
-        for_each_near(l, centres[i] - reach, centres[i] + reach, [&](std::size_t j) {
+      // The occupied levels from li up (an empty one has nothing near).
+      for (std::size_t k = occupied_from_[static_cast<std::size_t>(li)]; k < occupied_.size(); ++k)
+        for_each_near(occupied_[k], centres[i] - reach, centres[i] + reach, [&](std::size_t j) {
           if (level_of_[j] > li || j > i) f(i, j);
         });
     }
@@ -187,6 +199,8 @@ class MultilevelGrid {
 
   std::vector<Level> levels_;
   std::vector<int> level_of_;
+  std::vector<std::size_t> occupied_;       // the levels with entries, increasing
+  std::vector<std::size_t> occupied_from_;  // [l]: the index in occupied_ of the first one >= l
 };
 
 }  // namespace lmgc::spatial
