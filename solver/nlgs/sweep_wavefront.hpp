@@ -21,16 +21,30 @@ namespace lmgc::solver {
 
 class SweepWavefront {
  public:
-  // Updates per window: every RIGID_2D example fits in one (1024DK_BoxJC: about 2000 contacts);
-  // 1024 to 4096 ran the 64k-disk box and layer equally fast, 16384 the box 1.8x slower.
-  static constexpr std::size_t default_window = 4096;
+  // Updates per window. A list of up to 4096 is one window (every RIGID_2D example: 1024DK_BoxJC
+  // has about 2000 contacts), so that a level holds as many independent updates as it can; a longer
+  // one is cut every 1024. Windows of 1024 to 4096 sweep a 64k-disk box and layer equally fast
+  // (16384: the box 1.8x slower), but the set-up, the checks and the end of the step read the
+  // sweep arrays in contact order, at each contact's place in its window: in the 64k-disk box, where
+  // a 4096-update window's levels spread over eight rows of disks, those passes took 34-38 ms per
+  // step with windows of 4096 and 28-29 ms with 1024 (layer: 23-28 -> 21-23 ms).
+  static constexpr std::size_t single_window_limit = 4096, long_list_window = 1024;
+  static std::size_t window_for(std::size_t updates) {
+    return updates <= single_window_limit ? std::max<std::size_t>(updates, 1) : long_list_window;
+  }
 
   // `order`: the sweep order (contact indices). `bodies_of(k)` gives contact k's two body indices,
-  // `movable(i)` whether body i can move, `body_count` the number of bodies, `window` (at least 1)
-  // the updates per window. `execution` receives the same indices in the order to run them.
+  // `movable(i)` whether body i can move, `body_count` the number of bodies. `execution` receives
+  // the same indices in the order to run them.
   template <typename Index, typename BodiesOf, typename Movable>
   void reorder(const std::vector<Index>& order, BodiesOf&& bodies_of, Movable&& movable,
-               std::size_t body_count, std::vector<Index>& execution, std::size_t window = default_window) {
+               std::size_t body_count, std::vector<Index>& execution) {
+    reorder(order, bodies_of, movable, body_count, execution, window_for(order.size()));
+  }
+  // The same with a window of `window` updates (at least 1).
+  template <typename Index, typename BodiesOf, typename Movable>
+  void reorder(const std::vector<Index>& order, BodiesOf&& bodies_of, Movable&& movable,
+               std::size_t body_count, std::vector<Index>& execution, std::size_t window) {
     const std::size_t n = order.size();
     window = std::max<std::size_t>(window, 1);
     body_level_.assign(body_count, 0u);

@@ -20,7 +20,7 @@ struct RandomSweep {
   std::vector<std::pair<int, int>> contacts;  // body pairs
   std::vector<bool> movable;
   std::vector<std::uint32_t> order;  // a sweep order: a permutation of the contacts
-  std::size_t window = SweepWavefront::default_window;
+  std::size_t window = 0;            // 0: the wavefront's own choice
 };
 
 RandomSweep random_sweep() {
@@ -38,17 +38,19 @@ RandomSweep random_sweep() {
   for (std::size_t k = 0; k < n; ++k) s.order[k] = static_cast<std::uint32_t>(k);
   for (std::size_t k = n; k > 1; --k)
     std::swap(s.order[k - 1], s.order[*rc::gen::inRange<std::size_t>(0, k)]);
-  // Windows from one update to more than the list, or the default one.
+  // Windows from one update to more than the list, or the wavefront's own.
   if (*rc::gen::inRange(0, 4) != 0) s.window = *rc::gen::inRange<std::size_t>(1, 130);
   return s;
 }
 
 std::vector<std::uint32_t> wavefront_of(const RandomSweep& s, SweepWavefront& wavefront) {
   std::vector<std::uint32_t> execution;
-  wavefront.reorder(
-      s.order, [&](std::uint32_t k) { return s.contacts[k]; },
-      [&](int i) { return static_cast<bool>(s.movable[static_cast<std::size_t>(i)]); }, s.bodies, execution,
-      s.window);
+  const auto bodies_of = [&](std::uint32_t k) { return s.contacts[k]; };
+  const auto movable = [&](int i) { return static_cast<bool>(s.movable[static_cast<std::size_t>(i)]); };
+  if (s.window == 0)
+    wavefront.reorder(s.order, bodies_of, movable, s.bodies, execution);
+  else
+    wavefront.reorder(s.order, bodies_of, movable, s.bodies, execution, s.window);
   return execution;
 }
 
@@ -138,6 +140,20 @@ TEST(SweepWavefront, LevelsAreFormedWithinEachWindow) {
   s.window = 3;
   EXPECT_EQ(wavefront_of(s, wavefront), (std::vector<std::uint32_t>{0, 3, 1, 2}));
   EXPECT_EQ(wavefront.depth(), 2u);
+}
+
+TEST(SweepWavefront, AListOfUpTo4096IsOneWindowALongerOneWindowsOf1024) {
+  // A chain on one body has one level per contact within a window: the depth is the window's length.
+  for (const std::size_t n : {std::size_t{4096}, std::size_t{5000}}) {
+    RandomSweep s;
+    s.bodies = n + 1;
+    for (std::size_t k = 0; k < n; ++k) s.contacts.emplace_back(0, static_cast<int>(k + 1));
+    s.movable.assign(n + 1, true);
+    for (std::size_t k = 0; k < n; ++k) s.order.push_back(static_cast<std::uint32_t>(k));
+    SweepWavefront wavefront;
+    EXPECT_EQ(wavefront_of(s, wavefront), s.order);
+    EXPECT_EQ(wavefront.depth(), n <= 4096 ? n : 1024u);
+  }
 }
 
 }  // namespace
