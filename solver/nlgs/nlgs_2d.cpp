@@ -69,7 +69,7 @@ static_assert(sizeof(SweepContact2D) == 128);
 // contact, gives each its final one, so the sweeps before it need not store theirs.
 struct ContactReaction2D {
   double rt = 0, rn = 0;  // impulse
-  OpenContactVisits visits;
+  OpenContactSchedule visits;
 };
 
 // The terms of a law beyond plain Signorini–Coulomb on W (contact-laws.md §2-§3).
@@ -369,12 +369,13 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     Vector3d* const velocity = v.data();
     const Vector3d* const inverse_masses = inverse_mass.data();
     ContactReaction2D* sweep_reaction = reaction.data();
+    const auto sweep_number = static_cast<std::int32_t>(result.iterations);
     for (std::size_t index = 0; index < count; ++index) {
       ContactReaction2D& s = sweep_reaction[index];
       // A contact without reaction that this sweep passes by is decided on its reaction record alone:
       // in a packing most contacts are open, and reading their sweep record as well made the
       // sweeps of large scenes stream nearly five times the memory (the post pass never skips).
-      if (!post && s.rt == 0.0 && s.rn == 0.0 && s.visits.skip()) continue;
+      if (!post && s.rt == 0.0 && s.rn == 0.0 && s.visits.skip(sweep_number)) continue;
       const SweepContact2D& c = sweep_hot[index];
       if (c.inactive()) {
         if (s.rt != 0.0 || s.rn != 0.0) {

@@ -30,4 +30,30 @@ struct OpenContactVisits {
   }
 };
 
+// The same schedule kept as the sweep at which the contact is solved next (2D sweeps): a sweep that
+// passes a contact by writes nothing, where OpenContactVisits counts the visit. On a 64k-disk
+// layer, whose contacts are mostly open, every sweep otherwise wrote back the whole 3 MB reaction
+// array. `sweep` counts the sweeps of the step; a restart (a reaction, or a check) makes the next
+// sweep solve the contact. The solved visits are OpenContactVisits' (unit test): the 1st, 3rd,
+// 6th, 10th... sweep without reaction since the restart.
+struct OpenContactSchedule {
+  std::int32_t next = 0, threshold = 1;
+  // Called for a contact without reaction at sweep `sweep`: true when this sweep passes it by.
+  bool skip(std::int32_t sweep) {
+    if (sweep < next) return true;
+    ++threshold;
+    next = sweep + threshold;
+    return false;
+  }
+  void restart() {
+    next = 0;
+    threshold = 1;
+  }
+  // restart() when `condition`, without a branch.
+  void restart_if(bool condition) {
+    next = condition ? 0 : next;
+    threshold = condition ? 1 : threshold;
+  }
+};
+
 }  // namespace lmgc::solver
