@@ -605,9 +605,9 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   // by on these 12 bytes without reading their 624-byte interaction (open_contact_visits.hpp). In a
   // 64k-sphere box 98% of the contacts are open, and each pass-by read two cache lines of it.
   struct OpenContact {
-    OpenContactVisits visits;
+    OpenContactSchedule visits;
     bool no_reaction = true;
-    bool solved_next() const { return !no_reaction || !visits.skips_next(); }
+    bool solved_at(std::int32_t sweep) const { return !no_reaction || !visits.passes_by(sweep); }
   };
   std::vector<OpenContact> open(contacts.size());
   // One pass over the interactions (on large scenes each pass streams them from memory): the law's
@@ -727,11 +727,11 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
         // and each waited for its interaction's lines to come from memory.
         if (position + kPrefetchDistance < order.size()) {
           const std::size_t ahead = order[position + kPrefetchDistance];
-          if (open[ahead].solved_next()) prefetch_interaction(contacts[ahead]);
+          if (open[ahead].solved_at(sweep)) prefetch_interaction(contacts[ahead]);
         }
         const std::size_t k = order[position];
         OpenContact& o = open[k];
-        if (o.no_reaction && o.visits.skip()) continue;
+        if (o.no_reaction && o.visits.skip(sweep)) continue;
         Interaction3D& c = contacts[k];
         if (c.inactive) continue;
         const Vector3d r_new = sweep_reaction(k);
