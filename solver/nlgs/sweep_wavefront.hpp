@@ -30,7 +30,7 @@ class SweepWavefront {
   // step with windows of 4096 and 28-29 ms with 1024 (layer: 23-28 -> 21-23 ms).
   static constexpr std::size_t single_window_limit = 4096, long_list_window = 1024;
   static std::size_t window_for(std::size_t updates) {
-    return updates <= single_window_limit ? std::max<std::size_t>(updates, 1) : long_list_window;
+    return updates <= single_window_limit ? single_window_limit : long_list_window;
   }
 
   // `order`: the sweep order (contact indices). `bodies_of(k)` gives contact k's two body indices,
