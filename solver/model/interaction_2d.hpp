@@ -17,50 +17,55 @@ static_assert(static_cast<int>(PairFamily2D::PLJCx) + 1 == kPairFamily2DCount);
 
 // 64-byte aligned, 368 bytes of fields in six cache lines: the per-step passes over a large list
 // (detection, warm start, NLGS set-up, store) move whole lines, and an unaligned 416-byte record
-// straddled seven or eight.
+// straddled seven or eight. The fields are grouped by the passes that read them: the warm start
+// (recup_rloc) and the store (stock_rloc) touch only the first two lines (key, reaction, status,
+// point, internal variables), the NLGS set-up reads the geometry of lines 2-3 and writes the law's
+// local problem in lines 4-5.
 struct alignas(64) Interaction2D {
+  // Line 0: the key, the reaction and the statuses.
   PairFamily2D family = PairFamily2D::DKDKx;
+  ContactStatus status = ContactStatus::nknow;
+  ContactStatus status_begin = ContactStatus::nknow;
+  // Cohesive zone laws: impulse r_coh = (shift_t, 0) + diag(slope) · uu, uu the auxiliary velocity.
+  bool cohesive = false;
+  bool inactive = false;       // forecast inactive ("noact"): r = 0, skipped by the sweeps
   std::int32_t candidate = 0;  // contactor ids (Scene2D::contactors)
   std::int32_t antagonist = 0;
+  std::int32_t candidate_vertex = 0;  // PLPLx/PLJCx: vertex of the candidate polygon (1-based, 0 none)
   std::int32_t candidate_body = 0;
   std::int32_t antagonist_body = 0;
-  std::int32_t candidate_vertex = 0;    // PLPLx/PLJCx: vertex of the candidate polygon (1-based, 0 none)
+  std::int32_t law = 0;  // index into Scene2D::laws
+  // Step unknowns: impulse (t, n) over the step and relative velocity at the end of the step.
+  Eigen::Vector2d r = Eigen::Vector2d::Zero();
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();  // contact point
+
+  // Line 1: the law's internal variables and the rest of the pair's description.
+  std::array<double, 6> internal{};     // law internal variables (contact-laws.md, state-and-outputs §1.4.4)
   std::int32_t antagonist_segment = 0;  // PLPLx: segment of the antagonist polygon
-  std::int32_t law = 0;                 // index into Scene2D::laws
   std::int32_t visibility = 0;          // index into Scene2D::visibility
   std::int32_t periodic_shift = 0;      // antagonist shifted by this many periods in x
-  double cohesive_shift_t = 0.0;        // cohesive zone laws: r_coh's tangential shift (below)
 
-  // Geometry at the detection configuration (θ-scheme "TT" configuration).
+  // Lines 2-3: geometry at the detection configuration (θ-scheme "TT" configuration).
   Eigen::Vector2d normal = Eigen::Vector2d::Zero();   // from antagonist to candidate
   Eigen::Vector2d tangent = Eigen::Vector2d::Zero();  // (n_y, -n_x)
-  Eigen::Vector2d point = Eigen::Vector2d::Zero();    // contact point
   double gap_begin = 0.0;                             // signed distance at detection [m]
   double length = 1.0;                                // contact length used by cohesive laws
+  double cohesive_shift_t = 0.0;                      // cohesive zone laws: r_coh's tangential shift
+  double mu = 0.0;                                    // friction coefficient of the law's local problem
   // Lever-arm products ℓ×t and ℓ×n of each body (H rows of the rotational dof).
   Eigen::Vector2d lever_candidate = Eigen::Vector2d::Zero();
   Eigen::Vector2d lever_antagonist = Eigen::Vector2d::Zero();
   Eigen::Vector2d velocity_begin = Eigen::Vector2d::Zero();  // local (t, n) relative velocity at t_begin
-
-  // Step unknowns: impulse (t, n) over the step and relative velocity at the end of the step.
-  Eigen::Vector2d r = Eigen::Vector2d::Zero();
   Eigen::Vector2d u = Eigen::Vector2d::Zero();
-  ContactStatus status = ContactStatus::nknow;
-  ContactStatus status_begin = ContactStatus::nknow;
-  // Cohesive zone laws: impulse r_coh = (shift_t, 0) + diag(slope) · uu, uu the auxiliary velocity.
-  // (The flag sits here, in the warm-start list's cache lines.)
-  bool cohesive = false;
-  bool inactive = false;             // forecast inactive ("noact"): r = 0, skipped by the sweeps
-  std::array<double, 6> internal{};  // law internal variables (contact-laws.md, state-and-outputs §1.4.4)
-  double mu = 0.0;                   // friction coefficient of the law's local problem
 
-  // Local problem of the law (contact-laws.md §2): Delassus block, modified block, shift.
+  // Lines 4-5: local problem of the law (contact-laws.md §2): Delassus block, modified block, shift.
   Eigen::Matrix2d W = Eigen::Matrix2d::Zero();
   Eigen::Matrix2d WW = Eigen::Matrix2d::Zero();
   Eigen::Vector2d covfree = Eigen::Vector2d::Zero();
   Eigen::Vector2d correction = Eigen::Vector2d::Zero();  // corr added to the auxiliary reaction
   Eigen::Vector2d cohesive_slope = Eigen::Vector2d::Zero();
 };
+static_assert(sizeof(Interaction2D) == 384);
 
 // What the next step's warm start (recup_rloc) reads of an interaction: LMGC90's verlet list entry.
 // Kept apart from Interaction2D (384 bytes) because the whole list is stored every step: copying
