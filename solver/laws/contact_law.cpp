@@ -18,13 +18,13 @@ concept UpdatesAtCheck3D = requires(const Law& law, Interaction3D& c, const Eige
 };
 
 template <class Law>
-concept UpdatesAtCheck2D = requires(const Law& law, Interaction2D& c, const Eigen::Vector2d& u,
+concept UpdatesAtCheck2D = requires(const Law& law, LocalProblem2D& c, const Eigen::Vector2d& u,
                                     const LawStep& step) {
   { update_at_check(law, c, u, step) } -> std::same_as<bool>;
 };
 
 template <class Law>
-concept HasForm2D = requires(const Law& law, Interaction2D& c, const LawStep& step) {
+concept HasForm2D = requires(const Law& law, LocalProblem2D& c, const LawStep& step) {
   prepare(law, c, step);
 };
 
@@ -57,7 +57,7 @@ bool provided_in_2d(const ContactLaw& law) {
   return std::visit([](const auto& p) { return HasForm2D<std::decay_t<decltype(p)>>; }, law);
 }
 
-void prepare_law(const ContactLaw& law, Interaction2D& c, const LawStep& step) {
+void prepare_law(const ContactLaw& law, LocalProblem2D& c, const LawStep& step) {
   std::visit(
       [&](const auto& p) {
         if constexpr (HasForm2D<std::decay_t<decltype(p)>>)
@@ -110,7 +110,7 @@ bool updates_at_check(const ContactLaw& law) {
       law);
 }
 
-bool update_law_at_check(const ContactLaw& law, Interaction2D& c, const Eigen::Vector2d& u,
+bool update_law_at_check(const ContactLaw& law, LocalProblem2D& c, const Eigen::Vector2d& u,
                          const LawStep& step) {
   return std::visit(
       [&](const auto& p) {

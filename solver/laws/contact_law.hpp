@@ -44,7 +44,7 @@ bool law_from_card(std::string_view keyword, const LawParameters& parameters, Co
 bool provided_in_2d(const ContactLaw& law);
 // 2D: the derived problem of the law (c.covfree, c.correction, c.WW, c.mu, c.inactive, statuses),
 // after the caller has reset them; and the end-of-step statuses and internal variables.
-void prepare_law(const ContactLaw& law, Interaction2D& c, const LawStep& step);
+void prepare_law(const ContactLaw& law, LocalProblem2D& c, const LawStep& step);
 void finish_law(const ContactLaw& law, Interaction2D& c, const LawStep& step);
 
 // 3D: the same; prepare resets c.covfree, c.inactive, c.correction first and returns false for a
@@ -56,7 +56,7 @@ void finish_law(const ContactLaw& law, Interaction3D& c, const LawStep& step);
 // updt_*(.false.) in solve_nlgs i_check: IQS_MAC_CZM's β), and that update in 2D and 3D, from the
 // velocity u of the check's local solution. True when the contact's local problem changed.
 bool updates_at_check(const ContactLaw& law);
-bool update_law_at_check(const ContactLaw& law, Interaction2D& c, const Eigen::Vector2d& u,
+bool update_law_at_check(const ContactLaw& law, LocalProblem2D& c, const Eigen::Vector2d& u,
                          const LawStep& step);
 bool update_law_at_check(const ContactLaw& law, Interaction3D& c, const Eigen::Vector3d& u,
                          const LawStep& step);

@@ -11,7 +11,7 @@ struct CoupledDof {
   static CoupledDof from_card(const LawParameters&) { return {}; }
 };
 
-inline void prepare(const CoupledDof&, Interaction2D& c, const LawStep&) {
+inline void prepare(const CoupledDof&, LocalProblem2D& c, const LawStep&) {
   c.mu = 0.0;
 }
 

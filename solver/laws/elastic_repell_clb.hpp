@@ -13,7 +13,7 @@ struct ElasticRepellClb {
 };
 
 // r_n = -h k γ_end gives WWnn = Wnn + 1/(k h²), covfree = γ/h.
-inline void prepare(const ElasticRepellClb& law, Interaction2D& c, const LawStep& step) {
+inline void prepare(const ElasticRepellClb& law, LocalProblem2D& c, const LawStep& step) {
   if (law.stiffness > 0.0) c.WW(1, 1) = c.W(1, 1) + 1.0 / (law.stiffness * step.h * step.h);
   gap_form(c, step.h);
   c.mu = law.sfric;

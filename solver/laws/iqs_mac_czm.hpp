@@ -20,7 +20,7 @@ struct IqsMacCzm {
 // linear traction β² C δ_end on the length L, as an impulse over the step; friction × (1 − β).
 // internal[5] holds the β in use (LMGC90's taz(1)): the law writes five internals, so it is not
 // written out.
-inline void use_beta(const IqsMacCzm& law, Interaction2D& c, double beta, double h) {
+inline void use_beta(const IqsMacCzm& law, LocalProblem2D& c, double beta, double h) {
   c.internal[5] = beta;
   c.mu = (is_sliding(c.status_begin) ? law.dfric : law.sfric) * (1.0 - beta);
   c.cohesive = beta > 1e-12;
@@ -46,7 +46,7 @@ inline bool damaged_beta(const IqsMacCzm& law, const Interaction2D& c, const Eig
   return beta <= beta_start && law.dupre <= beta_start * energy;
 }
 
-inline void prepare(const IqsMacCzm& law, Interaction2D& c, const LawStep& step) {
+inline void prepare(const IqsMacCzm& law, LocalProblem2D& c, const LawStep& step) {
   // At the run's first preparation with interactions (mod_nlgs prep :2313-2330) nknow becomes Cnnow,
   // and init_CZM makes the interface sound (β = 1) if that is step 1; any other contact keeps its
   // internals (β = 0 for one created later: broken from the start).
@@ -62,7 +62,7 @@ inline void prepare(const IqsMacCzm& law, Interaction2D& c, const LawStep& step)
 
 // As in 3D: β evaluated again at each convergence check (updt_CZM(.false.) at i_check in mod_nlgs)
 // from the check's velocity; the sweeps after it use it. True when the local problem changed.
-inline bool update_at_check(const IqsMacCzm& law, Interaction2D& c, const Eigen::Vector2d& u,
+inline bool update_at_check(const IqsMacCzm& law, LocalProblem2D& c, const Eigen::Vector2d& u,
                             const LawStep& step) {
   double beta = 0.0;
   if (!damaged_beta(law, c, u, step.h, beta) || beta == c.internal[5]) return false;

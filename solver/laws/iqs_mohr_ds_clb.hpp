@@ -18,7 +18,7 @@ struct IqsMohrDsClb {
   double cohesive_friction() const { return cohen > 0.0 ? cohet / cohen : sfric; }
 };
 
-inline void prepare(const IqsMohrDsClb& law, Interaction2D& c, const LawStep& step) {
+inline void prepare(const IqsMohrDsClb& law, LocalProblem2D& c, const LawStep& step) {
   // Cohesive only for the contacts of step 1 (mod_nlgs prep: `Nstep == 1 .and. nknow`).
   if (step.first_step && c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Mstck;
   iqs_form(c, step.h);

@@ -14,7 +14,7 @@ struct IqsWetDsClb {
   double cohen, cohet, wethk, dfric, sfric;
 };
 
-inline void prepare(const IqsWetDsClb& law, Interaction2D& c, const LawStep& step) {
+inline void prepare(const IqsWetDsClb& law, LocalProblem2D& c, const LawStep& step) {
   iqs_form(c, step.h);
   if (c.gap_begin <= law.wethk) {
     c.status_begin = wet_status(c.status_begin);
@@ -36,8 +36,9 @@ inline void prepare(const IqsWetDsClb& law, Interaction3D& c, const LawStep& ste
   c.mu = static_dynamic(law.dfric, law.sfric, c.status_begin);
 }
 
-inline void finish(const IqsWetDsClb&, Interaction2D& c, const LawStep&) {
-  if (c.correction(1) == 0.0) c.status = dry_status(c.status);
+// Dry unless prepare added a nonzero cohesion (its correction −cohen h), as it did for this gap.
+inline void finish(const IqsWetDsClb& law, Interaction2D& c, const LawStep& step) {
+  if (!(c.gap_begin <= law.wethk) || -law.cohen * step.h == 0.0) c.status = dry_status(c.status);
 }
 inline void finish(const IqsWetDsClb&, Interaction3D& c, const LawStep&) {
   c.status = c.correction != 0.0 ? wet_status(c.status) : dry_status(c.status);

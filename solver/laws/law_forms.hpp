@@ -59,7 +59,7 @@ void restitution_form(Interaction& c, double restn, double restt) {
 
 // 2D cohesion c (force) acting through the normal (contact-laws.md §3.2): the local problem is
 // solved for rr_n = r_n + c h >= 0, i.e. covfree −= c h W e_n and r = rr + correction.
-inline void add_cohesion(Interaction2D& c, double cohesion, double h) {
+inline void add_cohesion(LocalProblem2D& c, double cohesion, double h) {
   c.covfree(0) -= cohesion * h * c.W(0, 1);
   c.covfree(1) -= cohesion * h * c.WW(1, 1);
   c.correction(1) = -cohesion * h;

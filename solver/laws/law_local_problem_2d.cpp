@@ -16,10 +16,11 @@ bool is_wet_law(const ContactLaw& law) {
 
 }  // namespace
 
-void prepare_local_problem_2d(const ContactLaw& law, Interaction2D& c, const LawStep& step) {
+void prepare_local_problem_2d(const ContactLaw& law, LocalProblem2D& c, const LawStep& step) {
   c.WW = c.W;
   c.covfree.setZero();
   c.correction.setZero();
+  c.cohesive_slope.setZero();
   c.inactive = false;
   c.mu = 0.0;
   prepare_law(law, c, step);  // each law's own file (solver/laws/*.hpp)
@@ -27,7 +28,7 @@ void prepare_local_problem_2d(const ContactLaw& law, Interaction2D& c, const Law
   if (c.WW(0, 0) <= 1e-6 * c.WW(1, 1)) c.WW(0, 0) = 1e-6 * c.WW(1, 1);
 }
 
-LocalSolution2D solve_local_problem_2d(const ContactLaw& law, const Interaction2D& c,
+LocalSolution2D solve_local_problem_2d(const ContactLaw& law, const LocalProblem2D& c,
                                        const Vector2d& ufree_loc) {
   const Vector2d vv = ufree_loc + c.covfree;
   LocalSolution2D s;
@@ -44,7 +45,7 @@ LocalSolution2D solve_local_problem_2d(const ContactLaw& law, const Interaction2
   return s;
 }
 
-double local_residual_squared_2d(const ContactLaw& law, const Interaction2D& c, const Vector2d& r,
+double local_residual_squared_2d(const ContactLaw& law, const LocalProblem2D& c, const Vector2d& r,
                                  const Vector2d& ufree_loc) {
   if (c.inactive) return r.squaredNorm();
   const Vector2d rr = r - c.correction;

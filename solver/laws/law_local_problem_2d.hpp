@@ -11,18 +11,18 @@
 
 namespace lmgc::solver {
 
-// Sets c.WW, c.covfree, c.correction, c.mu, c.inactive from c.W, c.gap_begin, c.velocity_begin,
-// c.status_begin and the law (contact-laws.md §3). `h` is the time step.
-// `step`: h and the first-step flags (LawStep).
-void prepare_local_problem_2d(const ContactLaw& law, Interaction2D& c, const LawStep& step);
+// Sets c.WW, c.covfree, c.correction, c.cohesive_slope, c.mu, c.inactive from c.W, c.gap_begin,
+// c.velocity_begin, c.status_begin and the law (contact-laws.md §3). `step`: h and the first-step
+// flags (LawStep).
+void prepare_local_problem_2d(const ContactLaw& law, LocalProblem2D& c, const LawStep& step);
 
 // The law's reaction for the current local free velocity (u = ufree_loc + W r), correction included.
-LocalSolution2D solve_local_problem_2d(const ContactLaw& law, const Interaction2D& c,
+LocalSolution2D solve_local_problem_2d(const ContactLaw& law, const LocalProblem2D& c,
                                        const Eigen::Vector2d& ufree_loc);
 
 // Squared residual of the law at (r, ufree_loc): the natural map of the Signorini–Coulomb problem
 // in auxiliary variables for Coulomb laws, |uu| for glued dofs, |r| for inactive contacts.
-double local_residual_squared_2d(const ContactLaw& law, const Interaction2D& c, const Eigen::Vector2d& r,
+double local_residual_squared_2d(const ContactLaw& law, const LocalProblem2D& c, const Eigen::Vector2d& r,
                                  const Eigen::Vector2d& ufree_loc);
 
 // End of step: law statuses (wet, Mohr) and internal variables.

@@ -13,7 +13,7 @@ struct NoNlgsBranch {
   double sfric;
 };
 
-inline void prepare(const NoNlgsBranch& law, Interaction2D& c, const LawStep&) {
+inline void prepare(const NoNlgsBranch& law, LocalProblem2D& c, const LawStep&) {
   c.mu = law.sfric;
 }
 

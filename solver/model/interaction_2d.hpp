@@ -15,12 +15,11 @@ enum class PairFamily2D : std::uint8_t { DKDKx, DKKDx, DKJCx, DKPLx, PTPT2, PLPL
 inline constexpr int kPairFamily2DCount = 7;
 static_assert(static_cast<int>(PairFamily2D::PLJCx) + 1 == kPairFamily2DCount);
 
-// 64-byte aligned, 368 bytes of fields in six cache lines: the per-step passes over a large list
-// (detection, warm start, NLGS set-up, store) move whole lines, and an unaligned 416-byte record
-// straddled seven or eight. The fields are grouped by the passes that read them: the warm start
-// (recup_rloc) and the store (stock_rloc) touch only the first two lines (key, reaction, status,
-// point, internal variables), the NLGS set-up reads the geometry of lines 2-3 and writes the law's
-// local problem in lines 4-5.
+// 64-byte aligned, 256 bytes in four cache lines: the per-step passes over a large list (detection,
+// warm start, NLGS set-up, store) move whole lines. The fields are grouped by the passes that read
+// them: the warm start (recup_rloc) and the store (stock_rloc) touch only the first two lines (key,
+// reaction, status, point, internal variables), the NLGS set-up reads the geometry of lines 2-3.
+// The law's local problem is not kept here (LocalProblem2D below).
 struct alignas(64) Interaction2D {
   // Line 0: the key, the reaction and the statuses.
   PairFamily2D family = PairFamily2D::DKDKx;
@@ -57,18 +56,23 @@ struct alignas(64) Interaction2D {
   Eigen::Vector2d lever_antagonist = Eigen::Vector2d::Zero();
   Eigen::Vector2d velocity_begin = Eigen::Vector2d::Zero();  // local (t, n) relative velocity at t_begin
   Eigen::Vector2d u = Eigen::Vector2d::Zero();
+};
+static_assert(sizeof(Interaction2D) == 256);
 
-  // Lines 4-5: local problem of the law (contact-laws.md §2): Delassus block, modified block, shift.
+// An interaction with the local problem of its law (contact-laws.md §2): Delassus block, modified
+// block, shift, correction. What a 2D law's prepare works on; the NLGS set-up builds it for one
+// contact at a time and keeps the interaction's part. Kept in the list, these 96 bytes took it from
+// four to six cache lines per interaction, which detection wrote and the set-up wrote again.
+struct LocalProblem2D : Interaction2D {
   Eigen::Matrix2d W = Eigen::Matrix2d::Zero();
   Eigen::Matrix2d WW = Eigen::Matrix2d::Zero();
   Eigen::Vector2d covfree = Eigen::Vector2d::Zero();
   Eigen::Vector2d correction = Eigen::Vector2d::Zero();  // corr added to the auxiliary reaction
   Eigen::Vector2d cohesive_slope = Eigen::Vector2d::Zero();
 };
-static_assert(sizeof(Interaction2D) == 384);
 
 // What the next step's warm start (recup_rloc) reads of an interaction: LMGC90's verlet list entry.
-// Kept apart from Interaction2D (384 bytes) because the whole list is stored every step: copying
+// Kept apart from Interaction2D (256 bytes) because the whole list is stored every step: copying
 // full records was 4% of a 64k-disk step.
 struct StoredInteraction2D {
   PairFamily2D family = PairFamily2D::DKDKx;

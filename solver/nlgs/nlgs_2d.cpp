@@ -258,12 +258,15 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     any_update_at_check |= (law_updates_at_check[l] = updates_at_check(scene.laws[l].law)) != 0;
   v = bodies.velocity_free;
   double q2 = 0.0;
+  // The law's local problem is built beside each interaction, which keeps what the law changed.
+  LocalProblem2D c;
   for (std::size_t a = 0; a < count; ++a) {
-    Interaction2D& c = contacts[a];
+    static_cast<Interaction2D&>(c) = contacts[a];
     const ContactLaw& law = scene.laws[static_cast<std::size_t>(c.law)].law;
     c.W = delassus_block(c, inverse_mass);
     prepare_local_problem_2d(law, c, law_step);
     if (c.inactive) c.r.setZero();
+    contacts[a] = c;
     SweepContact2D& k = hot[slot[a]];
     k.cd = c.candidate_body;
     k.an = c.antagonist_body;
@@ -321,8 +324,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
 
   // After a check changed a contact's law state (update_law_at_check): its μ and cohesive terms.
   // A contact whose law updates at checks is cohesive at the start, so it has its LawTerms2D.
-  auto refresh_law_terms = [&](std::size_t a) {
-    const Interaction2D& c = contacts[a];
+  auto refresh_law_terms = [&](std::size_t a, const LocalProblem2D& c) {
     SweepContact2D& k = hot[slot[a]];
     k.mu = c.mu;
     k.inverse = signorini_coulomb_reciprocals_2d(k.wtt(), k.wtn(), k.wnn(), k.mu);
@@ -336,11 +338,15 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
   };
 
   // A check's or the post pass's re-evaluation of contact a's law state (update_law_at_check) from
-  // the velocity (ut, un) of its local solution; true when the state changed.
-  const auto update_law_state = [&](std::size_t a, double ut, double un) {
-    Interaction2D& c = contacts[a];
-    const auto l = static_cast<std::size_t>(c.law);
-    return law_updates_at_check[l] && update_law_at_check(scene.laws[l].law, c, Vector2d(ut, un), law_step);
+  // the velocity (ut, un) of its local solution, into `problem`; true when the state changed, and
+  // then the interaction keeps the new state.
+  const auto update_law_state = [&](std::size_t a, double ut, double un, LocalProblem2D& problem) {
+    const auto l = static_cast<std::size_t>(contacts[a].law);
+    if (!law_updates_at_check[l]) return false;
+    static_cast<Interaction2D&>(problem) = contacts[a];
+    if (!update_law_at_check(scene.laws[l].law, problem, Vector2d(ut, un), law_step)) return false;
+    contacts[a] = problem;
+    return true;
   };
 
   if (options.quick_scramble) scramble.prepare(count);
@@ -396,7 +402,8 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
       // velocity's is taken.
       if (post && any_update_at_check) [[unlikely]] {
         const Vector2d u_solved = w_times(c, rt, rn) + uf;
-        update_law_state(execution[index], u_solved.x(), u_solved.y());
+        LocalProblem2D problem;
+        update_law_state(execution[index], u_solved.x(), u_solved.y(), problem);
       }
       if (relaxed) {
         rt = relax * rt + keep * s.rt;
@@ -462,7 +469,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
       const double u2t = u2.x(), u2n = u2.y();
       // Laws that re-evaluate their state at a check do it with this solution's velocity; the
       // sweeps after the check read the contact's new terms.
-      if (any_update_at_check && !c.inactive() && update_law_state(a, u2t, u2n)) refresh_law_terms(a);
+      if (any_update_at_check && !c.inactive()) {
+        LocalProblem2D problem;
+        if (update_law_state(a, u2t, u2n, problem)) refresh_law_terms(a, problem);
+      }
       const double mt = 0.5 * (r1t + r2t), mn = 0.5 * (r1n + r2n);
       const double dvt = u(0) - u2t, dvn = u(1) - u2n;
       if (mt == 0.0 && mn == 0.0) ++vanishing;

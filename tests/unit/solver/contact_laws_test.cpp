@@ -21,8 +21,8 @@ LawParameters parameters(const std::map<std::string, double>& values) {
   };
 }
 
-Interaction2D contact_2d(double gap, ContactStatus begin = ContactStatus::nknow) {
-  Interaction2D c;
+LocalProblem2D contact_2d(double gap, ContactStatus begin = ContactStatus::nknow) {
+  LocalProblem2D c;
   c.gap_begin = gap;
   c.status_begin = begin;
   c.velocity_begin = Eigen::Vector2d(0.3, -2.0);
@@ -79,7 +79,7 @@ TEST(ContactLawTable, ThreeDimensionalFormsAreTheDocumentedOnes) {
 }
 
 TEST(IqsClb, ClosesAnOpenGapWithinTheStepButNeverPushesOut) {
-  Interaction2D open = contact_2d(0.002), sunk = contact_2d(-0.002);
+  LocalProblem2D open = contact_2d(0.002), sunk = contact_2d(-0.002);
   prepare_law(IqsClb{0.4}, open, LawStep{h});
   prepare_law(IqsClb{0.4}, sunk, LawStep{h});
   EXPECT_DOUBLE_EQ(open.covfree(1), 0.002 / h);
@@ -91,8 +91,8 @@ TEST(IqsClb, ClosesAnOpenGapWithinTheStepButNeverPushesOut) {
 }
 
 TEST(IqsDsClb, UsesDynamicFrictionOnlyAfterSliding) {
-  Interaction2D sticking = contact_2d(0.0, ContactStatus::stick),
-                sliding = contact_2d(0.0, ContactStatus::slide);
+  LocalProblem2D sticking = contact_2d(0.0, ContactStatus::stick),
+                 sliding = contact_2d(0.0, ContactStatus::slide);
   prepare_law(IqsDsClb{0.2, 0.5}, sticking, LawStep{h});
   prepare_law(IqsDsClb{0.2, 0.5}, sliding, LawStep{h});
   EXPECT_EQ(sticking.mu, 0.5);
@@ -100,7 +100,7 @@ TEST(IqsDsClb, UsesDynamicFrictionOnlyAfterSliding) {
 }
 
 TEST(IqsClbG0, MeasuresTheGapFromItsValueAtTheFirstStep) {
-  Interaction2D c = contact_2d(0.004);
+  LocalProblem2D c = contact_2d(0.004);
   prepare_law(IqsClbG0{0.3}, c, LawStep{h, h, true, true});
   EXPECT_EQ(c.internal[0], 0.004);
   EXPECT_EQ(c.covfree(1), 0.0);
@@ -124,20 +124,20 @@ TEST(RstClb, ScalesTheIncomingVelocityAndIgnoresOpenContacts) {
   EXPECT_DOUBLE_EQ(c.covfree(1), 0.8 * -2.0);
   EXPECT_DOUBLE_EQ(c.covfree(0), 0.5 * 0.3);
   EXPECT_DOUBLE_EQ(c.covfree(2), 0.5 * 0.1);
-  Interaction2D open = contact_2d(0.01);
+  LocalProblem2D open = contact_2d(0.01);
   prepare_law(RstClb{0.8, 0.5, 0.3}, open, LawStep{h});
   EXPECT_TRUE(open.inactive);
 }
 
 TEST(RstDsClb, RestitutionWithDynamicFrictionAfterSliding) {
-  Interaction2D c = contact_2d(-0.001, ContactStatus::slide);
+  LocalProblem2D c = contact_2d(-0.001, ContactStatus::slide);
   prepare_law(RstDsClb{0.5, 0.0, 0.1, 0.6}, c, LawStep{h});
   EXPECT_DOUBLE_EQ(c.covfree(1), 0.5 * -2.0);
   EXPECT_EQ(c.mu, 0.1);
 }
 
 TEST(GapSgrClb, CorrectsAPenetrationWithinOneStep) {
-  Interaction2D c = contact_2d(-0.002);
+  LocalProblem2D c = contact_2d(-0.002);
   prepare_law(GapSgrClb{0.3}, c, LawStep{h});
   EXPECT_DOUBLE_EQ(c.covfree(1), -0.002 / h);
 }
@@ -150,7 +150,7 @@ TEST(GapSgrDsClb, GapFormWithStaticFrictionWhileSticking) {
 }
 
 TEST(VelSgrClb, ActsOnlyOnceTheGapIsClosed) {
-  Interaction2D open = contact_2d(0.001), closed = contact_2d(0.0);
+  LocalProblem2D open = contact_2d(0.001), closed = contact_2d(0.0);
   prepare_law(VelSgrClb{0.3}, open, LawStep{h});
   prepare_law(VelSgrClb{0.3}, closed, LawStep{h});
   EXPECT_TRUE(open.inactive);
@@ -166,7 +166,7 @@ TEST(VelSgrDsClb, VelocitySignoriniWithDynamicFrictionAfterSliding) {
 }
 
 TEST(ElasticRepellClb, AddsTheSpringComplianceToTheNormalBlock) {
-  Interaction2D c = contact_2d(-0.001);
+  LocalProblem2D c = contact_2d(-0.001);
   prepare_law(ElasticRepellClb{1e6, 0.3}, c, LawStep{h});
   EXPECT_DOUBLE_EQ(c.WW(1, 1), 1.0 + 1.0 / (1e6 * h * h));
   EXPECT_DOUBLE_EQ(c.covfree(1), -1.0);
@@ -186,13 +186,13 @@ TEST(IqsMohrDsClb, IsCohesiveFromTheFirstStepUntilItStopsSticking) {
   ASSERT_TRUE(prepare_law(IqsMohrDsClb{100.0, 50.0, 0.2, 0.3}, late, LawStep{h, 0.0, false}));
   EXPECT_EQ(late.correction, 0.0);
   // 2D: cohesion × contact length, shifted through W; also from step 1 only.
-  Interaction2D c2 = contact_2d(0.0);
+  LocalProblem2D c2 = contact_2d(0.0);
   c2.length = 2.0;
   prepare_law(IqsMohrDsClb{100.0, 50.0, 0.2, 0.3}, c2, LawStep{h, 0.0, true});
   EXPECT_EQ(c2.status_begin, ContactStatus::Mstck);
   EXPECT_DOUBLE_EQ(c2.correction(1), -200.0 * h);
   EXPECT_DOUBLE_EQ(c2.covfree(0), -200.0 * h * 0.5);
-  Interaction2D late2 = contact_2d(0.0);
+  LocalProblem2D late2 = contact_2d(0.0);
   prepare_law(IqsMohrDsClb{100.0, 50.0, 0.2, 0.3}, late2, LawStep{h, 0.0, false});
   EXPECT_EQ(late2.correction(1), 0.0);
 }
@@ -208,9 +208,31 @@ TEST(IqsWetDsClb, IsCohesiveInsideTheWetHaloOnly) {
   EXPECT_EQ(dry.correction, 0.0);
 }
 
+// 2D: a contact ends the step in its W status only where prepare added a nonzero cohesion (inside
+// the halo, cohen != 0); finish reads that from the gap and the law.
+TEST(IqsWetDsClb, EndsWetOnlyWhereItsPreparationAddedACohesion2D) {
+  const IqsWetDsClb law{10.0, 0.0, 0.001, 0.2, 0.3}, without_cohesion{0.0, 0.0, 0.001, 0.2, 0.3};
+  LocalProblem2D wet = contact_2d(0.0005, ContactStatus::stick),
+                 dry = contact_2d(0.002, ContactStatus::stick),
+                 uncohesive = contact_2d(0.0005, ContactStatus::stick);
+  prepare_law(law, wet, LawStep{h});
+  prepare_law(law, dry, LawStep{h});
+  prepare_law(without_cohesion, uncohesive, LawStep{h});
+  EXPECT_EQ(wet.correction(1), -10.0 * h);
+  EXPECT_EQ(dry.correction(1), 0.0);
+  EXPECT_EQ(uncohesive.correction(1), 0.0);
+  for (LocalProblem2D* c : {&wet, &dry, &uncohesive}) c->status = ContactStatus::Wstck;
+  finish_law(law, wet, LawStep{h});
+  finish_law(law, dry, LawStep{h});
+  finish_law(without_cohesion, uncohesive, LawStep{h});
+  EXPECT_EQ(wet.status, ContactStatus::Wstck);
+  EXPECT_EQ(dry.status, ContactStatus::stick);
+  EXPECT_EQ(uncohesive.status, ContactStatus::stick);
+}
+
 TEST(IqsMacCzm, StartsUndamagedAndDamagesUnderOpening) {
   const IqsMacCzm law{0.3, 0.3, 1e6, 1e6, 0.0, 10.0};
-  Interaction2D c = contact_2d(0.0);
+  LocalProblem2D c = contact_2d(0.0);
   prepare_law(law, c, LawStep{h, h, true, true});
   EXPECT_EQ(c.internal[3], 1.0);  // β
   EXPECT_TRUE(c.cohesive);
@@ -223,7 +245,7 @@ TEST(IqsMacCzm, StartsUndamagedAndDamagesUnderOpening) {
 
 TEST(IqsMacCzm, TwoDimensionalBetaIsReEvaluatedAtEachCheckAndTheChecksBetaIsStored) {
   const IqsMacCzm law{0.3, 0.4, 2e6, 1e6, 0.0, 10.0};
-  Interaction2D c = contact_2d(0.0);
+  LocalProblem2D c = contact_2d(0.0);
   prepare_law(law, c, LawStep{h, h, true, true});
   c.length = 0.5;
   prepare_law(law, c, LawStep{h, h, false, false});  // L = 0.5
@@ -246,7 +268,7 @@ TEST(IqsMacCzm, TwoDimensionalBetaIsReEvaluatedAtEachCheckAndTheChecksBetaIsStor
 TEST(IqsMacCzm, ContactsCreatedAfterTheFirstStepStartBroken) {
   // LMGC90 makes the interface sound (β = 1) only at the run's first step (init_CZM, Nstep = 1).
   const IqsMacCzm law{0.3, 0.4, 1e6, 1e6, 0.0, 10.0};
-  Interaction2D c2 = contact_2d(0.0);
+  LocalProblem2D c2 = contact_2d(0.0);
   prepare_law(law, c2, LawStep{h, 2 * h, false});
   EXPECT_EQ(c2.internal[3], 0.0);
   EXPECT_FALSE(c2.cohesive);
@@ -371,14 +393,14 @@ TEST(CoupledDof, ThreeDimensionalFormGluesEveryComponent) {
 }
 
 TEST(CoupledDof, HasNoFriction) {
-  Interaction2D c = contact_2d(0.0);
+  LocalProblem2D c = contact_2d(0.0);
   c.mu = 1.0;
   prepare_law(CoupledDof{}, c, LawStep{h});
   EXPECT_EQ(c.mu, 0.0);
 }
 
 TEST(NoNlgsBranch, IsVelocitySignoriniWithoutGapTerm) {
-  Interaction2D c = contact_2d(0.003);
+  LocalProblem2D c = contact_2d(0.003);
   prepare_law(NoNlgsBranch{0.25}, c, LawStep{h});
   EXPECT_EQ(c.covfree(1), 0.0);
   EXPECT_EQ(c.mu, 0.25);
