@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "solver/laws/law_local_problem_2d.hpp"
+#include "solver/nlgs/local_solver_2d.hpp"
 #include "solver/nlgs/open_contact_visits.hpp"
 #include "solver/nlgs/sweep_wavefront.hpp"
 
