@@ -63,6 +63,10 @@ void select_prox_tactors(Scene2D& scene, RunState2D& state) {
         b.reference[i] + b.displacement_begin[i] + (1.0 - state.theta) * state.h * b.velocity_begin[i];
   if (scene.x_period > 0.0)
     for (auto& c : coordinates) c.x() -= scene.x_period * std::floor(c.x() / scene.x_period);
+  if (state.contacts_stored) {
+    std::swap(state.previous, state.contacts);  // the stored list is kept; its old buffer is written
+    state.contacts_stored = false;
+  }
   detect_contacts_2d(scene, state.visibility, coordinates, state.contacts);
 }
 
@@ -71,15 +75,20 @@ void recup_rloc(RunState2D& state) {
   auto key = [](const auto& c) {
     return std::make_tuple(c.family, c.candidate, c.antagonist, c.candidate_vertex);
   };
-  const LargeArray<StoredInteraction2D>& previous = state.previous;
+  if (state.contacts_stored) {
+    // Stored by stock_rloc with no detection since: each interaction is its own previous one.
+    for (Interaction2D& c : state.contacts) c.status_begin = c.status;
+    return;
+  }
+  const LargeArray<Interaction2D>& previous = state.previous;
   // PLPLx between two parallel faces: which polygon holds the vertices depends on round-off, so a
   // pair may come back with its roles swapped (LMGC90's own detection keeps them; its
   // recup_rloc_ByPosition_PLPLx matches either role by position). The swapped pair's previous
   // point at the same place (within 1% of the distance between that pair's two points) is the match.
-  const auto swapped_match = [&](const Interaction2D& c) -> const StoredInteraction2D* {
+  const auto swapped_match = [&](const Interaction2D& c) -> const Interaction2D* {
     const auto first = std::lower_bound(previous.begin(), previous.end(),
                                         std::make_tuple(c.family, c.antagonist, c.candidate),
-                                        [&](const StoredInteraction2D& p, const auto& k) {
+                                        [&](const Interaction2D& p, const auto& k) {
                                           return std::make_tuple(p.family, p.candidate, p.antagonist) < k;
                                         });
     auto last = first;
@@ -95,7 +104,7 @@ void recup_rloc(RunState2D& state) {
   std::size_t j = 0;
   for (Interaction2D& c : state.contacts) {
     while (j < previous.size() && key(previous[j]) < key(c)) ++j;
-    const StoredInteraction2D* match = nullptr;
+    const Interaction2D* match = nullptr;
     bool swapped = false;
     if (j < previous.size() && key(previous[j]) == key(c)) {
       match = &previous[j];
@@ -131,12 +140,12 @@ NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& 
 }
 
 void store_interactions(RunState2D& state, std::span<const Interaction2D> interactions) {
-  state.previous.clear();  // keeps its buffer
-  for (const Interaction2D& c : interactions) state.previous.emplace_back(c);
+  state.previous.assign(interactions.begin(), interactions.end());  // keeps its buffer
+  state.contacts_stored = false;
 }
 
 void stock_rloc(RunState2D& state) {
-  store_interactions(state, state.contacts);
+  state.contacts_stored = true;
 }
 
 void compute_dof(Scene2D& scene, const RunState2D& state) {

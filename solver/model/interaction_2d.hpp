@@ -71,29 +71,4 @@ struct LocalProblem2D : Interaction2D {
   Eigen::Vector2d cohesive_slope = Eigen::Vector2d::Zero();
 };
 
-// What the next step's warm start (recup_rloc) reads of an interaction: LMGC90's verlet list entry.
-// Kept apart from Interaction2D (256 bytes) because the whole list is stored every step: copying
-// full records was 4% of a 64k-disk step.
-struct StoredInteraction2D {
-  PairFamily2D family = PairFamily2D::DKDKx;
-  ContactStatus status = ContactStatus::nknow;
-  bool cohesive = false;
-  std::int32_t candidate = 0, antagonist = 0, candidate_vertex = 0;  // the key, with family
-  Eigen::Vector2d r = Eigen::Vector2d::Zero();
-  Eigen::Vector2d point = Eigen::Vector2d::Zero();  // PLPLx pairs whose roles turned over match by place
-  std::array<double, 6> internal{};
-
-  StoredInteraction2D() = default;
-  explicit StoredInteraction2D(const Interaction2D& c)
-      : family(c.family),
-        status(c.status),
-        cohesive(c.cohesive),
-        candidate(c.candidate),
-        antagonist(c.antagonist),
-        candidate_vertex(c.candidate_vertex),
-        r(c.r),
-        point(c.point),
-        internal(c.internal) {}
-};
-
 }  // namespace lmgc::solver

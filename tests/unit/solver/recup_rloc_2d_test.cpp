@@ -25,7 +25,7 @@ TEST(RecupRloc2D, SameKeyTakesTheReactionStatusAndInternals) {
   p.r = Eigen::Vector2d(0.1, 2.0);
   p.status = ContactStatus::Cstck;
   p.internal[3] = 1.0;
-  state.previous = {StoredInteraction2D(p)};
+  state.previous = {p};
   state.contacts = {plplx(0, 1, 2, Eigen::Vector2d(1.0, 0.0)), plplx(0, 1, 3, Eigen::Vector2d(1.0, 1.0))};
   recup_rloc(state);
   EXPECT_EQ(state.contacts[0].r, p.r);
@@ -48,7 +48,7 @@ TEST(RecupRloc2D, SwappedFaceAgainstFacePairMatchesByPositionAndTurnsTangentialO
     p->cohesive = true;
   }
   p2.r(1) = 4.0;
-  state.previous = {StoredInteraction2D(p1), StoredInteraction2D(p2)};
+  state.previous = {p1, p2};
   // This step: polygon 0's vertices 1 and 4 on polygon 1's face, at the same two places (to 1e-5).
   state.contacts = {plplx(0, 1, 1, Eigen::Vector2d(1.0, 1e-5)), plplx(0, 1, 4, Eigen::Vector2d(1e-5, 0.0)),
                     plplx(0, 1, 5, Eigen::Vector2d(0.5, 0.0))};
@@ -59,6 +59,31 @@ TEST(RecupRloc2D, SwappedFaceAgainstFacePairMatchesByPositionAndTurnsTangentialO
   EXPECT_EQ(state.contacts[0].status_begin, ContactStatus::Cstck);
   EXPECT_EQ(state.contacts[1].r, Eigen::Vector2d(-0.2, 3.0));       // p1's
   EXPECT_EQ(state.contacts[2].status_begin, ContactStatus::nknow);  // between the two: new
+}
+
+// stock_rloc stores the step's list in place (the next detection swaps it into `previous`): a warm
+// start with no detection in between finds each interaction its own previous one, as a copy would.
+TEST(RecupRloc2D, AfterStockWithoutDetectionEachInteractionIsItsOwnPrevious) {
+  RunState2D state;
+  Interaction2D p = plplx(0, 1, 2, Eigen::Vector2d(1.0, 0.0));
+  p.r = Eigen::Vector2d(0.1, 2.0);
+  p.status = ContactStatus::Cstck;
+  p.status_begin = ContactStatus::nknow;
+  p.internal[3] = 1.0;
+  state.previous = {plplx(0, 1, 2, Eigen::Vector2d(1.0, 0.0))};  // an older list, superseded
+  state.contacts = {p};
+  stock_rloc(state);
+  recup_rloc(state);
+  EXPECT_EQ(state.contacts[0].r, p.r);
+  EXPECT_EQ(state.contacts[0].status_begin, ContactStatus::Cstck);
+  EXPECT_EQ(state.contacts[0].status, ContactStatus::Cstck);
+  EXPECT_EQ(state.contacts[0].internal[3], 1.0);
+  // A warm start's list stored afterwards replaces it.
+  const std::vector<Interaction2D> warm_start = {plplx(0, 1, 2, Eigen::Vector2d(1.0, 0.0))};
+  store_interactions(state, warm_start);
+  recup_rloc(state);
+  EXPECT_EQ(state.contacts[0].r, Eigen::Vector2d::Zero());
+  EXPECT_EQ(state.contacts[0].status_begin, ContactStatus::nknow);
 }
 
 }  // namespace
