@@ -384,6 +384,13 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
       // sweeps of large scenes stream nearly five times the memory (the post pass never skips).
       if (!post && s.rt == 0.0 && s.rn == 0.0 && s.visits.skip(sweep_number)) continue;
       const SweepContact2D& c = sweep_hot[index];
+      if (!post && s.rt == 0.0 && s.rn == 0.0 && c.law_terms == SweepContact2D::plain) {
+        // A plain contact without reaction stays without one while u_n + cov_n >= 0 (its local solve
+        // returns r = 0, and the update would inject nothing): decided on the relative velocity alone,
+        // without the solve and the update. Most open contacts of a packing stay open at their visits
+        // (disk layer, 50 sweeps: 1k 0.38-0.39 -> 0.29 ms of sweeps per step).
+        if (relative_velocity(c, velocity).y() + c.cov_n >= 0.0) continue;
+      }
       if (c.inactive()) {
         if (s.rt != 0.0 || s.rn != 0.0) {
           inject(c, -s.rt, -s.rn, inverse_masses, velocity);
