@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <numeric>
+#include <type_traits>
 #include <utility>
 
 #include "solver/laws/law_local_problem_2d.hpp"
@@ -371,7 +372,9 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
 
   // One Gauss–Seidel pass (in execution order, the sweep order's result); the post pass never skips and
   // is not counted as an iteration.
-  auto sweep = [&](bool post) {
+  // Instantiated once per kind (std::bool_constant): the post pass's tests fold away in the sweeps.
+  auto sweep = [&](auto post_kind) {
+    constexpr bool post = decltype(post_kind)::value;
     const SweepContact2D* sweep_hot = hot.data();
     Vector3d* const velocity = v.data();
     const Vector3d* const inverse_masses = inverse_mass.data();
@@ -526,7 +529,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     for (int block = 0; block < options.gs_it2; ++block) {
       const auto sweeps_start = std::chrono::steady_clock::now();
       if (options.quick_scramble) scramble_order();
-      for (int i = 0; i < options.gs_it1; ++i) sweep(false);
+      for (int i = 0; i < options.gs_it1; ++i) sweep(std::false_type{});
       result.sweep_seconds +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() - sweeps_start).count();
       result.converged = check();
@@ -540,7 +543,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
   // one more relaxed sweep, then the final local velocities and statuses.
   v = bodies.velocity_free;
   inject_all();
-  if (count > 0) sweep(true);
+  if (count > 0) sweep(std::true_type{});
   // The achieved error is the one of the reactions actually returned (after the post sweep).
   double residual2 = 0.0;
   result.active = 0;
