@@ -64,7 +64,8 @@ void select_prox_tactors(Scene2D& scene, RunState2D& state) {
   if (scene.x_period > 0.0)
     for (auto& c : coordinates) c.x() -= scene.x_period * std::floor(c.x() / scene.x_period);
   if (state.contacts_stored) {
-    std::swap(state.previous, state.contacts);  // the stored list is kept; its old buffer is written
+    // The stored list becomes `previous`; the older list's buffer receives the new interactions.
+    std::swap(state.previous, state.contacts);
     state.contacts_stored = false;
   }
   detect_contacts_2d(scene, state.visibility, coordinates, state.contacts);

@@ -16,9 +16,10 @@ inline constexpr int kPairFamily2DCount = 7;
 static_assert(static_cast<int>(PairFamily2D::PLJCx) + 1 == kPairFamily2DCount);
 
 // 64-byte aligned, 256 bytes in four cache lines: the per-step passes over a large list (detection,
-// warm start, NLGS set-up, store) move whole lines. The fields are grouped by the passes that read
-// them: the warm start (recup_rloc) and the store (stock_rloc) touch only the first two lines (key,
-// reaction, status, point, internal variables), the NLGS set-up reads the geometry of lines 2-3.
+// warm start, NLGS set-up and end) move whole lines. The fields are grouped by the passes that read
+// them: the warm start (recup_rloc) touches only the first two lines of this step's and of the stored
+// list's records (key, reaction, statuses, point, internal variables), the NLGS set-up reads the
+// geometry of lines 2-3.
 // The law's local problem is not kept here (LocalProblem2D below).
 struct alignas(64) Interaction2D {
   // Line 0: the key, the reaction and the statuses.
