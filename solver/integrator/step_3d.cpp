@@ -541,17 +541,35 @@ template <class Interaction>
 auto recup_key(const Interaction& c) {
   return std::tuple(c.family, c.candidate, c.antagonist);
 }
+
+// The stored list is built in one pass over the interactions, which also notes whether they come in
+// key order (detection's): at 64k spheres a second pass to check the order, and one to set the
+// statuses, each read the whole stored or interaction list from memory again.
+struct StoredListBuilder {
+  LargeArray<StoredInteraction3D>& stored;
+  bool sorted = true;
+  explicit StoredListBuilder(LargeArray<StoredInteraction3D>& list) : stored(list) {
+    stored.clear();  // keeps its buffer
+  }
+  void append(const Interaction3D& c) {
+    if (!stored.empty() && recup_key(c) < recup_key(stored.back())) sorted = false;
+    stored.emplace_back(c);
+  }
+  // Sorted by key (a stable sort: equal keys keep their order) when they did not come in order.
+  void finish() {
+    if (sorted) return;
+    std::stable_sort(stored.begin(), stored.end(),
+                     [](const StoredInteraction3D& a, const StoredInteraction3D& b) {
+                       return recup_key(a) < recup_key(b);
+                     });
+  }
+};
 }  // namespace
 
 void store_interactions(RunState3D& state, std::span<const Interaction3D> interactions) {
-  LargeArray<StoredInteraction3D>& stored = state.previous;
-  stored.clear();  // keeps its buffer
-  for (const Interaction3D& c : interactions) stored.emplace_back(c);
-  const auto by_key = [](const StoredInteraction3D& a, const StoredInteraction3D& b) {
-    return recup_key(a) < recup_key(b);
-  };
-  if (!std::is_sorted(stored.begin(), stored.end(), by_key))
-    std::stable_sort(stored.begin(), stored.end(), by_key);
+  StoredListBuilder builder(state.previous);
+  for (const Interaction3D& c : interactions) builder.append(c);
+  builder.finish();
 }
 
 void recup_rloc(RunState3D& state) {
@@ -845,8 +863,12 @@ void update_step(Scene3D& scene, RunState3D& state) {
     b.velocity_begin[i] = b.velocity[i];
     b.frame_initial[i] = b.frame[i];
   }
-  for (Interaction3D& c : state.contacts) c.status_begin = c.status;
-  store_interactions(state, state.contacts);
+  StoredListBuilder builder(state.previous);
+  for (Interaction3D& c : state.contacts) {
+    c.status_begin = c.status;
+    builder.append(c);
+  }
+  builder.finish();
 }
 
 namespace {
