@@ -87,8 +87,9 @@ bool prepare_law(const ContactLaw& law, Interaction3D& c, const LawStep& step) {
   c.correction_needs_contact = false;
   c.form = LocalForm3D::coulomb;
   c.normal_compliance = 0.0;
-  c.cohesive_slope.setZero();
-  c.cohesive_shift.setZero();
+  // cohesive_slope and cohesive_shift are not reset: only the cohesive form reads them, and the law
+  // that sets that form writes both (iqs_mac_czm.hpp). They sit at the end of the 624-byte record,
+  // which the set-up of a 64k-sphere step otherwise does not touch.
   return std::visit(
       [&](const auto& p) {
         if constexpr (HasForm3D<std::decay_t<decltype(p)>>) {
