@@ -382,12 +382,13 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     const auto sweep_number = static_cast<std::int32_t>(result.iterations);
     for (std::size_t index = 0; index < count; ++index) {
       ContactReaction2D& s = sweep_reaction[index];
+      const bool without_reaction = s.rt == 0.0 && s.rn == 0.0;
       // A contact without reaction that this sweep passes by is decided on its reaction record alone:
       // in a packing most contacts are open, and reading their sweep record as well made the
       // sweeps of large scenes stream nearly five times the memory (the post pass never skips).
-      if (!post && s.rt == 0.0 && s.rn == 0.0 && s.visits.skip(sweep_number)) continue;
+      if (!post && without_reaction && s.visits.skip(sweep_number)) continue;
       const SweepContact2D& c = sweep_hot[index];
-      if (!post && s.rt == 0.0 && s.rn == 0.0 && c.law_terms == SweepContact2D::plain) {
+      if (!post && without_reaction && c.law_terms == SweepContact2D::plain) {
         // A plain contact without reaction stays without one while u_n + cov_n >= 0 (its local solve
         // returns r = 0, and the update would inject nothing): decided on the relative velocity alone,
         // without the solve and the update. Most open contacts of a packing stay open at their visits
