@@ -364,42 +364,42 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     std::swap(reaction, reaction_spare);
   };
 
-  // Groups of four plain updates of one wavefront level, run at once (sweep_group_2d.hpp), for the
-  // contacts with a reaction at the start of a block: the open ones are passed by on their reaction
-  // records (the scalar path), a group's lanes would mostly idle. Formed again at every block, after
-  // the check (the reactions have moved) and the quick scramble (the order has).
+  // Groups of four plain updates that share no movable body, run at once (sweep_group_2d.hpp), for
+  // the contacts with a reaction at the start of a block: the open ones are passed by on their
+  // reaction records (the scalar path), a group's lanes would mostly idle. Formed again at every
+  // block, after the check (the reactions have moved) and the quick scramble (the order has).
   const bool use_groups = options.vector_sweeps && count >= 4 && sweep_groups_available();
   bool grouped = false;  // this block's sweeps run the groups
   thread_local std::vector<SweepGroup2D> groups;
-  // Level by level: the groups [groups_end of the previous level, groups_end), then the scalar
-  // positions [scalar_end of the previous level, scalar_end).
-  struct GroupedLevel {
+  // The sweep runs segment after segment: the groups [groups_end of the previous segment,
+  // groups_end), then the updates alone at scalar_positions [scalar_end of the previous, scalar_end).
+  struct SweepSegment {
     std::uint32_t groups_end, scalar_end;
   };
-  std::vector<GroupedLevel> grouped_levels;
+  std::vector<SweepSegment> segments;
   std::vector<std::uint32_t> scalar_positions;
+  std::vector<std::uint32_t> pending_stamp;  // by body: the pending group's serial while it holds it
   auto form_groups = [&] {
     groups.clear();
-    grouped_levels.clear();
+    segments.clear();
     scalar_positions.clear();
-    const std::vector<std::uint32_t>& starts = wavefront.level_starts();
-    std::uint32_t pending[4];
+    pending_stamp.assign(bodies.size(), 0u);
+    std::uint32_t serial = 1, pending[4];
     int filled = 0;
-    for (std::size_t level = 0; level + 1 < starts.size(); ++level) {
-      const std::size_t scalar_begin = scalar_positions.size();
-      for (std::uint32_t p = starts[level]; p < starts[level + 1]; ++p) {
-        const SweepContact2D& k = hot[p];
-        const ContactReaction2D& s = reaction[p];
-        const bool plain = k.law_terms == SweepContact2D::plain &&
-                           !(any_update_at_check &&
-                             law_updates_at_check[static_cast<std::size_t>(contacts[execution[p]].law)]);
-        if (!plain || (s.rt == 0.0 && s.rn == 0.0)) {
-          scalar_positions.push_back(p);
-          continue;
+    std::size_t scalars_in_segment = 0;
+    auto moves = [&](std::int32_t body) { return !inverse_mass[static_cast<std::size_t>(body)].isZero(0.0); };
+    auto emit_scalar = [&](std::uint32_t p) {
+      scalar_positions.push_back(p);
+      ++scalars_in_segment;
+    };
+    // The pending contacts as a group, or alone when fewer than four.
+    auto flush = [&] {
+      if (filled == 4) {
+        if (scalars_in_segment > 0) {
+          segments.push_back({static_cast<std::uint32_t>(groups.size()),
+                              static_cast<std::uint32_t>(scalar_positions.size())});
+          scalars_in_segment = 0;
         }
-        pending[filled++] = p;
-        if (filled < 4) continue;
-        filled = 0;
         SweepGroup2D& g = groups.emplace_back();
         for (int lane = 0; lane < 4; ++lane) {
           const SweepContact2D& c = hot[pending[lane]];
@@ -428,14 +428,36 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
           g.an[lane] = c.an;
           g.position[lane] = pending[lane];
         }
+      } else {
+        for (int lane = 0; lane < filled; ++lane) emit_scalar(pending[lane]);
       }
-      // The level's last one to three plain contacts go with the scalar ones.
-      scalar_positions.insert(scalar_positions.begin() + static_cast<std::ptrdiff_t>(scalar_begin), pending,
-                              pending + filled);
       filled = 0;
-      grouped_levels.push_back(
-          {static_cast<std::uint32_t>(groups.size()), static_cast<std::uint32_t>(scalar_positions.size())});
+      ++serial;
+    };
+    // In execution order. A pending group runs where it is flushed, so the updates emitted alone
+    // meanwhile, later in the order, run before it: they share no movable body with it (else it is
+    // flushed first), and two updates that share none commute exactly. Within a wavefront level
+    // nothing is shared; across levels the pending contacts join the next level's when they can.
+    for (std::uint32_t p = 0; p < count; ++p) {
+      const SweepContact2D& k = hot[p];
+      const bool cd_pending = moves(k.cd) && pending_stamp[static_cast<std::size_t>(k.cd)] == serial;
+      const bool an_pending = moves(k.an) && pending_stamp[static_cast<std::size_t>(k.an)] == serial;
+      if (cd_pending || an_pending) flush();
+      const ContactReaction2D& s = reaction[p];
+      const bool plain = k.law_terms == SweepContact2D::plain &&
+                         !(any_update_at_check &&
+                           law_updates_at_check[static_cast<std::size_t>(contacts[execution[p]].law)]);
+      if (!plain || (s.rt == 0.0 && s.rn == 0.0)) {
+        emit_scalar(p);
+        continue;
+      }
+      pending[filled++] = p;
+      pending_stamp[static_cast<std::size_t>(k.cd)] = pending_stamp[static_cast<std::size_t>(k.an)] = serial;
+      if (filled == 4) flush();
     }
+    flush();
+    segments.push_back(
+        {static_cast<std::uint32_t>(groups.size()), static_cast<std::uint32_t>(scalar_positions.size())});
   };
 
   // One Gauss–Seidel pass (in execution order, the sweep order's result); the post pass never skips and
@@ -502,17 +524,16 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
       s.visits.restart_if(((std::bit_cast<std::uint64_t>(rt) | std::bit_cast<std::uint64_t>(rn)) << 1) != 0);
     };
     if (!post && grouped) {
-      // Level by level; within a level any order gives the same result.
       std::uint32_t group = 0, scalar = 0;
-      for (const GroupedLevel& level : grouped_levels) {
-        for (; group < level.groups_end; ++group) {
+      for (const SweepSegment& segment : segments) {
+        for (; group < segment.groups_end; ++group) {
           const SweepGroup2D& g = groups[group];
           const int done = sweep_group_2d(g, sweep_reaction, velocity, relaxed, relax, keep);
           if (done != 0xF) [[unlikely]]
             for (int lane = 0; lane < 4; ++lane)
               if ((done & (1 << lane)) == 0) update(g.position[lane]);
         }
-        for (; scalar < level.scalar_end; ++scalar) update(scalar_positions[scalar]);
+        for (; scalar < segment.scalar_end; ++scalar) update(scalar_positions[scalar]);
       }
     } else {
       for (std::size_t index = 0; index < count; ++index) update(index);

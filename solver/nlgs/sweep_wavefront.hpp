@@ -50,7 +50,6 @@ class SweepWavefront {
     body_level_.assign(body_count, 0u);
     level_.resize(n);
     execution.resize(n);
-    level_starts_.clear();
     std::uint32_t base = 0, depth = 0;
     for (std::size_t w0 = 0; w0 < n; w0 += window) {
       const std::size_t w1 = std::min(n, w0 + window);
@@ -74,23 +73,17 @@ class SweepWavefront {
       start_.assign(static_cast<std::size_t>(local_depth) + 2, 0u);
       for (std::size_t p = w0; p < w1; ++p) ++start_[level_[p] + 1];
       for (std::size_t l = 1; l < start_.size(); ++l) start_[l] += start_[l - 1];
-      for (std::uint32_t l = 1; l <= local_depth; ++l)
-        level_starts_.push_back(static_cast<std::uint32_t>(w0 + start_[l]));
       for (std::size_t p = w0; p < w1; ++p) execution[w0 + start_[level_[p]]++] = order[p];
       base = top;
     }
     depth_ = depth;
-    level_starts_.push_back(static_cast<std::uint32_t>(n));
   }
 
   // Levels of the last reorder (the longest chain of updates that share bodies within a window).
   std::uint32_t depth() const { return depth_; }
-  // Where each level of the last reorder begins in `execution`, window after window, then its size:
-  // level k runs execution[level_starts()[k] .. level_starts()[k + 1]), in any order within it.
-  const std::vector<std::uint32_t>& level_starts() const { return level_starts_; }
 
  private:
-  std::vector<std::uint32_t> body_level_, level_, start_, level_starts_;
+  std::vector<std::uint32_t> body_level_, level_, start_;
   std::uint32_t depth_ = 0;
 };
 

@@ -1,8 +1,7 @@
 // Properties of the wavefront execution order of a Gauss–Seidel sweep (solver/nlgs/sweep_wavefront.hpp)
 // on random contact lists: it is a permutation of the sweep order, every two contacts that share a
 // movable body keep their order, and a Gauss–Seidel sweep run in it gives the same velocities bit for
-// bit as in the sweep order; its levels share no movable body; for any window of updates, the default
-// one included.
+// bit as in the sweep order; for any window of updates, the default one included.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -100,29 +99,6 @@ RC_GTEST_PROP(SweepWavefrontProperty, ContactsSharingAMovableBodyKeepTheirOrder,
         RC_ASSERT((position_in_sweep[a] < position_in_sweep[b]) == (position_run[a] < position_run[b]));
 }
 
-// The vector sweeps (sweep_group_2d.hpp) run the updates of one level side by side.
-RC_GTEST_PROP(SweepWavefrontProperty, LevelsPartitionTheExecutionAndShareNoMovableBody, ()) {
-  const RandomSweep s = random_sweep();
-  SweepWavefront wavefront;
-  const std::vector<std::uint32_t> execution = wavefront_of(s, wavefront);
-  const std::vector<std::uint32_t>& starts = wavefront.level_starts();
-  RC_ASSERT(!starts.empty());
-  RC_ASSERT(starts.front() == 0u);
-  RC_ASSERT(starts.back() == execution.size());
-  RC_ASSERT(std::is_sorted(starts.begin(), starts.end()));
-  for (std::size_t level = 0; level + 1 < starts.size(); ++level) {
-    std::vector<int> seen;
-    for (std::uint32_t p = starts[level]; p < starts[level + 1]; ++p) {
-      const auto [i, j] = s.contacts[execution[p]];
-      for (const int body : {i, j}) {
-        if (!s.movable[static_cast<std::size_t>(body)]) continue;
-        RC_ASSERT(std::find(seen.begin(), seen.end(), body) == seen.end());
-        seen.push_back(body);
-      }
-    }
-  }
-}
-
 RC_GTEST_PROP(SweepWavefrontProperty, SweepingInWavefrontOrderGivesTheSameVelocitiesBitForBit, ()) {
   const RandomSweep s = random_sweep();
   SweepWavefront wavefront;
@@ -141,12 +117,10 @@ TEST(SweepWavefront, AChainOfContactsOnOneBodyHasOneLevelPerContact) {
   SweepWavefront wavefront;
   EXPECT_EQ(wavefront_of(s, wavefront), (std::vector<std::uint32_t>{0, 3, 1, 2}));
   EXPECT_EQ(wavefront.depth(), 3u);
-  EXPECT_EQ(wavefront.level_starts(), (std::vector<std::uint32_t>{0, 2, 3, 4}));
   // With body 0 immovable (a wall), nothing orders the chain: one level, the sweep order.
   s.movable[0] = false;
   EXPECT_EQ(wavefront_of(s, wavefront), (std::vector<std::uint32_t>{0, 1, 2, 3}));
   EXPECT_EQ(wavefront.depth(), 1u);
-  EXPECT_EQ(wavefront.level_starts(), (std::vector<std::uint32_t>{0, 4}));
 }
 
 TEST(SweepWavefront, LevelsAreFormedWithinEachWindow) {
