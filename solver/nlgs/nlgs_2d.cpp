@@ -254,6 +254,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     any_update_at_check |= (law_updates_at_check[l] = updates_at_check(scene.laws[l].law)) != 0;
   v = bodies.velocity_free;
   double q2 = 0.0;
+  std::size_t loaded = 0;  // contacts with a reaction: the warm start's, then each check's
   // The law's local problem is built beside each interaction, which keeps what the law changed.
   LocalProblem2D c;
   for (std::size_t a = 0; a < count; ++a) {
@@ -301,6 +302,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     ContactReaction2D& s = reaction[slot[a]];
     s.rt = c.r(0);
     s.rn = c.r(1);
+    loaded += s.rt != 0.0 || s.rn != 0.0;
     // ‖q‖: free local velocities of the problem (law shifts included), fc3d/FORMAT.md §3.
     q2 += (relative_velocity(k, bodies.velocity_free.data()) + c.covfree).squaredNorm();
   }
@@ -636,16 +638,21 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     for (int block = 0; block < options.gs_it2; ++block) {
       const auto sweeps_start = std::chrono::steady_clock::now();
       if (options.quick_scramble) scramble_order();
-      if (use_groups) form_groups();
-      // Where less than a quarter of the updates form groups, the plain loop: the level lists'
+      // Where less than a quarter of the updates form groups, the plain loop: the segment lists'
       // indirection costs the others more than the groups save (BridgePL_GroundJC, whose contacts all
       // have law terms, 1200 steps: 0.17 -> 0.19 s; the 64k-disk layer, a tenth of its contacts
-      // loaded: sweeps 31-34 -> 40-51 ms per step).
-      grouped = use_groups && 4 * groups.size() * 4 >= count;
+      // loaded: sweeps 31-34 -> 40-51 ms per step). Only loaded contacts form groups: with fewer
+      // than a quarter loaded, none are formed.
+      grouped = false;
+      if (use_groups && 4 * loaded >= count) {
+        form_groups();
+        grouped = 4 * groups.size() * 4 >= count;
+      }
       for (int i = 0; i < options.gs_it1; ++i) sweep(std::false_type{});
       result.sweep_seconds +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() - sweeps_start).count();
       result.converged = check();
+      loaded = result.active;
       if (result.converged || result.diverged) break;
     }
   } else {
