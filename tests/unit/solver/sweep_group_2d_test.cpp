@@ -1,0 +1,108 @@
+// The four-lane kernel of the 2D sweeps (solver/nlgs/sweep_group_2d.hpp): what it leaves to the scalar
+// update it does not touch, and a lane it takes is solved as the Signorini–Coulomb case it falls in.
+#include "solver/nlgs/sweep_group_2d.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "solver/nlgs/local_solver_2d.hpp"
+
+namespace lmgc::solver {
+namespace {
+
+using Eigen::Vector3d;
+
+// Four disks of unit mass and inertia 0.5 resting on a wall (body 4, immovable), one contact each:
+// normal (0, 1), the wall as antagonist.
+struct Fixture {
+  SweepGroup2D group{};
+  std::vector<ContactReaction2D> reaction = std::vector<ContactReaction2D>(4);
+  std::vector<Vector3d> velocity = std::vector<Vector3d>(5, Vector3d::Zero());
+
+  Fixture() {
+    for (int lane = 0; lane < 4; ++lane) {
+      group.nx[lane] = 0.0;
+      group.ny[lane] = 1.0;
+      group.lever_cd_t[lane] = 0.1;  // ℓ×t of a disk of radius 0.1 touching below
+      group.lever_cd_n[lane] = 0.0;
+      group.lever_an_t[lane] = group.lever_an_n[lane] = 0.0;
+      group.wtt[lane] = 1.0 + 0.1 * 0.1 * 2.0;
+      group.wtn[lane] = 0.0;
+      group.wnn[lane] = 1.0;
+      group.cov_n[lane] = group.shift_t[lane] = 0.0;
+      group.mu[lane] = 0.5;
+      const SignoriniCoulombReciprocals2D inverse =
+          signorini_coulomb_reciprocals_2d(group.wtt[lane], group.wtn[lane], group.wnn[lane], group.mu[lane]);
+      group.inverse_det[lane] = inverse.det;
+      group.inverse_forward[lane] = inverse.forward;
+      group.inverse_backward[lane] = inverse.backward;
+      group.inverse_mass_cd[0][lane] = group.inverse_mass_cd[1][lane] = 1.0;
+      group.inverse_mass_cd[2][lane] = 2.0;
+      group.inverse_mass_an[0][lane] = group.inverse_mass_an[1][lane] = group.inverse_mass_an[2][lane] = 0.0;
+      group.cd[lane] = lane;
+      group.an[lane] = 4;
+      group.position[lane] = static_cast<std::uint32_t>(lane);
+      reaction[static_cast<std::size_t>(lane)].rt = 0.0;
+      reaction[static_cast<std::size_t>(lane)].rn = 0.01;
+      velocity[static_cast<std::size_t>(lane)] = Vector3d(0.0, -1.0, 0.0);  // approaching the wall
+    }
+  }
+  int run() { return sweep_group_2d(group, reaction.data(), velocity.data(), false, 1.0, 0.0); }
+};
+
+bool same_bits(const Vector3d& a, const Vector3d& b) {
+  return std::memcmp(a.data(), b.data(), sizeof(a)) == 0;
+}
+
+TEST(SweepGroup2D, EveryLaneOfAPlainGroupIsTakenAndStopsItsDisk) {
+  if (!sweep_groups_available()) GTEST_SKIP() << "no AVX2 on this processor: every update runs alone";
+  Fixture f;
+  ASSERT_EQ(f.run(), 0xF);
+  for (std::size_t k = 0; k < 4; ++k) {
+    // Stick: the disk's normal velocity reaches zero; the impulse takes its free momentum (m = 1:
+    // the velocity -1 holds the warm start's 0.01 already, so the free velocity is -1.01).
+    EXPECT_NEAR(f.velocity[k].y(), 0.0, 1e-15);
+    EXPECT_NEAR(f.reaction[k].rn, 1.01, 1e-15);
+    EXPECT_EQ(f.reaction[k].rt, 0.0);
+    EXPECT_EQ(f.reaction[k].visits.next, 0);  // restarted: it has a reaction
+  }
+}
+
+TEST(SweepGroup2D, LanesWithoutReactionOrOutsideThePlainCasesAreLeftUntouched) {
+  if (!sweep_groups_available()) GTEST_SKIP() << "no AVX2 on this processor: every update runs alone";
+  Fixture f;
+  f.reaction[1].rt = f.reaction[1].rn = 0.0;  // without reaction: the schedule's to decide
+  f.reaction[1].visits.next = 7;
+  f.velocity[1] = Vector3d(-0.0, -0.0, -0.0);                    // a zero injection would turn -0 into +0
+  f.velocity[2].y() = std::numeric_limits<double>::quiet_NaN();  // NaN: the dividing fallback's case
+  // Lane 3 approaches, but its block has no reciprocals (singular): the dividing fallback's case.
+  f.group.inverse_det[3] = f.group.inverse_forward[3] = f.group.inverse_backward[3] = 0.0;
+  const std::vector<Vector3d> before = f.velocity;
+  const std::vector<ContactReaction2D> reaction_before = f.reaction;
+  EXPECT_EQ(f.run(), 0x1);
+  EXPECT_NEAR(f.velocity[0].y(), 0.0, 1e-15);
+  EXPECT_TRUE(same_bits(f.velocity[1], before[1]));
+  EXPECT_TRUE(std::isnan(f.velocity[2].y()));
+  EXPECT_TRUE(same_bits(f.velocity[3], before[3]));
+  for (std::size_t k = 1; k < 4; ++k) {
+    EXPECT_EQ(std::memcmp(&f.reaction[k].rt, &reaction_before[k].rt, 2 * sizeof(double)), 0);
+    EXPECT_EQ(f.reaction[k].visits.next, reaction_before[k].visits.next);
+    EXPECT_EQ(f.reaction[k].visits.threshold, reaction_before[k].visits.threshold);
+  }
+}
+
+TEST(SweepGroup2D, AGroupWithEveryLaneWithoutReactionWritesNothing) {
+  if (!sweep_groups_available()) GTEST_SKIP() << "no AVX2 on this processor: every update runs alone";
+  Fixture f;
+  for (ContactReaction2D& s : f.reaction) s.rt = s.rn = 0.0;
+  const std::vector<Vector3d> before = f.velocity;
+  EXPECT_EQ(f.run(), 0x0);
+  for (std::size_t k = 0; k < 5; ++k) EXPECT_TRUE(same_bits(f.velocity[k], before[k]));
+}
+
+}  // namespace
+}  // namespace lmgc::solver
