@@ -378,9 +378,11 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
   struct SweepSegment {
     std::uint32_t groups_end, scalar_end;
   };
-  std::vector<SweepSegment> segments;
-  std::vector<std::uint32_t> scalar_positions;
-  std::vector<std::uint32_t> pending_stamp;  // by body: the pending group's serial while it holds it
+  // Kept from call to call, as the sweep arrays: a small scene's step would otherwise allocate them.
+  thread_local std::vector<SweepSegment> segments;
+  thread_local std::vector<std::uint32_t> scalar_positions;
+  thread_local std::vector<std::uint32_t>
+      pending_stamp;  // by body: the pending group's serial while it holds it
   auto form_groups = [&] {
     groups.clear();
     segments.clear();
