@@ -58,6 +58,43 @@ LMGC_AVX2 void store_singles(__m256d x, double* p0, double* p1, double* p2, doub
   _mm_storeh_pd(p3, high);
 }
 
+// One side's body of each lane (the candidates, or the antagonists): where its velocity is, and the
+// velocity (x, y, ω), one vector per component.
+struct LaneBodies {
+  double* velocity[4];
+  __m256d x, y, w;
+};
+
+LMGC_AVX2 LaneBodies load_bodies(double* v, const std::int32_t (&body)[4]) {
+  LaneBodies b{{v + 3 * body[0], v + 3 * body[1], v + 3 * body[2], v + 3 * body[3]}, {}, {}, {}};
+  load_pairs(b.velocity[0], b.velocity[1], b.velocity[2], b.velocity[3], b.x, b.y);
+  b.w = load_singles(b.velocity[0] + 2, b.velocity[1] + 2, b.velocity[2] + 2, b.velocity[3] + 2);
+  return b;
+}
+
+// The candidate gains the impulse, the antagonist loses it.
+template <bool candidate>
+LMGC_AVX2 __m256d with_impulse(__m256d v, __m256d impulse) {
+  return candidate ? _mm256_add_pd(v, impulse) : _mm256_sub_pd(v, impulse);
+}
+
+// inject's v[i] += M_i⁻¹ (f, dt ℓ_t + dn ℓ_n) (candidate) or v[j] −= ... (antagonist), on the lanes
+// taken: the others inject r_old − r_old = 0, which would turn a −0 velocity into +0.
+template <bool candidate>
+LMGC_AVX2 void inject_lanes(LaneBodies& b, const double (&inverse_mass)[3][4], __m256d fx, __m256d fy,
+                            __m256d dt, __m256d dn, __m256d lever_t, __m256d lever_n, __m256d taken) {
+  const __m256d turn = _mm256_add_pd(_mm256_mul_pd(dt, lever_t), _mm256_mul_pd(dn, lever_n));
+  b.x = _mm256_blendv_pd(b.x, with_impulse<candidate>(b.x, _mm256_mul_pd(load(inverse_mass[0]), fx)), taken);
+  b.y = _mm256_blendv_pd(b.y, with_impulse<candidate>(b.y, _mm256_mul_pd(load(inverse_mass[1]), fy)), taken);
+  b.w =
+      _mm256_blendv_pd(b.w, with_impulse<candidate>(b.w, _mm256_mul_pd(load(inverse_mass[2]), turn)), taken);
+}
+
+LMGC_AVX2 void store_bodies(const LaneBodies& b) {
+  store_pairs(b.x, b.y, b.velocity[0], b.velocity[1], b.velocity[2], b.velocity[3]);
+  store_singles(b.w, b.velocity[0] + 2, b.velocity[1] + 2, b.velocity[2] + 2, b.velocity[3] + 2);
+}
+
 }  // namespace
 
 __attribute__((target("avx2"))) int sweep_group_2d(const SweepGroup2D& g, ContactReaction2D* reaction,
@@ -75,20 +112,7 @@ __attribute__((target("avx2"))) int sweep_group_2d(const SweepGroup2D& g, Contac
       _mm256_and_pd(_mm256_cmp_pd(rt_old, zero, _CMP_EQ_OQ), _mm256_cmp_pd(rn_old, zero, _CMP_EQ_OQ));
   if (_mm256_movemask_pd(without_reaction) == 0xF) return 0;
 
-  double* const v = velocity->data();
-  double* const a0 = v + 3 * g.cd[0];
-  double* const a1 = v + 3 * g.cd[1];
-  double* const a2 = v + 3 * g.cd[2];
-  double* const a3 = v + 3 * g.cd[3];
-  double* const b0 = v + 3 * g.an[0];
-  double* const b1 = v + 3 * g.an[1];
-  double* const b2 = v + 3 * g.an[2];
-  double* const b3 = v + 3 * g.an[3];
-  __m256d ax, ay, bx, by;
-  load_pairs(a0, a1, a2, a3, ax, ay);
-  load_pairs(b0, b1, b2, b3, bx, by);
-  const __m256d aw = load_singles(a0 + 2, a1 + 2, a2 + 2, a3 + 2);
-  const __m256d bw = load_singles(b0 + 2, b1 + 2, b2 + 2, b3 + 2);
+  LaneBodies a = load_bodies(velocity->data(), g.cd), b = load_bodies(velocity->data(), g.an);
 
   const __m256d nx = load(g.nx), ny = load(g.ny), minus_nx = negate(nx);
   const __m256d lcd_t = load(g.lever_cd_t), lcd_n = load(g.lever_cd_n);
@@ -96,14 +120,14 @@ __attribute__((target("avx2"))) int sweep_group_2d(const SweepGroup2D& g, Contac
   const __m256d wtt = load(g.wtt), wtn = load(g.wtn), wnn = load(g.wnn), mu = load(g.mu);
 
   // relative_velocity: ((across dx + across dy) + ℓ_cd a_ω) − ℓ_an b_ω, across = (ny, nx), (−nx, ny).
-  const __m256d dx = _mm256_sub_pd(ax, bx), dy = _mm256_sub_pd(ay, by);
+  const __m256d dx = _mm256_sub_pd(a.x, b.x), dy = _mm256_sub_pd(a.y, b.y);
   const __m256d ut =
       _mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(ny, dx), _mm256_mul_pd(minus_nx, dy)),
-                                  _mm256_mul_pd(lcd_t, aw)),
-                    _mm256_mul_pd(lan_t, bw));
+                                  _mm256_mul_pd(lcd_t, a.w)),
+                    _mm256_mul_pd(lan_t, b.w));
   const __m256d un = _mm256_sub_pd(
-      _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, dx), _mm256_mul_pd(ny, dy)), _mm256_mul_pd(lcd_n, aw)),
-      _mm256_mul_pd(lan_n, bw));
+      _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, dx), _mm256_mul_pd(ny, dy)), _mm256_mul_pd(lcd_n, a.w)),
+      _mm256_mul_pd(lan_n, b.w));
   // minus_w_r: u − (W_t r_t + W_n r_n); then the plain path's shifts.
   const __m256d qt =
       _mm256_add_pd(_mm256_sub_pd(ut, _mm256_add_pd(_mm256_mul_pd(wtt, rt_old), _mm256_mul_pd(wtn, rn_old))),
@@ -160,27 +184,12 @@ __attribute__((target("avx2"))) int sweep_group_2d(const SweepGroup2D& g, Contac
   const __m256d dt = _mm256_sub_pd(rt, rt_old), dn = _mm256_sub_pd(rn, rn_old);
   const __m256d fx = _mm256_add_pd(_mm256_mul_pd(ny, dt), _mm256_mul_pd(nx, dn));
   const __m256d fy = _mm256_add_pd(_mm256_mul_pd(minus_nx, dt), _mm256_mul_pd(ny, dn));
-  // (The lanes not taken inject r_old − r_old = 0, which would turn a −0 velocity into +0: blended out.)
-  ax = _mm256_blendv_pd(ax, _mm256_add_pd(ax, _mm256_mul_pd(load(g.inverse_mass_cd[0]), fx)), taken);
-  ay = _mm256_blendv_pd(ay, _mm256_add_pd(ay, _mm256_mul_pd(load(g.inverse_mass_cd[1]), fy)), taken);
-  const __m256d aw_new = _mm256_blendv_pd(
-      aw,
-      _mm256_add_pd(aw, _mm256_mul_pd(load(g.inverse_mass_cd[2]),
-                                      _mm256_add_pd(_mm256_mul_pd(dt, lcd_t), _mm256_mul_pd(dn, lcd_n)))),
-      taken);
-  bx = _mm256_blendv_pd(bx, _mm256_sub_pd(bx, _mm256_mul_pd(load(g.inverse_mass_an[0]), fx)), taken);
-  by = _mm256_blendv_pd(by, _mm256_sub_pd(by, _mm256_mul_pd(load(g.inverse_mass_an[1]), fy)), taken);
-  const __m256d bw_new = _mm256_blendv_pd(
-      bw,
-      _mm256_sub_pd(bw, _mm256_mul_pd(load(g.inverse_mass_an[2]),
-                                      _mm256_add_pd(_mm256_mul_pd(dt, lan_t), _mm256_mul_pd(dn, lan_n)))),
-      taken);
+  inject_lanes<true>(a, g.inverse_mass_cd, fx, fy, dt, dn, lcd_t, lcd_n, taken);
+  inject_lanes<false>(b, g.inverse_mass_an, fx, fy, dt, dn, lan_t, lan_n, taken);
   // Candidates first, as the scalar update writes its candidate before its antagonist: a body that
   // no update moves (inverse mass 0) may be an antagonist of several lanes, each writing it unchanged.
-  store_pairs(ax, ay, a0, a1, a2, a3);
-  store_singles(aw_new, a0 + 2, a1 + 2, a2 + 2, a3 + 2);
-  store_pairs(bx, by, b0, b1, b2, b3);
-  store_singles(bw_new, b0 + 2, b1 + 2, b2 + 2, b3 + 2);
+  store_bodies(a);
+  store_bodies(b);
 
   store_pairs(rt, rn, &s0->rt, &s1->rt, &s2->rt, &s3->rt);
   // restart_if(r != 0), -0 counting as zero; the lanes not taken have their reaction, and restart
