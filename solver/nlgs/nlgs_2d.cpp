@@ -381,8 +381,8 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
   // Kept from call to call, as the sweep arrays: a small scene's step would otherwise allocate them.
   thread_local std::vector<SweepSegment> segments;
   thread_local std::vector<std::uint32_t> scalar_positions;
-  thread_local std::vector<std::uint32_t>
-      pending_stamp;  // by body: the pending group's serial while it holds it
+  // By body: the serial of the pending group while it holds the body.
+  thread_local std::vector<std::uint32_t> pending_stamp;
   auto form_groups = [&] {
     groups.clear();
     segments.clear();
@@ -640,11 +640,12 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     for (int block = 0; block < options.gs_it2; ++block) {
       const auto sweeps_start = std::chrono::steady_clock::now();
       if (options.quick_scramble) scramble_order();
-      // Where less than a quarter of the updates form groups, the plain loop: the segment lists'
-      // indirection costs the others more than the groups save (BridgePL_GroundJC, whose contacts all
-      // have law terms, 1200 steps: 0.17 -> 0.19 s; the 64k-disk layer, a tenth of its contacts
-      // loaded: sweeps 31-34 -> 40-51 ms per step). Only loaded contacts form groups: with fewer
-      // than a quarter loaded, none are formed.
+      // Where less than a quarter of the updates form groups, the plain loop: forming the groups (a
+      // pass over every contact's record) and running the others through the segment lists cost more
+      // than the groups save (BridgePL_GroundJC, whose contacts all have law terms, 1200 steps: 0.17
+      // -> 0.19 s; the 64k-disk layer, a tenth of its contacts loaded: sweeps 31-34 -> 40-51 ms per
+      // step, groups then formed level by level). Only loaded contacts form groups: with fewer than a
+      // quarter loaded, none are formed.
       grouped = false;
       if (use_groups && 4 * loaded >= count) {
         form_groups();
