@@ -477,11 +477,14 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     // The update at execution position `index`.
     auto update = [&](std::size_t index) __attribute__((always_inline)) {
       ContactReaction2D& s = sweep_reaction[index];
-      const bool without_reaction = s.rt == 0.0 && s.rn == 0.0;
       // A contact without reaction that this sweep passes by is decided on its reaction record alone:
       // in a packing most contacts are open, and reading their sweep record as well made the
       // sweeps of large scenes stream nearly five times the memory (the post pass never skips).
-      if (!post && without_reaction && s.visits.skip(sweep_number)) return;
+      // Only a contact without reaction has its next solve ahead of the sweep (a reaction restarts
+      // the schedule, next = 0), so `next` alone decides, before the reaction is compared with zero.
+      if (!post && s.visits.passes_by(sweep_number)) return;
+      const bool without_reaction = s.rt == 0.0 && s.rn == 0.0;
+      if (!post && without_reaction) s.visits.count_solve(sweep_number);
       const SweepContact2D& c = sweep_hot[index];
       if (!post && without_reaction && c.law_terms == SweepContact2D::plain) {
         // A plain contact without reaction stays without one while u_n + cov_n >= 0 (its local solve

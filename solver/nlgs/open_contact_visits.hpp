@@ -24,9 +24,13 @@ struct OpenContactSchedule {
   // Called for a contact without reaction at sweep `sweep`: true when this sweep passes it by.
   bool skip(std::int32_t sweep) {
     if (sweep < next) return true;
+    count_solve(sweep);
+    return false;
+  }
+  // A contact without reaction solved at `sweep` (not passed by): its next solve is further off.
+  void count_solve(std::int32_t sweep) {
     ++threshold;
     next = sweep + threshold;
-    return false;
   }
   // The next sweep solves the contact.
   void restart() {
