@@ -1,8 +1,9 @@
 #pragma once
-// Four plain Signorini–Coulomb updates of one wavefront level at once, one per lane of a 256-bit
-// vector (AVX2, chosen at run time). The updates of a level share no movable body
-// (sweep_wavefront.hpp), so running them side by side gives each the velocities it would have read
-// in turn: the reactions and velocities are the scalar sweep's bit for bit. Each lane computes the
+// Four plain Signorini–Coulomb updates at once, one per lane of a 256-bit vector (AVX2, chosen at
+// run time). The four share no movable body (nlgs_2d.cpp forms them in the wavefront order of
+// sweep_wavefront.hpp, whose levels share none), so running them side by side gives each the
+// velocities it would have read in turn: the reactions and velocities are the scalar sweep's bit
+// for bit. Each lane computes the
 // scalar formulas of nlgs_2d.cpp in the same order (no fused multiply-add: the kernel is compiled for
 // AVX2 alone), and a lane that cannot take the plain path is left to the scalar update. The scalar
 // sweep spends about 175 instructions per update and is bound by what it executes; siloDK_hoperJC's
