@@ -649,10 +649,11 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
       // -> 0.19 s; the 64k-disk layer, a tenth of its contacts loaded: sweeps 31-34 -> 40-51 ms per
       // step, groups then formed level by level). Only loaded contacts form groups: with fewer than a
       // quarter loaded, none are formed.
+      constexpr std::size_t quarter = 4;  // share of the updates below which the plain loop runs
       grouped = false;
-      if (use_groups && 4 * loaded >= count) {
+      if (use_groups && quarter * loaded >= count) {
         form_groups();
-        grouped = 4 * groups.size() * 4 >= count;
+        grouped = quarter * (4 * groups.size()) >= count;
       }
       for (int i = 0; i < options.gs_it1; ++i) sweep(std::false_type{});
       result.sweep_seconds +=

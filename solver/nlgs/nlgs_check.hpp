@@ -18,10 +18,10 @@ struct NlgsOptions {
   int gs_it1 = 50;   // sweeps between two convergence checks
   int gs_it2 = 500;  // maximum number of checks
   bool quick_scramble = false;
+  std::uint64_t scramble_seed = 1;  // quick_scramble.hpp
   // 2D: plain updates four at a time where the processor has AVX2 (sweep_group_2d.hpp), the same
   // iterates bit for bit; false runs every update alone (tests compare both).
   bool vector_sweeps = true;
-  std::uint64_t scramble_seed = 1;  // quick_scramble.hpp
   // 3D: nlgs_3D_DiagonalResolution — each contact solved with the diagonal of its block only (its
   // own off-diagonal couplings kept at the previous iterate), then projected on the Coulomb cone.
   bool diagonal_resolution = false;

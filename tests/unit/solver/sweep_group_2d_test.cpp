@@ -61,6 +61,7 @@ bool same_bits(const Vector3d& a, const Vector3d& b) {
 TEST(SweepGroup2D, EveryLaneOfAPlainGroupIsTakenAndStopsItsDisk) {
   if (!sweep_groups_available()) GTEST_SKIP() << "no AVX2 on this processor: every update runs alone";
   Fixture f;
+  for (ContactReaction2D& s : f.reaction) s.visits = OpenContactSchedule{9, 4};  // to be restarted
   ASSERT_EQ(f.run(), 0xF);
   for (std::size_t k = 0; k < 4; ++k) {
     // Stick: the disk's normal velocity reaches zero; the impulse takes its free momentum (m = 1:
@@ -69,6 +70,7 @@ TEST(SweepGroup2D, EveryLaneOfAPlainGroupIsTakenAndStopsItsDisk) {
     EXPECT_NEAR(f.reaction[k].rn, 1.01, 1e-15);
     EXPECT_EQ(f.reaction[k].rt, 0.0);
     EXPECT_EQ(f.reaction[k].visits.next, 0);  // restarted: it has a reaction
+    EXPECT_EQ(f.reaction[k].visits.threshold, 1);
   }
 }
 
