@@ -1,6 +1,6 @@
 #pragma once
 // Detection's interactions in LMGC90's order (numerics.md §4 step 2: family by family, then by
-// candidate), 2D and 3D. Sorted through 24-byte keys: an interaction is 384 (2D) or 624 (3D) bytes,
+// candidate), 2D and 3D. Sorted through 24-byte keys: an interaction is 256 (2D) or 504 (3D) bytes,
 // and comparing or moving whole records in a sort was an eighth of a 64k-disk step and more than
 // the fine detection of a 64k-sphere one. Equal keys keep their detection order.
 #include <algorithm>

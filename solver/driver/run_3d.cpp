@@ -44,7 +44,10 @@ RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D&
   state.h = options.dt;
   state.theta = options.theta;
   state.scramble = QuickScramble(options.nlgs.scramble_seed);
-  if (outputs.warm_start) store_interactions(state, warm_start_3d(*outputs.warm_start, scene, options.dt));
+  if (outputs.warm_start) {
+    const WarmStart3D warm = warm_start_3d(*outputs.warm_start, scene, options.dt);
+    store_interactions(state, warm.interactions, warm.law_states);
+  }
 
   Postpro3D postpro;
   if (!outputs.postpro.empty() && !postpro.open(outputs.case_dir / "POSTPRO", outputs.postpro, summary.error))

@@ -52,7 +52,7 @@ std::string_view seen_as(const std::string& type) {
 constexpr std::size_t kPrefetchDistance = 32;
 
 // Asks for the cache lines a sweep's local solve reads of an interaction: its first 376 bytes (up to
-// r), seven lines at most as records of 624 bytes fall.
+// r), seven lines at most as records of 504 bytes fall.
 void prefetch_interaction(const Interaction3D& c) {
   const char* bytes = reinterpret_cast<const char*>(&c);
   for (std::size_t offset = 0; offset <= 384; offset += 64) __builtin_prefetch(bytes + offset);
@@ -494,11 +494,9 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     c.law = scene.visibility[static_cast<std::size_t>(d.visibility)].law;
     c.visibility = d.visibility;
     c.vertex = d.vertex;
-    c.surface = d.surface;
     c.frame = d.frame;
     c.point = d.point;
     c.gap_begin = d.gap;
-    c.reference_gap = d.reference_gap;
     for (int side = 0; side < 2; ++side) {
       const auto body = static_cast<std::size_t>(side == 0 ? cd.body : an.body);
       // PTPT3 (only the links above make its points): about the contactors' (wrapped) centres.
@@ -525,13 +523,28 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
                      std::uint64_t(std::uint32_t(d.antagonist)) << 32};
   });
   state.contacts.clear();
+  state.law_states.clear();
   // With room to grow: a packing that gains a few contacts would otherwise take a new buffer, which
-  // the kernel zeroes page by page as it is first written (64k spheres: 120 MB).
+  // the kernel zeroes page by page as it is first written (64k spheres: 100 MB).
   if (found.size() > state.contacts.capacity()) state.contacts.reserve(found.size() + found.size() / 8);
+  const bool keeps_law_state = scene_keeps_law_state_3d(scene);
+  const auto append = [&](const DetectedPoint3D& d) {
+    state.contacts.push_back(interaction_of(d));
+    if (!keeps_law_state) return;
+    LawState3D& law_state = state.law_states.emplace_back();
+    law_state.surface = d.surface;
+    law_state.reference_gap = d.reference_gap;
+  };
   if (order.empty())
-    for (const DetectedPoint3D& d : found) state.contacts.push_back(interaction_of(d));
+    for (const DetectedPoint3D& d : found) append(d);
   else
-    for (const std::uint32_t k : order) state.contacts.push_back(interaction_of(found[k]));
+    for (const std::uint32_t k : order) append(found[k]);
+}
+
+bool scene_keeps_law_state_3d(const Scene3D& scene) {
+  for (const Visibility3D& v : scene.visibility)
+    if (keeps_law_state_3d(scene.laws[static_cast<std::size_t>(v.law)].law)) return true;
+  return false;
 }
 
 namespace {
@@ -551,9 +564,9 @@ struct StoredListBuilder {
   explicit StoredListBuilder(LargeArray<StoredInteraction3D>& list) : stored(list) {
     stored.clear();  // keeps its buffer
   }
-  void append(const Interaction3D& c) {
+  void append(const Interaction3D& c, const LawState3D* law_state) {
     if (!stored.empty() && recup_key(c) < recup_key(stored.back())) sorted = false;
-    stored.emplace_back(c);
+    stored.emplace_back(c, law_state);
   }
   // Sorted by key (a stable sort: equal keys keep their order) when they did not come in order.
   void finish() {
@@ -566,9 +579,11 @@ struct StoredListBuilder {
 };
 }  // namespace
 
-void store_interactions(RunState3D& state, std::span<const Interaction3D> interactions) {
+void store_interactions(RunState3D& state, std::span<const Interaction3D> interactions,
+                        std::span<const LawState3D> law_states) {
   StoredListBuilder builder(state.previous);
-  for (const Interaction3D& c : interactions) builder.append(c);
+  for (std::size_t k = 0; k < interactions.size(); ++k)
+    builder.append(interactions[k], law_states.empty() ? nullptr : &law_states[k]);
   builder.finish();
 }
 
@@ -582,7 +597,9 @@ void recup_rloc(RunState3D& state) {
   const LargeArray<StoredInteraction3D>& previous = state.previous;
   const auto key_below = [](const StoredInteraction3D& p, const auto& k) { return recup_key(p) < k; };
   auto cursor = previous.begin();  // the first entry not below the last contact's key
-  for (Interaction3D& c : state.contacts) {
+  const bool keeps_law_state = !state.law_states.empty();
+  for (std::size_t k = 0; k < state.contacts.size(); ++k) {
+    Interaction3D& c = state.contacts[k];
     const StoredInteraction3D* match = nullptr;
     const auto wanted = recup_key(c);
     if (cursor != previous.begin() && !key_below(*std::prev(cursor), wanted))
@@ -600,7 +617,7 @@ void recup_rloc(RunState3D& state) {
     }
     c.r = match->r;
     c.status_begin = match->status;
-    c.internal = match->internal;
+    if (keeps_law_state) state.law_states[k].internal = match->internal;
   }
 }
 
@@ -619,8 +636,13 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   std::vector<std::uint8_t> law_updates_at_check(scene.laws.size());
   for (std::size_t l = 0; l < scene.laws.size(); ++l)
     law_updates_at_check[l] = updates_at_check(scene.laws[l].law);
+  // Contact k's law state; in a scene whose laws keep none, one that no law reads.
+  LawState3D unused_law_state;
+  const auto law_state = [&](std::size_t k) -> LawState3D& {
+    return state.law_states.empty() ? unused_law_state : state.law_states[k];
+  };
   // Whether each contact is without reaction, beside its visits: a sweep passes most open contacts
-  // by on these 12 bytes without reading their 624-byte interaction (open_contact_visits.hpp). In a
+  // by on these 12 bytes without reading their 504-byte interaction (open_contact_visits.hpp). In a
   // 64k-sphere box 98% of the contacts are open, and each pass-by read two cache lines of it.
   struct OpenContact {
     OpenContactSchedule visits;
@@ -633,7 +655,8 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   for (std::size_t k = 0; k < contacts.size(); ++k) {
     Interaction3D& c = contacts[k];
     // Each law's derived problem (its own file, solver/laws/*.hpp).
-    if (!prepare_law(scene.laws[static_cast<std::size_t>(c.law)].law, c, law_step)) c.inactive = true;
+    if (!prepare_law(scene.laws[static_cast<std::size_t>(c.law)].law, c, law_state(k), law_step))
+      c.inactive = true;
     if (c.inactive) c.r.setZero();
     const Vector3d q = local_velocity(c, b.velocity_free) + c.covfree;
     if (!c.inactive) q_squared += q.squaredNorm();
@@ -680,7 +703,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
     // the resolution (LMGC90's diagonal variants of these are not reproduced).
     if (c.form != LocalForm3D::coulomb) {
       q_local = local_velocity(c, V) - c.W * c.r + c.covfree;
-      return solve_law_form_3d(c, q_local, c.r, local_tolerance);
+      return solve_law_form_3d(c, law_state(k), q_local, c.r, local_tolerance);
     }
     // The others' contribution and the free velocity, plus the cohesion term −c h W e_n.
     const Vector3d correction(0.0, c.correction, 0.0);
@@ -780,7 +803,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
       const Vector3d r_check = local_solve(k, q_local, 0.0);
       // Laws that re-evaluate their state at a check do it with the velocity of this solution.
       if (law_updates_at_check[static_cast<std::size_t>(c.law)])
-        update_law_at_check(scene.laws[static_cast<std::size_t>(c.law)].law, c,
+        update_law_at_check(scene.laws[static_cast<std::size_t>(c.law)].law, c, law_state(k),
                             local_velocity(c, V) + c.W * (r_check - c.r), law_step);
       const Vector3d mean_r = 0.5 * (c.r + r_check);
       const Vector3d dv = c.W * (c.r - r_check);
@@ -811,7 +834,8 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   // statuses, and the natural-map residual of the local problems (fc3d/FORMAT.md §3) in the auxiliary
   // variables u + covfree.
   double residual_squared = 0.0;
-  for (Interaction3D& c : contacts) {
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    Interaction3D& c = contacts[k];
     if (!c.inactive && !c.r.isZero(0.0)) add_impulse(c, c.r, b.impulse);
     c.u = local_velocity(c, V);
     if (c.inactive) {
@@ -821,8 +845,8 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
     if (c.r.squaredNorm() > 0.0) ++result.active;
     if (c.form != LocalForm3D::coulomb) {
       const Vector3d uu = c.u + c.covfree;
-      c.status = law_form_status_3d(c, c.r, uu);
-      residual_squared += law_form_residual_3d(c, c.r, uu).squaredNorm();
+      c.status = law_form_status_3d(c, law_state(k), c.r, uu);
+      residual_squared += law_form_residual_3d(c, law_state(k), c.r, uu).squaredNorm();
     } else {
       const Vector3d rr = cohesion_free(c, c.r);
       c.status = status_of(rr, c.mu);
@@ -830,7 +854,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
       uu(1) += c.normal_compliance * rr(1);  // ELASTIC_REPELL_CLB's WW (0 for the other laws)
       residual_squared += natural_map_3d(swap_normal_first(rr), swap_normal_first(uu), c.mu).squaredNorm();
     }
-    finish_law(scene.laws[static_cast<std::size_t>(c.law)].law, c, law_step);
+    finish_law(scene.laws[static_cast<std::size_t>(c.law)].law, c, law_state(k), law_step);
   }
   result.residual_absolute = std::sqrt(residual_squared);
   result.residual_relative = result.free_velocity_norm > 0.0
@@ -864,9 +888,11 @@ void update_step(Scene3D& scene, RunState3D& state) {
     b.frame_initial[i] = b.frame[i];
   }
   StoredListBuilder builder(state.previous);
-  for (Interaction3D& c : state.contacts) {
+  const bool keeps_law_state = !state.law_states.empty();
+  for (std::size_t k = 0; k < state.contacts.size(); ++k) {
+    Interaction3D& c = state.contacts[k];
     c.status_begin = c.status;
-    builder.append(c);
+    builder.append(c, keeps_law_state ? &state.law_states[k] : nullptr);
   }
   builder.finish();
 }

@@ -17,6 +17,9 @@ struct RunState3D {
   double h = 1e-3;
   double theta = 0.5;
   LargeArray<Interaction3D> contacts;
+  // The interactions' law states, index for index; empty in a scene whose laws keep none
+  // (keeps_law_state_3d).
+  LargeArray<LawState3D> law_states;
   LargeArray<StoredInteraction3D> previous;  // last step's, by recup_rloc's key (store_interactions)
   // Detection's points before sorting, kept from step to step for its memory: a list built afresh took
   // new pages from the system at every step on large scenes (64k spheres: 9-12% of a step in kernel
@@ -35,8 +38,12 @@ void compute_free_velocity(Scene3D& scene, const RunState3D& state);
 void select_prox_tactors(Scene3D& scene, RunState3D& state);
 void recup_rloc(RunState3D& state);
 // The verlet list the next recup_rloc reads: `interactions` stored by pair (family, candidate,
-// antagonist), equal pairs in their order (a step's interactions are already in that order).
-void store_interactions(RunState3D& state, std::span<const Interaction3D> interactions);
+// antagonist), equal pairs in their order (a step's interactions are already in that order), with the
+// internals of `law_states` (index for index, or empty: internals 0).
+void store_interactions(RunState3D& state, std::span<const Interaction3D> interactions,
+                        std::span<const LawState3D> law_states);
+// Whether a law of the scene's visibility rows keeps a LawState3D per interaction.
+bool scene_keeps_law_state_3d(const Scene3D& scene);
 // NLGS in LMGC90's Exchange_Local_Global form: every local solve sees the bodies' current velocities
 // and injects its impulse increment at once (numerics.md §3).
 NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& options);

@@ -164,11 +164,13 @@ grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& 
       const grammar::LawKind* law_kind = grammar::find_law_kind(law_keyword(law.law));
       const int internals = law_kind ? law_kind->internals_3d.count : 0;
       if (internals > 0) {
+        // A scene whose laws keep no state has no internals to write but zeros.
+        const LawState3D none;
+        const auto& internal = (state.law_states.empty() ? none : state.law_states[members[m]]).internal;
         std::vector<Real> values;
         for (int k = 0; k < internals; ++k)
-          values.push_back(Real{static_cast<std::size_t>(k) < c.internal.size()
-                                    ? c.internal[static_cast<std::size_t>(k)]
-                                    : 0.0});
+          values.push_back(Real{
+              static_cast<std::size_t>(k) < internal.size() ? internal[static_cast<std::size_t>(k)] : 0.0});
         out.internal_comment = grammar::internal_variables_comment(law_kind->internals_3d);
         out.internal_lines.push_back(std::move(values));
       }
@@ -178,12 +180,12 @@ grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& 
   return file;
 }
 
-std::vector<Interaction3D> warm_start_3d(const grammar::VlocRlocFile& file, const Scene3D& scene, double h) {
+WarmStart3D warm_start_3d(const grammar::VlocRlocFile& file, const Scene3D& scene, double h) {
   // Contactor index by (body number, contactor rank).
   std::map<std::pair<std::int64_t, std::int64_t>, std::int32_t> by_rank;
   for (std::size_t k = 0; k < scene.contactors.size(); ++k)
     by_rank[{scene.contactors[k].body + 1, scene.contactors[k].rank}] = static_cast<std::int32_t>(k);
-  std::vector<Interaction3D> previous;
+  std::vector<std::pair<Interaction3D, LawState3D>> previous;
   for (const auto& b : file.interactions) {
     PairFamily3D family;
     if (!family_of_name(b.type.value, family)) continue;
@@ -229,24 +231,31 @@ std::vector<Interaction3D> warm_start_3d(const grammar::VlocRlocFile& file, cons
         (c.point - scene.bodies.reference[body] - scene.bodies.displacement_begin[body].head<3>());
     if (!b.words.empty()) status_from_name(b.words.back().value, c.status);
     c.status_begin = c.status;
+    LawState3D law_state;
     std::size_t k = 0;
     for (const auto& line : b.internal_lines)
       for (const auto& v : line)
-        if (k < c.internal.size()) c.internal[k++] = v.value;
-    previous.push_back(c);
+        if (k < law_state.internal.size()) law_state.internal[k++] = v.value;
+    previous.emplace_back(c, law_state);
   }
-  std::stable_sort(previous.begin(), previous.end(), [](const Interaction3D& a, const Interaction3D& b) {
+  std::stable_sort(previous.begin(), previous.end(), [](const auto& x, const auto& y) {
+    const Interaction3D &a = x.first, &b = y.first;
     return std::tie(a.family, a.candidate, a.antagonist) < std::tie(b.family, b.candidate, b.antagonist);
   });
   // Two PTPT3 links of one pair (directly and across a period) are told apart by their rank among
   // the pair's links, as detection numbers them (PointLink3D::pair_rank).
-  for (std::size_t k = 1; k < previous.size(); ++k) {
-    const Interaction3D &a = previous[k - 1], &c = previous[k];
-    if (c.family == PairFamily3D::PTPT3 && a.family == c.family && a.candidate == c.candidate &&
-        a.antagonist == c.antagonist)
-      previous[k].vertex = a.vertex + 1;
+  WarmStart3D warm;
+  for (auto& [c, law_state] : previous) {
+    if (!warm.interactions.empty()) {
+      const Interaction3D& a = warm.interactions.back();
+      if (c.family == PairFamily3D::PTPT3 && a.family == c.family && a.candidate == c.candidate &&
+          a.antagonist == c.antagonist)
+        c.vertex = a.vertex + 1;
+    }
+    warm.interactions.push_back(c);
+    warm.law_states.push_back(law_state);
   }
-  return previous;
+  return warm;
 }
 
 }  // namespace lmgc::solver

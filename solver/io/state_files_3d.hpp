@@ -26,7 +26,12 @@ grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& 
 // (warm start): reactions (rl/H × h, stored (t, n, s)), relative velocities, statuses and internal
 // variables, matched to the scene's contactors by (body number, contactor rank). Interactions
 // naming contactors that do not exist (or of another shape) are skipped, as LMGC90 does. Sorted
-// as select_prox_tactors sorts its contacts (family, candidate, antagonist).
-std::vector<Interaction3D> warm_start_3d(const grammar::VlocRlocFile& file, const Scene3D& scene, double h);
+// as select_prox_tactors sorts its contacts (family, candidate, antagonist). The internals are in
+// `law_states`, index for index.
+struct WarmStart3D {
+  std::vector<Interaction3D> interactions;
+  std::vector<LawState3D> law_states;
+};
+WarmStart3D warm_start_3d(const grammar::VlocRlocFile& file, const Scene3D& scene, double h);
 
 }  // namespace lmgc::solver

@@ -3,17 +3,37 @@
 #include <concepts>
 #include <utility>
 
+#include "grammar/tact_behav/law_catalogue.hpp"
+
 namespace lmgc::solver {
 namespace {
 
+// A 3D law's functions take the interaction's LawState3D after it when the law keeps or reads one.
 template <class Law>
-concept HasForm3D = requires(const Law& law, Interaction3D& c, const LawStep& step) {
+concept PreparesWithState3D = requires(const Law& law, Interaction3D& c, LawState3D& s, const LawStep& step) {
+  prepare(law, c, s, step);
+};
+
+template <class Law>
+concept HasForm3D = PreparesWithState3D<Law> ||
+    requires(const Law& law, Interaction3D& c, const LawStep& step) {
   prepare(law, c, step);
 };
 
 template <class Law>
-concept UpdatesAtCheck3D = requires(const Law& law, Interaction3D& c, const Eigen::Vector3d& u,
-                                    const LawStep& step) {
+concept FinishesWithState3D = requires(const Law& law, Interaction3D& c, LawState3D& s, const LawStep& step) {
+  finish(law, c, s, step);
+};
+
+template <class Law>
+concept UpdatesAtCheckWithState3D = requires(const Law& law, Interaction3D& c, LawState3D& s,
+                                             const Eigen::Vector3d& u, const LawStep& step) {
+  { update_at_check(law, c, s, u, step) } -> std::same_as<bool>;
+};
+
+template <class Law>
+concept UpdatesAtCheck3D = UpdatesAtCheckWithState3D<Law> ||
+    requires(const Law& law, Interaction3D& c, const Eigen::Vector3d& u, const LawStep& step) {
   { update_at_check(law, c, u, step) } -> std::same_as<bool>;
 };
 
@@ -80,19 +100,35 @@ bool provided_in_3d(const ContactLaw& law) {
   return std::visit([](const auto& p) { return HasForm3D<std::decay_t<decltype(p)>>; }, law);
 }
 
-bool prepare_law(const ContactLaw& law, Interaction3D& c, const LawStep& step) {
+bool keeps_law_state_3d(const ContactLaw& law) {
+  const bool in_code = std::visit(
+      [](const auto& p) {
+        using Law = std::decay_t<decltype(p)>;
+        return PreparesWithState3D<Law> || FinishesWithState3D<Law> || UpdatesAtCheckWithState3D<Law>;
+      },
+      law);
+  // A law whose 3D internals LMGC90 writes keeps them from a Vloc_Rloc.INI to the outputs even where
+  // no code of ours reads them.
+  const grammar::LawKind* kind = grammar::find_law_kind(law_keyword(law));
+  return in_code || (kind && kind->internals_3d.count > 0);
+}
+
+bool prepare_law(const ContactLaw& law, Interaction3D& c, LawState3D& state, const LawStep& step) {
   c.covfree.setZero();
   c.inactive = false;
   c.correction = 0.0;
   c.correction_needs_contact = false;
   c.form = LocalForm3D::coulomb;
   c.normal_compliance = 0.0;
-  // cohesive_slope and cohesive_shift are not reset: only the cohesive form reads them, and the law
-  // that sets that form writes both (iqs_mac_czm.hpp). They sit at the end of the 624-byte record,
-  // which the set-up of a 64k-sphere step otherwise does not touch.
+  // The law state's cohesive_slope and cohesive_shift are not reset: only the cohesive form reads
+  // them, and the law that sets that form writes both (iqs_mac_czm.hpp).
   return std::visit(
       [&](const auto& p) {
-        if constexpr (HasForm3D<std::decay_t<decltype(p)>>) {
+        using Law = std::decay_t<decltype(p)>;
+        if constexpr (PreparesWithState3D<Law>) {
+          prepare(p, c, state, step);
+          return true;
+        } else if constexpr (HasForm3D<Law>) {
           prepare(p, c, step);
           return true;
         } else {
@@ -123,11 +159,14 @@ bool update_law_at_check(const ContactLaw& law, LocalProblem2D& c, const Eigen::
       law);
 }
 
-bool update_law_at_check(const ContactLaw& law, Interaction3D& c, const Eigen::Vector3d& u,
+bool update_law_at_check(const ContactLaw& law, Interaction3D& c, LawState3D& state, const Eigen::Vector3d& u,
                          const LawStep& step) {
   return std::visit(
       [&](const auto& p) {
-        if constexpr (UpdatesAtCheck3D<std::decay_t<decltype(p)>>)
+        using Law = std::decay_t<decltype(p)>;
+        if constexpr (UpdatesAtCheckWithState3D<Law>)
+          return update_at_check(p, c, state, u, step);
+        else if constexpr (UpdatesAtCheck3D<Law>)
           return update_at_check(p, c, u, step);
         else
           return false;
@@ -135,8 +174,15 @@ bool update_law_at_check(const ContactLaw& law, Interaction3D& c, const Eigen::V
       law);
 }
 
-void finish_law(const ContactLaw& law, Interaction3D& c, const LawStep& step) {
-  std::visit([&](const auto& p) { finish(p, c, step); }, law);
+void finish_law(const ContactLaw& law, Interaction3D& c, LawState3D& state, const LawStep& step) {
+  std::visit(
+      [&](const auto& p) {
+        if constexpr (FinishesWithState3D<std::decay_t<decltype(p)>>)
+          finish(p, c, state, step);
+        else
+          finish(p, c, step);
+      },
+      law);
 }
 
 }  // namespace lmgc::solver

@@ -48,17 +48,19 @@ void prepare_law(const ContactLaw& law, LocalProblem2D& c, const LawStep& step);
 void finish_law(const ContactLaw& law, Interaction2D& c, const LawStep& step);
 
 // 3D: the same; prepare resets c.covfree, c.inactive, c.correction first and returns false for a
-// law that has no 3D form.
+// law that has no 3D form. `state` is the interaction's LawState3D; a law for which
+// keeps_law_state_3d is false never reads or writes it.
 bool provided_in_3d(const ContactLaw& law);
-bool prepare_law(const ContactLaw& law, Interaction3D& c, const LawStep& step);
-void finish_law(const ContactLaw& law, Interaction3D& c, const LawStep& step);
+bool keeps_law_state_3d(const ContactLaw& law);
+bool prepare_law(const ContactLaw& law, Interaction3D& c, LawState3D& state, const LawStep& step);
+void finish_law(const ContactLaw& law, Interaction3D& c, LawState3D& state, const LawStep& step);
 // Whether the law changes its local problem at the step's convergence checks (LMGC90's
 // updt_*(.false.) in solve_nlgs i_check: IQS_MAC_CZM's β), and that update in 2D and 3D, from the
 // velocity u of the check's local solution. True when the contact's local problem changed.
 bool updates_at_check(const ContactLaw& law);
 bool update_law_at_check(const ContactLaw& law, LocalProblem2D& c, const Eigen::Vector2d& u,
                          const LawStep& step);
-bool update_law_at_check(const ContactLaw& law, Interaction3D& c, const Eigen::Vector3d& u,
+bool update_law_at_check(const ContactLaw& law, Interaction3D& c, LawState3D& state, const Eigen::Vector3d& u,
                          const LawStep& step);
 
 }  // namespace lmgc::solver

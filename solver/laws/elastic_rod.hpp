@@ -12,8 +12,8 @@ struct ElasticRod {
   double force_per_strain, prestrain;
 };
 
-inline void prepare(const ElasticRod& law, Interaction3D& c, const LawStep& step) {
-  spring_form(c, law.force_per_strain, law.prestrain, step.h, LocalForm3D::rod);
+inline void prepare(const ElasticRod& law, Interaction3D& c, LawState3D& s, const LawStep& step) {
+  spring_form(c, s, law.force_per_strain, law.prestrain, step.h, LocalForm3D::rod);
 }
 
 }  // namespace lmgc::solver

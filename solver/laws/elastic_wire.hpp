@@ -13,8 +13,8 @@ struct ElasticWire {
   double force_per_strain, prestrain;
 };
 
-inline void prepare(const ElasticWire& law, Interaction3D& c, const LawStep& step) {
-  spring_form(c, law.force_per_strain, law.prestrain, step.h, LocalForm3D::wire);
+inline void prepare(const ElasticWire& law, Interaction3D& c, LawState3D& s, const LawStep& step) {
+  spring_form(c, s, law.force_per_strain, law.prestrain, step.h, LocalForm3D::wire);
 }
 
 }  // namespace lmgc::solver

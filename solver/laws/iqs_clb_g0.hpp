@@ -14,11 +14,19 @@ struct IqsClbG0 {
 
 // g_ref = (γ)+ at the run's first preparation (mod_nlgs / mod_nlgs_3D prep, `.not. is_initialized`);
 // contacts created later keep g_ref = 0, i.e. plain IQS_CLB.
+// The reference gap g_ref is the law's internal variable: in 2D in the interaction, in 3D in its
+// law state.
 template <class Interaction>
-void prepare(const IqsClbG0& law, Interaction& c, const LawStep& step) {
-  if (step.first_preparation) c.internal[0] = positive(c.gap_begin);
-  c.covfree(1) = positive(c.gap_begin - c.internal[0]) / step.h;
+void prepare_from_reference(const IqsClbG0& law, Interaction& c, double& reference_gap, const LawStep& step) {
+  if (step.first_preparation) reference_gap = positive(c.gap_begin);
+  c.covfree(1) = positive(c.gap_begin - reference_gap) / step.h;
   c.mu = law.sfric;
+}
+inline void prepare(const IqsClbG0& law, LocalProblem2D& c, const LawStep& step) {
+  prepare_from_reference(law, c, c.internal[0], step);
+}
+inline void prepare(const IqsClbG0& law, Interaction3D& c, LawState3D& s, const LawStep& step) {
+  prepare_from_reference(law, c, s.internal[0], step);
 }
 
 }  // namespace lmgc::solver

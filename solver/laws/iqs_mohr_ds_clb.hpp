@@ -30,12 +30,12 @@ inline void prepare(const IqsMohrDsClb& law, LocalProblem2D& c, const LawStep& s
   }
 }
 
-inline void prepare(const IqsMohrDsClb& law, Interaction3D& c, const LawStep& step) {
+inline void prepare(const IqsMohrDsClb& law, Interaction3D& c, const LawState3D& s, const LawStep& step) {
   if (step.first_step && c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Mstck;
   iqs_form(c, step.h);
   c.correction_needs_contact = true;
   if (c.status_begin == ContactStatus::Mstck) {
-    c.correction = -law.cohen * c.surface * step.h;
+    c.correction = -law.cohen * s.surface * step.h;
     c.mu = law.cohesive_friction();
   } else {
     c.mu = static_dynamic(law.dfric, law.sfric, c.status_begin);

@@ -71,16 +71,16 @@ inline void add_cohesion(LocalProblem2D& c, double cohesion, double h) {
 // uu_n = u_n + covfree_n, covfree_n = (γ_begin − (1 + prstr) gapREF)/h (mod_nlgs_3D prep :1700-1728).
 // No link without a reference length (LMGC90 stops there; build_scene_3d refuses rods and wires on
 // pairs other than PTPT3, the only 3D family that sets it).
-inline void spring_form(Interaction3D& c, double force_per_strain, double prestrain, double h,
+inline void spring_form(Interaction3D& c, LawState3D& s, double force_per_strain, double prestrain, double h,
                         LocalForm3D form) {
-  c.internal[0] = c.reference_gap;
-  if (c.reference_gap <= 1e-18 || force_per_strain <= 0.0) {
+  s.internal[0] = s.reference_gap;
+  if (s.reference_gap <= 1e-18 || force_per_strain <= 0.0) {
     c.inactive = true;
     return;
   }
   c.form = form;
-  c.normal_compliance = c.reference_gap / (force_per_strain * h * h);
-  c.covfree(1) = (c.gap_begin - (1.0 + prestrain) * c.reference_gap) / h;
+  c.normal_compliance = s.reference_gap / (force_per_strain * h * h);
+  c.covfree(1) = (c.gap_begin - (1.0 + prestrain) * s.reference_gap) / h;
   c.mu = 0.0;
 }
 

@@ -114,15 +114,14 @@ struct Interaction3D {
   Eigen::Vector3d r = Eigen::Vector3d::Zero();  // impulse over the step (t, n, s)
 
   // What the warm start exchanges with the stored list (recup_rloc, store_interactions) follows r,
-  // together: at 64k spheres both passes stream every interaction from memory, and these fields,
-  // spread over six of a record's cache lines before, now take three.
+  // together: at 64k spheres both passes stream every interaction from memory. The law's internals
+  // are in its LawState3D (below).
   PairFamily3D family = PairFamily3D::SPSPx;
   ContactStatus status = ContactStatus::nknow;
   ContactStatus status_begin = ContactStatus::nknow;
   std::int32_t candidate = 0, antagonist = 0;  // contactor ids
   // PRPLx: the candidate vertex (1-based, Vloc_Rloc's CDVER); PRPRx: 0. Warm start key of PRPLx.
   std::int32_t vertex = 0;
-  std::array<double, 6> internal{};
   // The contact point about the candidate's centre in its frame: PRPRx's warm-start key
   // (recup_rloc_PRPRx matches points closer than 1e-3).
   Eigen::Vector3d candidate_point = Eigen::Vector3d::Zero();
@@ -132,6 +131,15 @@ struct Interaction3D {
   double gap_begin = 0.0;
   Eigen::Vector3d velocity_begin = Eigen::Vector3d::Zero();  // local (t, n, s) at t_begin
   Eigen::Vector3d u = Eigen::Vector3d::Zero();               // relative velocity at the end of the step
+};
+static_assert(sizeof(Interaction3D) == 504);
+
+// What only some laws keep or read per interaction: their internal variables, the contact surface and
+// reference length they use, the cohesive zone's terms. Kept beside the interaction list, index for
+// index, and only in a scene with such a law (keeps_law_state_3d): each of these 120 bytes in every
+// interaction was streamed by every pass over a 64k-sphere box's list, whose law uses none of them.
+struct LawState3D {
+  std::array<double, 6> internal{};  // the law's internal variables (Vloc_Rloc's, warm started)
   // A law's value that the step's convergence checks may change before the end of the step stores
   // it (LMGC90's taz(1)): IQS_MAC_CZM's damage β.
   double law_working = 0.0;
@@ -146,7 +154,7 @@ struct Interaction3D {
 
 // A contact point as detection finds it: the pair, its visibility row, the local frame, the point
 // and gap. The interaction (levers, Delassus block, start velocity) is built from it once detection's
-// points are in sweep order, so that 624-byte records are written once and never moved.
+// points are in sweep order, so that 504-byte records are written once and never moved.
 struct DetectedPoint3D {
   PairFamily3D family = PairFamily3D::SPSPx;   // PTPT3: each lever reaches its contactor's centre
   std::int32_t candidate = 0, antagonist = 0;  // contactor ids
@@ -158,7 +166,7 @@ struct DetectedPoint3D {
 };
 
 // What the next step's warm start (recup_rloc) reads of an interaction: LMGC90's verlet list entry.
-// Kept apart from Interaction3D (624 bytes) because the whole list is stored every step.
+// Kept apart from Interaction3D (504 bytes) because the whole list is stored every step.
 struct StoredInteraction3D {
   PairFamily3D family = PairFamily3D::SPSPx;
   ContactStatus status = ContactStatus::nknow;
@@ -168,15 +176,17 @@ struct StoredInteraction3D {
   std::array<double, 6> internal{};
 
   StoredInteraction3D() = default;
-  explicit StoredInteraction3D(const Interaction3D& c)
+  // `law_state`: the interaction's, or null in a scene without law state (internals stored as 0).
+  StoredInteraction3D(const Interaction3D& c, const LawState3D* law_state)
       : family(c.family),
         status(c.status),
         candidate(c.candidate),
         antagonist(c.antagonist),
         vertex(c.vertex),
         r(c.r),
-        candidate_point(c.candidate_point),
-        internal(c.internal) {}
+        candidate_point(c.candidate_point) {
+    if (law_state) internal = law_state->internal;
+  }
 };
 
 }  // namespace lmgc::solver

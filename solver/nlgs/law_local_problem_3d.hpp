@@ -13,18 +13,20 @@ namespace lmgc::solver {
 // The reaction (t, n, s) of contact c for q = u − W r: the relative velocity with its own reaction
 // removed, plus covfree (so u + covfree = q + W r). `r_previous` starts the cohesive Newton;
 // `tolerance` is absolute on the natural map, as for solve_signorini_coulomb_3d. c.form must not be
-// coulomb.
-Eigen::Vector3d solve_law_form_3d(const Interaction3D& c, const Eigen::Vector3d& q,
-                                  const Eigen::Vector3d& r_previous, double tolerance);
+// coulomb. `law_state` is the interaction's (the cohesive form's terms), here and below.
+Eigen::Vector3d solve_law_form_3d(const Interaction3D& c, const LawState3D& law_state,
+                                  const Eigen::Vector3d& q, const Eigen::Vector3d& r_previous,
+                                  double tolerance);
 
 // The law's status for a reaction r and auxiliary velocity uu = u + covfree: rod stick; wire stick
 // in tension, vnish slack; cohesive: the Coulomb status of rr (noctc with r_n ≠ 0 counts as stick).
-ContactStatus law_form_status_3d(const Interaction3D& c, const Eigen::Vector3d& r, const Eigen::Vector3d& uu);
+ContactStatus law_form_status_3d(const Interaction3D& c, const LawState3D& law_state,
+                                 const Eigen::Vector3d& r, const Eigen::Vector3d& uu);
 
 // Natural-map residual (normal first, like natural_map_3d) of the law at (r, uu = u + covfree):
 // rod (0, uu_n + k r_n, r_t, r_s); wire min(−r_n, −(uu_n + k r_n)) on n and (r_t, r_s); cohesive the
 // Signorini–Coulomb map of (rr, uu); glued uu.
-Eigen::Vector3d law_form_residual_3d(const Interaction3D& c, const Eigen::Vector3d& r,
-                                     const Eigen::Vector3d& uu);
+Eigen::Vector3d law_form_residual_3d(const Interaction3D& c, const LawState3D& law_state,
+                                     const Eigen::Vector3d& r, const Eigen::Vector3d& uu);
 
 }  // namespace lmgc::solver

@@ -38,7 +38,10 @@ const StoredInteraction3D* first_match(std::span<const StoredInteraction3D> stor
   return nullptr;
 }
 
-RC_GTEST_PROP(RecupRloc3D, EveryContactInAnyOrderTakesTheFirstMatchingStoredEntryOfItsPair, ()) {
+// With law states (a scene whose laws keep some) the internals come with the reaction; without, the
+// stored internals are 0.
+RC_GTEST_PROP(RecupRloc3D,
+              EveryContactInAnyOrderTakesReactionAndInternalsOfTheFirstMatchingStoredEntryOfItsPair, ()) {
   RunState3D state;
   std::vector<Interaction3D> previous(*rc::gen::inRange<std::size_t>(0, 40));
   for (std::size_t k = 0; k < previous.size(); ++k) {
@@ -46,7 +49,11 @@ RC_GTEST_PROP(RecupRloc3D, EveryContactInAnyOrderTakesTheFirstMatchingStoredEntr
     previous[k].r = Vector3d(0.0, static_cast<double>(k + 1), 0.0);  // tells the entries apart
     previous[k].status = ContactStatus::stick;
   }
-  store_interactions(state, previous);
+  const bool with_law_states = *rc::gen::arbitrary<bool>();
+  std::vector<LawState3D> previous_law_states(with_law_states ? previous.size() : 0);
+  for (std::size_t k = 0; k < previous_law_states.size(); ++k)
+    previous_law_states[k].internal[2] = static_cast<double>(k + 1);
+  store_interactions(state, previous, previous_law_states);
   std::vector<Interaction3D> contacts(*rc::gen::inRange<std::size_t>(0, 40));
   for (Interaction3D& c : contacts) c = random_interaction();
   // In key order (as detection lists them), or partly out of it.
@@ -55,12 +62,18 @@ RC_GTEST_PROP(RecupRloc3D, EveryContactInAnyOrderTakesTheFirstMatchingStoredEntr
       return std::tie(a.family, a.candidate, a.antagonist) < std::tie(b.family, b.candidate, b.antagonist);
     });
   state.contacts.assign(contacts.begin(), contacts.end());
+  if (with_law_states) state.law_states.assign(contacts.size(), LawState3D{});
   recup_rloc(state);
   for (std::size_t k = 0; k < contacts.size(); ++k) {
     const StoredInteraction3D* match = first_match(state.previous, contacts[k]);
     const Interaction3D& c = state.contacts[k];
     RC_ASSERT(c.r == (match ? match->r : Vector3d::Zero()));
     RC_ASSERT(c.status_begin == (match ? ContactStatus::stick : ContactStatus::nknow));
+    const std::array<double, 6> none{};
+    if (with_law_states)
+      RC_ASSERT(state.law_states[k].internal == (match ? match->internal : none));
+    else if (match)
+      RC_ASSERT(match->internal == none);
   }
 }
 

@@ -140,6 +140,7 @@ TEST(Rigid3DAnalytic, ColumnOfTenSpheresCarriesTheWeightAboveWithEitherLocalSolv
     for (int i = 0; i < 200; ++i) step_3d(scene, state, options);
     const double mass = scene.bodies.mass[0];
     ASSERT_EQ(state.contacts.size(), 10u);
+    EXPECT_TRUE(state.law_states.empty());  // IQS_CLB keeps no law state beside the interactions
     for (const Interaction3D& c : state.contacts) {
       // Spheres above the contact: all of them for the ground, else those above the lower sphere.
       const int lower_body =
@@ -424,7 +425,8 @@ TEST(Rigid3DAnalytic, ElasticWireHoldsAHangingMassAtItsStaticElongation) {
   const Interaction3D& c = state.contacts.front();
   EXPECT_EQ(c.family, PairFamily3D::PTPT3);
   EXPECT_EQ(c.status, ContactStatus::stick);
-  EXPECT_EQ(c.internal[0], L0);                                         // gapREF
+  ASSERT_EQ(state.law_states.size(), 1u);                               // the rod keeps a law state
+  EXPECT_EQ(state.law_states.front().internal[0], L0);                  // gapREF
   EXPECT_TRUE(c.frame.row(1).transpose().isApprox(Vector3d::UnitZ()));  // from the mass to the anchor
   EXPECT_NEAR(c.r(1) / h, -s.scene.bodies.mass[static_cast<std::size_t>(s.ball)] * g, 1e-9 * m * g);
   EXPECT_NEAR(centre_of(s.scene, s.ball).z(), -L0 - delta, 1e-10);
@@ -464,7 +466,7 @@ TEST(Rigid3DAnalytic, ElasticWireAcrossAPeriodicSideHoldsTheMassAtItsStaticElong
     ASSERT_EQ(state.contacts.size(), 1u);
     const Interaction3D& c = state.contacts.front();
     EXPECT_EQ(c.status, ContactStatus::stick);
-    EXPECT_EQ(c.internal[0], L0);  // gapREF across the side
+    EXPECT_EQ(state.law_states.at(0).internal[0], L0);  // gapREF across the side
     EXPECT_TRUE(
         c.frame.row(1).transpose().isApprox(Vector3d::UnitX()));  // from the mass's image to the anchor
     EXPECT_NEAR(c.r(1) / h, -m * g, 1e-9 * m * g);
@@ -524,7 +526,7 @@ TEST(Rigid3DAnalytic, SoundCohesiveZoneHoldsASphereUnderAPlaneAtItsElasticOpenin
   for (int i = 0; i < 500; ++i) step_3d(scene, state, converged_options());
   ASSERT_EQ(state.contacts.size(), 1u);
   const Interaction3D& c = state.contacts.front();
-  EXPECT_EQ(c.internal[4], 1.0);  // β
+  EXPECT_EQ(state.law_states.at(0).internal[4], 1.0);  // β
   EXPECT_EQ(c.status, ContactStatus::Cstck);
   EXPECT_NEAR(c.r(1) / h, -m * g, 1e-6 * m * g);
   EXPECT_NEAR(centre_of(scene, ball).z(), -r - opening, 1e-10);
@@ -541,7 +543,7 @@ TEST(Rigid3DAnalytic, WeakCohesiveZoneBreaksAndLetsTheSphereFall) {
   double beta = 1.0;
   for (int i = 0; i < 200; ++i) {
     step_3d(scene, state, converged_options());
-    if (!state.contacts.empty()) beta = state.contacts.front().internal[4];
+    if (!state.contacts.empty()) beta = state.law_states.at(0).internal[4];
   }
   EXPECT_LT(beta, 1e-2);
   EXPECT_LT(centre_of(scene, ball).z(), -r - 0.95 * 0.5 * g * 0.2 * 0.2);
@@ -577,12 +579,15 @@ TEST(Rigid3DAnalytic, CohesiveZoneTornInOneStepReactsWithTheBetaItStores) {
   EXPECT_GT(result.iterations, 2);
   ASSERT_EQ(state.contacts.size(), 2u);
   int torn = 0;
-  for (const Interaction3D& c : state.contacts) {
-    const double beta = c.internal[4], opening = c.internal[2];
+  ASSERT_EQ(state.law_states.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const Interaction3D& c = state.contacts[k];
+    const std::array<double, 6>& internal = state.law_states[k].internal;
+    const double beta = internal[4], opening = internal[2];
     if (beta == 1.0) continue;
     ++torn;
     EXPECT_GT(opening, 0.0);
-    EXPECT_NEAR(c.r(1), -c.internal[0] * beta * beta * h * cn * opening, 1e-3 * std::abs(c.r(1)));
+    EXPECT_NEAR(c.r(1), -internal[0] * beta * beta * h * cn * opening, 1e-3 * std::abs(c.r(1)));
   }
   EXPECT_GE(torn, 1);
 }

@@ -31,13 +31,27 @@ LocalProblem2D contact_2d(double gap, ContactStatus begin = ContactStatus::nknow
   return c;
 }
 
-Interaction3D contact_3d(double gap, ContactStatus begin = ContactStatus::nknow) {
-  Interaction3D c;
+// A 3D interaction with its law state, as the step keeps them side by side.
+struct Contact3D : Interaction3D {
+  LawState3D state;
+};
+bool prepare_law(const ContactLaw& law, Contact3D& c, const LawStep& step) {
+  return solver::prepare_law(law, c, c.state, step);
+}
+void finish_law(const ContactLaw& law, Contact3D& c, const LawStep& step) {
+  solver::finish_law(law, c, c.state, step);
+}
+bool update_law_at_check(const ContactLaw& law, Contact3D& c, const Eigen::Vector3d& u, const LawStep& step) {
+  return solver::update_law_at_check(law, c, c.state, u, step);
+}
+
+Contact3D contact_3d(double gap, ContactStatus begin = ContactStatus::nknow) {
+  Contact3D c;
   c.gap_begin = gap;
   c.status_begin = begin;
   c.velocity_begin = Eigen::Vector3d(0.3, -2.0, 0.1);
   c.W = Eigen::Matrix3d::Identity();
-  c.surface = 0.5;
+  c.state.surface = 0.5;
   return c;
 }
 
@@ -74,8 +88,25 @@ TEST(ContactLawTable, ThreeDimensionalFormsAreTheDocumentedOnes) {
   EXPECT_FALSE(provided_in_2d(ElasticWire{}));
   EXPECT_FALSE(provided_in_2d(ElasticRod{}));
   EXPECT_TRUE(provided_in_2d(IqsMacCzm{}));
-  Interaction3D c = contact_3d(0.0);
+  Contact3D c = contact_3d(0.0);
   EXPECT_FALSE(prepare_law(NoNlgsBranch{0.3}, c, LawStep{h, 0.0, true}));
+}
+
+// A 3D scene keeps a LawState3D beside each interaction only for a law whose code reads or writes
+// one, or for which LMGC90 writes 3D internals (carried from a Vloc_Rloc.INI to the outputs).
+TEST(ContactLawTable, OnlyLawsWithInternalsCohesionOrAReferenceLengthKeepA3DLawState) {
+  EXPECT_FALSE(keeps_law_state_3d(IqsClb{0.3}));
+  EXPECT_FALSE(keeps_law_state_3d(IqsDsClb{0.2, 0.3}));
+  EXPECT_FALSE(keeps_law_state_3d(RstClb{0.5, 0.0, 0.3}));
+  EXPECT_FALSE(keeps_law_state_3d(IqsWetDsClb{}));
+  EXPECT_FALSE(keeps_law_state_3d(ElasticRepellClb{}));
+  EXPECT_FALSE(keeps_law_state_3d(CoupledDof{}));
+  EXPECT_TRUE(keeps_law_state_3d(IqsMohrDsClb{}));  // reads the contact surface
+  EXPECT_TRUE(keeps_law_state_3d(IqsMacCzm{}));
+  EXPECT_TRUE(keeps_law_state_3d(IqsClbG0{}));
+  EXPECT_TRUE(keeps_law_state_3d(ElasticWire{}));
+  EXPECT_TRUE(keeps_law_state_3d(ElasticRod{}));
+  EXPECT_TRUE(keeps_law_state_3d(GapSgrClb{0.3}));  // LMGC90 writes its 3D internal
 }
 
 TEST(IqsClb, ClosesAnOpenGapWithinTheStepButNeverPushesOut) {
@@ -85,7 +116,7 @@ TEST(IqsClb, ClosesAnOpenGapWithinTheStepButNeverPushesOut) {
   EXPECT_DOUBLE_EQ(open.covfree(1), 0.002 / h);
   EXPECT_EQ(sunk.covfree(1), 0.0);
   EXPECT_EQ(open.mu, 0.4);
-  Interaction3D c3 = contact_3d(0.001);
+  Contact3D c3 = contact_3d(0.001);
   ASSERT_TRUE(prepare_law(IqsClb{0.4}, c3, LawStep{h}));
   EXPECT_DOUBLE_EQ(c3.covfree(1), 1.0);
 }
@@ -109,17 +140,17 @@ TEST(IqsClbG0, MeasuresTheGapFromItsValueAtTheFirstStep) {
   prepare_law(IqsClbG0{0.3}, c, LawStep{h, 2 * h, false});
   EXPECT_NEAR(c.covfree(1), 0.001 / h, 1e-9);
   // 3D alike; a contact created after the first step keeps g_ref = 0 (plain IQS_CLB).
-  Interaction3D c3 = contact_3d(0.004);
+  Contact3D c3 = contact_3d(0.004);
   ASSERT_TRUE(prepare_law(IqsClbG0{0.3}, c3, LawStep{h, h, true, true}));
-  EXPECT_EQ(c3.internal[0], 0.004);
+  EXPECT_EQ(c3.state.internal[0], 0.004);
   EXPECT_EQ(c3.covfree(1), 0.0);
-  Interaction3D late = contact_3d(0.004);
+  Contact3D late = contact_3d(0.004);
   ASSERT_TRUE(prepare_law(IqsClbG0{0.3}, late, LawStep{h, 5 * h, false}));
   EXPECT_NEAR(late.covfree(1), 0.004 / h, 1e-9);
 }
 
 TEST(RstClb, ScalesTheIncomingVelocityAndIgnoresOpenContacts) {
-  Interaction3D c = contact_3d(0.0);
+  Contact3D c = contact_3d(0.0);
   ASSERT_TRUE(prepare_law(RstClb{0.8, 0.5, 0.3}, c, LawStep{h}));
   EXPECT_DOUBLE_EQ(c.covfree(1), 0.8 * -2.0);
   EXPECT_DOUBLE_EQ(c.covfree(0), 0.5 * 0.3);
@@ -143,7 +174,7 @@ TEST(GapSgrClb, CorrectsAPenetrationWithinOneStep) {
 }
 
 TEST(GapSgrDsClb, GapFormWithStaticFrictionWhileSticking) {
-  Interaction3D c = contact_3d(-0.001, ContactStatus::stick);
+  Contact3D c = contact_3d(-0.001, ContactStatus::stick);
   ASSERT_TRUE(prepare_law(GapSgrDsClb{0.1, 0.6}, c, LawStep{h}));
   EXPECT_DOUBLE_EQ(c.covfree(1), -1.0);
   EXPECT_EQ(c.mu, 0.6);
@@ -159,7 +190,7 @@ TEST(VelSgrClb, ActsOnlyOnceTheGapIsClosed) {
 }
 
 TEST(VelSgrDsClb, VelocitySignoriniWithDynamicFrictionAfterSliding) {
-  Interaction3D c = contact_3d(-0.001, ContactStatus::slide);
+  Contact3D c = contact_3d(-0.001, ContactStatus::slide);
   ASSERT_TRUE(prepare_law(VelSgrDsClb{0.1, 0.6}, c, LawStep{h}));
   EXPECT_FALSE(c.inactive);
   EXPECT_EQ(c.mu, 0.1);
@@ -173,7 +204,7 @@ TEST(ElasticRepellClb, AddsTheSpringComplianceToTheNormalBlock) {
 }
 
 TEST(IqsMohrDsClb, IsCohesiveFromTheFirstStepUntilItStopsSticking) {
-  Interaction3D c = contact_3d(0.0);
+  Contact3D c = contact_3d(0.0);
   ASSERT_TRUE(prepare_law(IqsMohrDsClb{100.0, 50.0, 0.2, 0.3}, c, LawStep{h, 0.0, true}));
   EXPECT_EQ(c.status_begin, ContactStatus::Mstck);
   EXPECT_DOUBLE_EQ(c.correction, -100.0 * 0.5 * h);  // cohesion × contact surface
@@ -182,7 +213,7 @@ TEST(IqsMohrDsClb, IsCohesiveFromTheFirstStepUntilItStopsSticking) {
   finish_law(IqsMohrDsClb{100.0, 50.0, 0.2, 0.3}, c, LawStep{h});
   EXPECT_EQ(c.status, ContactStatus::Mstck);
   // Born after the first step: never cohesive (mod_nlgs_3D).
-  Interaction3D late = contact_3d(0.0);
+  Contact3D late = contact_3d(0.0);
   ASSERT_TRUE(prepare_law(IqsMohrDsClb{100.0, 50.0, 0.2, 0.3}, late, LawStep{h, 0.0, false}));
   EXPECT_EQ(late.correction, 0.0);
   // 2D: cohesion × contact length, shifted through W; also from step 1 only.
@@ -198,7 +229,7 @@ TEST(IqsMohrDsClb, IsCohesiveFromTheFirstStepUntilItStopsSticking) {
 }
 
 TEST(IqsWetDsClb, IsCohesiveInsideTheWetHaloOnly) {
-  Interaction3D wet = contact_3d(0.0005, ContactStatus::stick), dry = contact_3d(0.002, ContactStatus::stick);
+  Contact3D wet = contact_3d(0.0005, ContactStatus::stick), dry = contact_3d(0.002, ContactStatus::stick);
   const IqsWetDsClb law{10.0, 0.0, 0.001, 0.2, 0.3};
   ASSERT_TRUE(prepare_law(law, wet, LawStep{h}));
   ASSERT_TRUE(prepare_law(law, dry, LawStep{h}));
@@ -273,43 +304,43 @@ TEST(IqsMacCzm, ContactsCreatedAfterTheFirstStepStartBroken) {
   EXPECT_EQ(c2.internal[3], 0.0);
   EXPECT_FALSE(c2.cohesive);
   EXPECT_EQ(c2.mu, 0.4);
-  Interaction3D c3 = contact_3d(0.0);
+  Contact3D c3 = contact_3d(0.0);
   ASSERT_TRUE(prepare_law(law, c3, LawStep{h, 2 * h, false}));
-  EXPECT_EQ(c3.internal[4], 0.0);
+  EXPECT_EQ(c3.state.internal[4], 0.0);
   EXPECT_EQ(c3.form, LocalForm3D::coulomb);
   EXPECT_EQ(c3.mu, 0.4);
 }
 
 TEST(IqsMacCzm, ThreeDimensionalFormIsTheCohesiveZoneOnTheContactSurface) {
   const IqsMacCzm law{0.3, 0.4, 2e6, 1e6, 0.0, 10.0};
-  Interaction3D c = contact_3d(0.002);  // surface 0.5
+  Contact3D c = contact_3d(0.002);  // surface 0.5
   ASSERT_TRUE(prepare_law(law, c, LawStep{h, h, true, true}));
   EXPECT_EQ(c.status_begin, ContactStatus::Cnnow);
   EXPECT_EQ(c.form, LocalForm3D::cohesive);
-  EXPECT_EQ(c.internal[0], 0.5);    // L = surface
-  EXPECT_EQ(c.internal[2], 0.002);  // δn = (γ)+
-  EXPECT_EQ(c.internal[4], 1.0);    // β
+  EXPECT_EQ(c.state.internal[0], 0.5);    // L = surface
+  EXPECT_EQ(c.state.internal[2], 0.002);  // δn = (γ)+
+  EXPECT_EQ(c.state.internal[4], 1.0);    // β
   EXPECT_DOUBLE_EQ(c.covfree(1), 0.002 / h);
   EXPECT_EQ(c.mu, 0.0);  // sfric (1 − β)
   // k = −L β² h² C, radh = −L β² h C δ (tangential jumps 0 at the start).
-  EXPECT_DOUBLE_EQ(c.cohesive_slope(0), -0.5 * h * h * 1e6);
-  EXPECT_DOUBLE_EQ(c.cohesive_slope(1), -0.5 * h * h * 2e6);
-  EXPECT_DOUBLE_EQ(c.cohesive_slope(2), -0.5 * h * h * 1e6);
-  EXPECT_EQ(c.cohesive_shift, Eigen::Vector3d::Zero());
+  EXPECT_DOUBLE_EQ(c.state.cohesive_slope(0), -0.5 * h * h * 1e6);
+  EXPECT_DOUBLE_EQ(c.state.cohesive_slope(1), -0.5 * h * h * 2e6);
+  EXPECT_DOUBLE_EQ(c.state.cohesive_slope(2), -0.5 * h * h * 1e6);
+  EXPECT_EQ(c.state.cohesive_shift, Eigen::Vector3d::Zero());
   // Opening 1 cm and sliding 1 cm in the step: β drops, jumps and TPSini are stored.
   c.u = Eigen::Vector3d(10.0, 8.0, 0.0);
   c.status = ContactStatus::stick;
   finish_law(law, c, LawStep{h, 0.25, true});
-  EXPECT_LT(c.internal[4], 1.0);
-  EXPECT_DOUBLE_EQ(c.internal[1], 0.01);
-  EXPECT_DOUBLE_EQ(c.internal[2], 0.002 + 0.008);
-  EXPECT_EQ(c.internal[5], 0.25);
+  EXPECT_LT(c.state.internal[4], 1.0);
+  EXPECT_DOUBLE_EQ(c.state.internal[1], 0.01);
+  EXPECT_DOUBLE_EQ(c.state.internal[2], 0.002 + 0.008);
+  EXPECT_EQ(c.state.internal[5], 0.25);
   EXPECT_EQ(c.status, ContactStatus::Cstck);
   // Next step: the tangential jump feeds radh_t.
   c.status_begin = c.status;
-  const double beta = c.internal[4];
+  const double beta = c.state.internal[4];
   ASSERT_TRUE(prepare_law(law, c, LawStep{h, 2 * h, false}));
-  EXPECT_DOUBLE_EQ(c.cohesive_shift(0), -0.5 * beta * beta * h * 1e6 * 0.01);
+  EXPECT_DOUBLE_EQ(c.state.cohesive_shift(0), -0.5 * beta * beta * h * 1e6 * 0.01);
   EXPECT_DOUBLE_EQ(c.mu, 0.4 * (1.0 - beta));
 }
 
@@ -318,58 +349,58 @@ TEST(IqsMacCzm, ThreeDimensionalFormIsTheCohesiveZoneOnTheContactSurface) {
 // final velocity when the damage rule takes it, else the checks' β.
 TEST(IqsMacCzm, ThreeDimensionalBetaIsReEvaluatedAtEachCheckFromTheStepsStart) {
   const IqsMacCzm law{0.3, 0.4, 2e6, 1e6, 0.0, 10.0};
-  Interaction3D c = contact_3d(0.0);  // surface 0.5, closed
+  Contact3D c = contact_3d(0.0);  // surface 0.5, closed
   ASSERT_TRUE(prepare_law(law, c, LawStep{h, h, true, true}));
   ASSERT_TRUE(updates_at_check(law));
   EXPECT_FALSE(updates_at_check(IqsClb{0.3}));
-  EXPECT_EQ(c.law_working, 1.0);
+  EXPECT_EQ(c.state.law_working, 1.0);
   // A check velocity that stores less than w: β stays, nothing changes.
   EXPECT_FALSE(update_law_at_check(law, c, Eigen::Vector3d(0.0, 1.0, 0.0), LawStep{h, h, true, true}));
   EXPECT_EQ(c.form, LocalForm3D::cohesive);
   // Opening 8 mm in the step: cn δn² = 2e6 × 6.4e-5 = 128 > w = 10, β = w / (cn δn²) (no viscosity).
   ASSERT_TRUE(update_law_at_check(law, c, Eigen::Vector3d(0.0, 8.0, 0.0), LawStep{h, h, true, true}));
   const double beta = 10.0 / 128.0;
-  EXPECT_DOUBLE_EQ(c.law_working, beta);
-  EXPECT_EQ(c.internal[4], 1.0);  // stored only at the end of the step
+  EXPECT_DOUBLE_EQ(c.state.law_working, beta);
+  EXPECT_EQ(c.state.internal[4], 1.0);  // stored only at the end of the step
   EXPECT_DOUBLE_EQ(c.mu, 0.4 * (1.0 - beta));
-  EXPECT_DOUBLE_EQ(c.cohesive_slope(1), -0.5 * beta * beta * h * h * 2e6);
+  EXPECT_DOUBLE_EQ(c.state.cohesive_slope(1), -0.5 * beta * beta * h * h * 2e6);
   // A later check computes from the step's starting β again, not from the last check's.
   ASSERT_TRUE(update_law_at_check(law, c, Eigen::Vector3d(0.0, 16.0, 0.0), LawStep{h, h, true, true}));
-  EXPECT_DOUBLE_EQ(c.law_working, 10.0 / 512.0);
+  EXPECT_DOUBLE_EQ(c.state.law_working, 10.0 / 512.0);
   // The final velocity stores less than w: the rule does not take it, the checks' β is stored.
   c.u = Eigen::Vector3d(0.0, 1.0, 0.0);
   c.status = ContactStatus::stick;
   finish_law(law, c, LawStep{h, h, true, true});
-  EXPECT_DOUBLE_EQ(c.internal[4], 10.0 / 512.0);
+  EXPECT_DOUBLE_EQ(c.state.internal[4], 10.0 / 512.0);
   // Fully broken at a check (β below 1e-12 → 0): the contact turns to plain IQS with full friction.
-  Interaction3D d = contact_3d(0.0);
+  Contact3D d = contact_3d(0.0);
   ASSERT_TRUE(prepare_law(IqsMacCzm{0.3, 0.4, 2e6, 1e6, 0.0, 1e-12}, d, LawStep{h, h, true, true}));
   ASSERT_TRUE(update_law_at_check(IqsMacCzm{0.3, 0.4, 2e6, 1e6, 0.0, 1e-12}, d,
                                   Eigen::Vector3d(0.0, 1e3, 0.0), LawStep{h, h, true, true}));
-  EXPECT_EQ(d.law_working, 0.0);
+  EXPECT_EQ(d.state.law_working, 0.0);
   EXPECT_EQ(d.form, LocalForm3D::coulomb);
   EXPECT_EQ(d.mu, 0.4);
-  EXPECT_EQ(d.cohesive_slope, Eigen::Vector3d::Zero());
+  EXPECT_EQ(d.state.cohesive_slope, Eigen::Vector3d::Zero());
 }
 
 TEST(ElasticWire, IsATensionOnlySpringOnTheReferenceLength) {
   const ElasticWire law{2000.0, 0.1};
-  Interaction3D c = contact_3d(1.3);
-  c.reference_gap = 1.0;
+  Contact3D c = contact_3d(1.3);
+  c.state.reference_gap = 1.0;
   ASSERT_TRUE(prepare_law(law, c, LawStep{h}));
   EXPECT_EQ(c.form, LocalForm3D::wire);
-  EXPECT_EQ(c.internal[0], 1.0);  // gapREF
+  EXPECT_EQ(c.state.internal[0], 1.0);  // gapREF
   EXPECT_DOUBLE_EQ(c.normal_compliance, 1.0 / (2000.0 * h * h));
   EXPECT_DOUBLE_EQ(c.covfree(1), (1.3 - 1.1) / h);
   EXPECT_EQ(c.mu, 0.0);
-  Interaction3D unlinked = contact_3d(1.3);  // no reference length: no link (LMGC90 stops)
+  Contact3D unlinked = contact_3d(1.3);  // no reference length: no link (LMGC90 stops)
   ASSERT_TRUE(prepare_law(law, unlinked, LawStep{h}));
   EXPECT_TRUE(unlinked.inactive);
 }
 
 TEST(ElasticRod, IsTheBilateralSpring) {
-  Interaction3D c = contact_3d(0.9);
-  c.reference_gap = 1.0;
+  Contact3D c = contact_3d(0.9);
+  c.state.reference_gap = 1.0;
   ASSERT_TRUE(prepare_law(ElasticRod{500.0, 0.0}, c, LawStep{h}));
   EXPECT_EQ(c.form, LocalForm3D::rod);
   EXPECT_DOUBLE_EQ(c.covfree(1), -0.1 / h);
@@ -377,7 +408,7 @@ TEST(ElasticRod, IsTheBilateralSpring) {
 }
 
 TEST(ElasticRepellClb, ThreeDimensionalFormAddsTheSpringComplianceOnTheNormal) {
-  Interaction3D c = contact_3d(-0.001);
+  Contact3D c = contact_3d(-0.001);
   ASSERT_TRUE(prepare_law(ElasticRepellClb{1e6, 0.4}, c, LawStep{h}));
   EXPECT_EQ(c.form, LocalForm3D::coulomb);
   EXPECT_DOUBLE_EQ(c.normal_compliance, 1.0 / (1e6 * h * h));
@@ -386,7 +417,7 @@ TEST(ElasticRepellClb, ThreeDimensionalFormAddsTheSpringComplianceOnTheNormal) {
 }
 
 TEST(CoupledDof, ThreeDimensionalFormGluesEveryComponent) {
-  Interaction3D c = contact_3d(0.002);
+  Contact3D c = contact_3d(0.002);
   ASSERT_TRUE(prepare_law(CoupledDof{}, c, LawStep{h}));
   EXPECT_EQ(c.form, LocalForm3D::glued);
   EXPECT_EQ(c.covfree, Eigen::Vector3d::Zero());

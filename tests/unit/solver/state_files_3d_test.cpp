@@ -238,7 +238,8 @@ TEST(StateFiles3D, DofRoundTripsAndHoldsTheBodies) {
 TEST(StateFiles3D, WarmStartGivesBackTheReactionsAndStatuses) {
   SceneRun r = run(3);
   const grammar::VlocRlocFile f = parse_vloc(grammar::write_vloc_rloc(vloc_rloc_file_3d(r.scene, r.state)));
-  const std::vector<Interaction3D> warm = warm_start_3d(f, r.scene, kH);
+  const WarmStart3D warm_start = warm_start_3d(f, r.scene, kH);
+  const std::vector<Interaction3D>& warm = warm_start.interactions;
   const auto& contacts = r.state.contacts;
   ASSERT_EQ(warm.size(), contacts.size());
   for (std::size_t k = 0; k < warm.size(); ++k) {
@@ -257,7 +258,7 @@ TEST(StateFiles3D, WarmStartGivesBackTheReactionsAndStatuses) {
 
   // Restarting from the warm start gives the step the run itself takes next.
   SceneRun restarted{r.scene, r.state};
-  store_interactions(restarted.state, warm);
+  store_interactions(restarted.state, warm, warm_start.law_states);
   step_3d(r.scene, r.state, converged_options());
   step_3d(restarted.scene, restarted.state, converged_options());
   ASSERT_EQ(restarted.state.contacts.size(), r.state.contacts.size());
@@ -274,7 +275,8 @@ TEST(StateFiles3D, WarmStartSkipsUnknownContactorsAndOtherModules) {
   f.interactions[0].integers[0] = grammar::Integer{99};  // no body 99
   f.interactions[1].type = grammar::Word{"PRPLx"};       // not a sphere module
   f.interactions[2].integers[2] = grammar::Integer{2};   // SPPLx whose antagonist is a sphere
-  const std::vector<Interaction3D> warm = warm_start_3d(f, r.scene, kH);
+  const WarmStart3D warm_start = warm_start_3d(f, r.scene, kH);
+  const std::vector<Interaction3D>& warm = warm_start.interactions;
   ASSERT_EQ(warm.size(), 1u);
   EXPECT_EQ(warm[0].family, PairFamily3D::SPSPx);
 }
@@ -290,7 +292,8 @@ TEST(StateFiles3D, InternalVariablesOfTheLawAreWrittenWithTheirNames) {
   state.h = kH;
   step_3d(scene, state, converged_options());
   ASSERT_EQ(state.contacts.size(), 1u);
-  state.contacts[0].internal[0] = 0.25;
+  ASSERT_EQ(state.law_states.size(), 1u);  // GAP_SGR_CLB has 3D internals: its scene keeps law states
+  state.law_states[0].internal[0] = 0.25;
   const grammar::VlocRlocFile built = vloc_rloc_file_3d(scene, state);
   ASSERT_EQ(built.interactions.size(), 1u);
   const std::string text = grammar::write_vloc_rloc(built);
@@ -299,9 +302,10 @@ TEST(StateFiles3D, InternalVariablesOfTheLawAreWrittenWithTheirNames) {
   const grammar::VlocRlocFile back = parse_vloc(text);
   ASSERT_EQ(back.interactions.size(), 1u);
   EXPECT_EQ(back.interactions[0].internal_comment, built.interactions[0].internal_comment);
-  const std::vector<Interaction3D> warm = warm_start_3d(back, scene, kH);
+  const WarmStart3D warm_start = warm_start_3d(back, scene, kH);
+  const std::vector<Interaction3D>& warm = warm_start.interactions;
   ASSERT_EQ(warm.size(), 1u);
-  EXPECT_DOUBLE_EQ(warm[0].internal[0], 0.25);
+  EXPECT_DOUBLE_EQ(warm_start.law_states[0].internal[0], 0.25);
 }
 
 TEST(StateFiles3D, EveryPairFamilyHasItsVlocRlocBlockInTheGrammar) {
@@ -342,7 +346,8 @@ TEST(StateFiles3D, DrumAndPointLinkBlocksRoundTripAndWarmStart) {
   EXPECT_NE(text.find("gapREF"), std::string::npos) << text;
   const grammar::VlocRlocFile back = parse_vloc(text);
   EXPECT_EQ(grammar::write_vloc_rloc(back), text);
-  const std::vector<Interaction3D> warm = warm_start_3d(back, r.scene, kH);
+  const WarmStart3D warm_start = warm_start_3d(back, r.scene, kH);
+  const std::vector<Interaction3D>& warm = warm_start.interactions;
   ASSERT_EQ(warm.size(), 2u);
   for (std::size_t k = 0; k < warm.size(); ++k) {
     EXPECT_EQ(warm[k].family, r.state.contacts[k].family);
@@ -375,11 +380,12 @@ TEST(StateFiles3D, DuplicateLinksOfOnePairWarmStartInTheirOrder) {
   EXPECT_EQ(r.state.contacts[1].vertex, 1);
   const grammar::VlocRlocFile back =
       parse_vloc(grammar::write_vloc_rloc(vloc_rloc_file_3d(r.scene, r.state)));
-  const std::vector<Interaction3D> warm = warm_start_3d(back, r.scene, kH);
+  const WarmStart3D warm_start = warm_start_3d(back, r.scene, kH);
+  const std::vector<Interaction3D>& warm = warm_start.interactions;
   ASSERT_EQ(warm.size(), 2u);
   EXPECT_EQ(warm[0].vertex, 0);
   EXPECT_EQ(warm[1].vertex, 1);
-  store_interactions(r.state, warm);
+  store_interactions(r.state, warm, warm_start.law_states);
   select_prox_tactors(r.scene, r.state);
   recup_rloc(r.state);
   ASSERT_EQ(r.state.contacts.size(), 2u);
