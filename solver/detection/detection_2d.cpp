@@ -349,7 +349,7 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
       c.law = see.law;
       c.visibility = v;
       c.normal = f.normal;
-      c.tangent = Vector2d(f.normal.y(), -f.normal.x());
+      const Vector2d tangent = c.tangent();
       c.point = f.point;
       c.gap_begin = f.gap;
       c.length = f.length;
@@ -364,15 +364,15 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
           antagonist_from_contactor ? Vector2d::Zero() : Vector2d(centre[can] - body_position(can));
       const Vector2d lever_cd = f.candidate_lever + offset_cd;
       const Vector2d lever_an = f.antagonist_lever + offset_an;
-      c.lever_candidate = Vector2d(cross_2d(lever_cd, c.tangent), cross_2d(lever_cd, c.normal));
-      c.lever_antagonist = Vector2d(cross_2d(lever_an, c.tangent), cross_2d(lever_an, c.normal));
+      c.lever_candidate = Vector2d(cross_2d(lever_cd, tangent), cross_2d(lever_cd, c.normal));
+      c.lever_antagonist = Vector2d(cross_2d(lever_an, tangent), cross_2d(lever_an, c.normal));
       // Local relative velocity at the beginning of the step (restitution laws), while the record is
       // at hand: a pass of its own over a large list went to memory again.
       const Vector3d& vc = velocity_begin[static_cast<std::size_t>(c.candidate_body)];
       const Vector3d& va = velocity_begin[static_cast<std::size_t>(c.antagonist_body)];
-      const Vector3d tc(c.tangent.x(), c.tangent.y(), c.lever_candidate(0)),
+      const Vector3d tc(tangent.x(), tangent.y(), c.lever_candidate(0)),
           nc(c.normal.x(), c.normal.y(), c.lever_candidate(1));
-      const Vector3d ta(c.tangent.x(), c.tangent.y(), c.lever_antagonist(0)),
+      const Vector3d ta(tangent.x(), tangent.y(), c.lever_antagonist(0)),
           na(c.normal.x(), c.normal.y(), c.lever_antagonist(1));
       c.velocity_begin = Vector2d(tc.dot(vc) - ta.dot(va), nc.dot(vc) - na.dot(va));
       if (out.size() > 1 && in_order && key_of(c) < key_of(out[out.size() - 2])) in_order = false;

@@ -40,7 +40,10 @@ RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D&
   state.theta = options.theta;
   state.scramble = QuickScramble(options.nlgs.scramble_seed);
   state.visibility = build_visibility_index(scene);
-  if (outputs.warm_start) store_interactions(state, warm_start_2d(*outputs.warm_start, scene, options.dt));
+  if (outputs.warm_start) {
+    const WarmStart2D warm = warm_start_2d(*outputs.warm_start, scene, options.dt);
+    store_interactions(state, warm.interactions, warm.law_states);
+  }
 
   Postpro2D postpro;
   if (!outputs.postpro.empty() && !postpro.open(outputs.case_dir / "POSTPRO", outputs.postpro, summary.error))

@@ -66,9 +66,18 @@ void select_prox_tactors(Scene2D& scene, RunState2D& state) {
   if (state.contacts_stored) {
     // The stored list becomes `previous`; the older list's buffer receives the new interactions.
     std::swap(state.previous, state.contacts);
+    std::swap(state.previous_law_states, state.law_states);
     state.contacts_stored = false;
   }
   detect_contacts_2d(scene, state.visibility, coordinates, state.contacts);
+  state.law_states.clear();
+  if (scene_keeps_law_state_2d(scene)) state.law_states.resize(state.contacts.size());
+}
+
+bool scene_keeps_law_state_2d(const Scene2D& scene) {
+  for (const Visibility2D& v : scene.visibility)
+    if (keeps_law_state_2d(scene.laws[static_cast<std::size_t>(v.law)].law)) return true;
+  return false;
 }
 
 void recup_rloc(RunState2D& state) {
@@ -102,8 +111,12 @@ void recup_rloc(RunState2D& state) {
       if ((p->point - c.point).norm() < 0.01 * spacing) return &*p;
     return nullptr;
   };
+  // Internals from the stored list's, where both lists keep them (a warm start from a file, or a
+  // scene whose laws have internals); 0 otherwise.
+  const bool internals = !state.law_states.empty() && !state.previous_law_states.empty();
   std::size_t j = 0;
-  for (Interaction2D& c : state.contacts) {
+  for (std::size_t k = 0; k < state.contacts.size(); ++k) {
+    Interaction2D& c = state.contacts[k];
     while (j < previous.size() && key(previous[j]) < key(c)) ++j;
     const Interaction2D* match = nullptr;
     bool swapped = false;
@@ -116,11 +129,13 @@ void recup_rloc(RunState2D& state) {
     if (match) {
       c.r = match->r;
       c.status_begin = match->status;
-      c.internal = match->internal;
+      std::array<double, 6>* internal = internals ? &state.law_states[k].internal : nullptr;
+      if (internal)
+        *internal = state.previous_law_states[static_cast<std::size_t>(match - previous.data())].internal;
       if (swapped) {
         // n and t turn over with the roles: r_t and a cohesive zone's tangential jump change sign.
         c.r(0) = -c.r(0);
-        if (match->cohesive) c.internal[1] = -c.internal[1];
+        if (match->cohesive && internal) (*internal)[1] = -(*internal)[1];
       }
     } else {
       c.r.setZero();
@@ -133,15 +148,17 @@ void recup_rloc(RunState2D& state) {
 NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const bool first = !state.laws_initialized && !state.contacts.empty();
-  NlgsResult result = solve_nlgs_2d(scene, scene.bodies, state.contacts, state.h, state.time, options,
-                                    state.step == 1, first, state.scramble);
+  NlgsResult result = solve_nlgs_2d(scene, scene.bodies, state.contacts, state.law_states, state.h,
+                                    state.time, options, state.step == 1, first, state.scramble);
   if (!state.contacts.empty()) state.laws_initialized = true;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
-void store_interactions(RunState2D& state, std::span<const Interaction2D> interactions) {
+void store_interactions(RunState2D& state, std::span<const Interaction2D> interactions,
+                        std::span<const LawState2D> law_states) {
   state.previous.assign(interactions.begin(), interactions.end());  // keeps its buffer
+  state.previous_law_states.assign(law_states.begin(), law_states.end());
   state.contacts_stored = false;
 }
 

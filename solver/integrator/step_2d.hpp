@@ -23,6 +23,9 @@ struct RunState2D {
   // `previous` an older one); the next detection swaps them in here before it writes the new list,
   // so the store copies nothing (64k-disk layer: copying took stock_rloc 2.0-2.3 ms of a step).
   LargeArray<Interaction2D> previous;
+  // The interactions' internal variables, index for index with `contacts` and `previous`; both empty
+  // in a scene whose laws have none (keeps_law_state_2d).
+  LargeArray<LawState2D> law_states, previous_law_states;
   bool contacts_stored = false;
   bool laws_initialized = false;  // a step with interactions has been solved (LawStep::first_step)
   VisibilityIndex2D visibility;
@@ -39,9 +42,12 @@ void recup_rloc(RunState2D& state);
 NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& options);
 void stock_rloc(RunState2D& state);
 // The verlet list the next recup_rloc reads (stock_rloc's, or a warm start's from Vloc_Rloc.INI):
-// sorted like detection's interactions, by (family, candidate, antagonist, vertex). A copy, where
-// stock_rloc keeps the step's own list.
-void store_interactions(RunState2D& state, std::span<const Interaction2D> interactions);
+// sorted like detection's interactions, by (family, candidate, antagonist, vertex), with the internals
+// of `law_states` (index for index, or empty). A copy, where stock_rloc keeps the step's own list.
+void store_interactions(RunState2D& state, std::span<const Interaction2D> interactions,
+                        std::span<const LawState2D> law_states);
+// Whether a law of the scene's visibility rows has internal variables (a LawState2D per interaction).
+bool scene_keeps_law_state_2d(const Scene2D& scene);
 // X = X_begin + h((1-θ) V_begin + θ V).
 void compute_dof(Scene2D& scene, const RunState2D& state);
 // Bodies out of the scene's bounds become invisible (frozen at the bound, zero velocity).

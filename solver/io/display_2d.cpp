@@ -136,11 +136,11 @@ std::string contacts_vtu_2d(const Scene2D& scene, const RunState2D& state) {
   data_array(out, "Float64", "N", 3, n,
              [&](std::size_t i, int c) { return c < 2 ? contacts[i].normal(c) : 0.0; });
   data_array(out, "Float64", "T", 3, n,
-             [&](std::size_t i, int c) { return c < 2 ? contacts[i].tangent(c) : 0.0; });
+             [&](std::size_t i, int c) { return c < 2 ? contacts[i].tangent()(c) : 0.0; });
   // Global reaction force r_t t + r_n n divided by h.
   data_array(out, "Float64", "R", 3, n, [&](std::size_t i, int c) {
     const Interaction2D& k = contacts[i];
-    return c < 2 ? (k.r(0) * k.tangent(c) + k.r(1) * k.normal(c)) / h : 0.0;
+    return c < 2 ? (k.r(0) * k.tangent()(c) + k.r(1) * k.normal(c)) / h : 0.0;
   });
   data_array(out, "Float64", "rln", 1, n, [&](std::size_t i, int) { return contacts[i].r(1) / h; });
   data_array(out, "Float64", "rlt", 1, n, [&](std::size_t i, int) { return contacts[i].r(0) / h; });

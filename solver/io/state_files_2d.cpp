@@ -155,7 +155,10 @@ grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& 
       const int internals = law_internal_count(scene.laws[static_cast<std::size_t>(c.law)].law);
       if (internals > 0) {
         std::vector<Real> values;
-        for (int k = 0; k < internals; ++k) values.push_back(Real{c.internal[static_cast<std::size_t>(k)]});
+        // A law with internals keeps a law state per interaction (keeps_law_state_2d).
+        const LawState2D none;
+        const auto& internal = (state.law_states.empty() ? none : state.law_states[members[m]]).internal;
+        for (int k = 0; k < internals; ++k) values.push_back(Real{internal[static_cast<std::size_t>(k)]});
         const std::size_t per_line = kind->internals == grammar::InternalLayout2D::per_line_6 ? 6
                                      : kind->internals == grammar::InternalLayout2D::per_line_5
                                          ? 5
@@ -175,12 +178,12 @@ grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& 
   return file;
 }
 
-std::vector<Interaction2D> warm_start_2d(const grammar::VlocRlocFile& file, const Scene2D& scene, double h) {
+WarmStart2D warm_start_2d(const grammar::VlocRlocFile& file, const Scene2D& scene, double h) {
   // Contactor index by (body rank, contactor rank).
   std::map<std::pair<std::int64_t, std::int64_t>, std::int32_t> by_rank;
   for (std::size_t k = 0; k < scene.contactors.size(); ++k)
     by_rank[{scene.contactors[k].body + 1, scene.contactors[k].rank}] = static_cast<std::int32_t>(k);
-  std::vector<Interaction2D> previous;
+  std::vector<std::pair<Interaction2D, LawState2D>> previous;
   for (const auto& b : file.interactions) {
     PairFamily2D family;
     const std::string& t = b.type.value;
@@ -214,17 +217,24 @@ std::vector<Interaction2D> warm_start_2d(const grammar::VlocRlocFile& file, cons
     c.candidate_vertex = vertex ? static_cast<std::int32_t>(n[2].value) : 0;
     c.r = Eigen::Vector2d(b.vectors[0].values[0].value * h, b.vectors[0].values[1].value * h);
     if (!b.words.empty()) status_from_name(b.words.back().value, c.status);
+    LawState2D law_state;
     std::size_t k = 0;
     for (const auto& line : b.internal_lines)
       for (const auto& v : line)
-        if (k < c.internal.size()) c.internal[k++] = v.value;
-    previous.push_back(c);
+        if (k < law_state.internal.size()) law_state.internal[k++] = v.value;
+    previous.emplace_back(c, law_state);
   }
-  std::sort(previous.begin(), previous.end(), [](const Interaction2D& a, const Interaction2D& b) {
+  std::stable_sort(previous.begin(), previous.end(), [](const auto& x, const auto& y) {
+    const Interaction2D &a = x.first, &b = y.first;
     return std::tie(a.family, a.candidate, a.antagonist, a.candidate_vertex) <
            std::tie(b.family, b.candidate, b.antagonist, b.candidate_vertex);
   });
-  return previous;
+  WarmStart2D warm;
+  for (const auto& [c, law_state] : previous) {
+    warm.interactions.push_back(c);
+    warm.law_states.push_back(law_state);
+  }
+  return warm;
 }
 
 }  // namespace lmgc::solver

@@ -18,7 +18,12 @@ grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& 
 
 // The interactions of a Vloc_Rloc.INI as the "previous step" of the first step (warm start):
 // reactions (rl/H × h), statuses and internal variables, matched to the scene's contactors.
-// Interactions naming contactors that do not exist are skipped (as LMGC90 does).
-std::vector<Interaction2D> warm_start_2d(const grammar::VlocRlocFile& file, const Scene2D& scene, double h);
+// Interactions naming contactors that do not exist are skipped (as LMGC90 does). The internals are
+// in `law_states`, index for index.
+struct WarmStart2D {
+  std::vector<Interaction2D> interactions;
+  std::vector<LawState2D> law_states;
+};
+WarmStart2D warm_start_2d(const grammar::VlocRlocFile& file, const Scene2D& scene, double h);
 
 }  // namespace lmgc::solver

@@ -48,6 +48,11 @@ concept HasForm2D = requires(const Law& law, LocalProblem2D& c, const LawStep& s
   prepare(law, c, step);
 };
 
+template <class Law>
+concept FinishesWithState2D = requires(const Law& law, Interaction2D& c, LawState2D& s, const LawStep& step) {
+  finish(law, c, s, step);
+};
+
 template <std::size_t... I>
 bool from_card(std::string_view keyword, const LawParameters& p, ContactLaw& law, std::index_sequence<I...>) {
   const auto try_one = [&]<std::size_t K>() {
@@ -88,10 +93,27 @@ void prepare_law(const ContactLaw& law, LocalProblem2D& c, const LawStep& step) 
       law);
 }
 
-void finish_law(const ContactLaw& law, Interaction2D& c, const LawStep& step) {
+bool keeps_law_state_2d(const ContactLaw& law) {
+  // Its own internals (which its prepare, checks and finish read and write), or internals that
+  // LMGC90 writes for it and a Vloc_Rloc.INI may hold.
+  const bool in_code = std::visit(
+      [](const auto& p) {
+        using Law = std::decay_t<decltype(p)>;
+        return Law::internals_2d > 0 || FinishesWithState2D<Law>;
+      },
+      law);
+  const grammar::LawKind* kind = grammar::find_law_kind(law_keyword(law));
+  return in_code || (kind && kind->internals_2d.count > 0);
+}
+
+void finish_law(const ContactLaw& law, Interaction2D& c, LawState2D& state, const LawStep& step) {
   std::visit(
       [&](const auto& p) {
-        if constexpr (HasForm2D<std::decay_t<decltype(p)>>) finish(p, c, step);
+        using Law = std::decay_t<decltype(p)>;
+        if constexpr (FinishesWithState2D<Law>)
+          finish(p, c, state, step);
+        else if constexpr (HasForm2D<Law>)
+          finish(p, c, step);
       },
       law);
 }

@@ -42,10 +42,13 @@ bool law_from_card(std::string_view keyword, const LawParameters& parameters, Co
 
 // 2D: whether the law has a 2D form (false for the 3D-only ones: rods, wires).
 bool provided_in_2d(const ContactLaw& law);
-// 2D: the derived problem of the law (c.covfree, c.correction, c.WW, c.mu, c.inactive, statuses),
-// after the caller has reset them; and the end-of-step statuses and internal variables.
+// 2D: the derived problem of the law (c.covfree, c.correction, c.WW, c.mu, c.inactive, statuses, the
+// internals in c.internal), after the caller has reset them; and the end-of-step statuses and
+// internal variables (in `state`, the interaction's LawState2D). A law for which keeps_law_state_2d
+// is false has no internal variable: its c.internal stay 0 and `state` is not touched.
+bool keeps_law_state_2d(const ContactLaw& law);
 void prepare_law(const ContactLaw& law, LocalProblem2D& c, const LawStep& step);
-void finish_law(const ContactLaw& law, Interaction2D& c, const LawStep& step);
+void finish_law(const ContactLaw& law, Interaction2D& c, LawState2D& state, const LawStep& step);
 
 // 3D: the same; prepare resets c.covfree, c.inactive, c.correction first and returns false for a
 // law that has no 3D form. `state` is the interaction's LawState3D; a law for which

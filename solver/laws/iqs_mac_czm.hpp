@@ -36,10 +36,10 @@ inline void use_beta(const IqsMacCzm& law, LocalProblem2D& c, double beta, doubl
 
 // updt_CZM with the jumps δ + h u, from the step's starting β: taken when it does not grow and the
 // stored energy exceeds w (§3.5). False when not taken.
-inline bool damaged_beta(const IqsMacCzm& law, const Interaction2D& c, const Eigen::Vector2d& u, double h,
-                         double& beta) {
-  const double dt = c.internal[1] + h * u(0), dn = c.internal[2] + h * u(1);
-  const double beta_start = c.internal[3];
+inline bool damaged_beta(const IqsMacCzm& law, const std::array<double, 6>& internal,
+                         const Eigen::Vector2d& u, double h, double& beta) {
+  const double dt = internal[1] + h * u(0), dn = internal[2] + h * u(1);
+  const double beta_start = internal[3];
   const double energy = law.ct * (dt * dt) + law.cn * (dn > 0.0 ? dn * dn : 0.0);
   beta = (h * law.dupre + beta_start * law.visco) / (law.visco + h * energy);
   if (beta < 1e-12) beta = 0.0;
@@ -65,22 +65,22 @@ inline void prepare(const IqsMacCzm& law, LocalProblem2D& c, const LawStep& step
 inline bool update_at_check(const IqsMacCzm& law, LocalProblem2D& c, const Eigen::Vector2d& u,
                             const LawStep& step) {
   double beta = 0.0;
-  if (!damaged_beta(law, c, u, step.h, beta) || beta == c.internal[5]) return false;
+  if (!damaged_beta(law, c.internal, u, step.h, beta) || beta == c.internal[5]) return false;
   use_beta(law, c, beta, step.h);
   return true;
 }
 
 // Damage (§3.5) at the end of the step: β from the final velocity when taken, else the checks' β;
 // the jumps δ += h u; TPSini at first damage.
-inline void finish(const IqsMacCzm& law, Interaction2D& c, const LawStep& step) {
+inline void finish(const IqsMacCzm& law, Interaction2D& c, LawState2D& s, const LawStep& step) {
   const double h = step.h;
   double beta = 0.0;
-  const bool taken = damaged_beta(law, c, c.u, h, beta);
-  c.internal[1] += h * c.u(0);
-  c.internal[2] += h * c.u(1);
-  c.internal[3] = taken ? beta : c.internal[5];
-  c.internal[5] = 0.0;
-  if (c.internal[3] < 1.0 && c.internal[4] < 0.0) c.internal[4] = step.time;
+  const bool taken = damaged_beta(law, s.internal, c.u, h, beta);
+  s.internal[1] += h * c.u(0);
+  s.internal[2] += h * c.u(1);
+  s.internal[3] = taken ? beta : s.internal[5];
+  s.internal[5] = 0.0;
+  if (s.internal[3] < 1.0 && s.internal[4] < 0.0) s.internal[4] = step.time;
 }
 
 // 3D: the local problem of damage β (iter_CZM_3D :4509-4560, get_fric_CZM :5858-5898): while

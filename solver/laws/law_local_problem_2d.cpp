@@ -15,8 +15,8 @@ void prepare_local_problem_2d(const ContactLaw& law, LocalProblem2D& c, const La
   if (c.WW(0, 0) <= 1e-6 * c.WW(1, 1)) c.WW(0, 0) = 1e-6 * c.WW(1, 1);
 }
 
-void finish_step_2d(const ContactLaw& law, Interaction2D& c, double h, double time) {
-  finish_law(law, c, LawStep{h, time, false});
+void finish_step_2d(const ContactLaw& law, Interaction2D& c, LawState2D& state, double h, double time) {
+  finish_law(law, c, state, LawStep{h, time, false});
 }
 
 }  // namespace lmgc::solver

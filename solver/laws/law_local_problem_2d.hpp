@@ -16,7 +16,7 @@ namespace lmgc::solver {
 // flags (LawStep).
 void prepare_local_problem_2d(const ContactLaw& law, LocalProblem2D& c, const LawStep& step);
 
-// End of step: law statuses (wet, Mohr) and internal variables.
-void finish_step_2d(const ContactLaw& law, Interaction2D& c, double h, double time);
+// End of step: law statuses (wet, Mohr) and internal variables (the interaction's `state`).
+void finish_step_2d(const ContactLaw& law, Interaction2D& c, LawState2D& state, double h, double time);
 
 }  // namespace lmgc::solver

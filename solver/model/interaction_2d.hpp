@@ -15,12 +15,12 @@ enum class PairFamily2D : std::uint8_t { DKDKx, DKKDx, DKJCx, DKPLx, PTPT2, PLPL
 inline constexpr int kPairFamily2DCount = 7;
 static_assert(static_cast<int>(PairFamily2D::PLJCx) + 1 == kPairFamily2DCount);
 
-// 64-byte aligned, 256 bytes in four cache lines: the per-step passes over a large list (detection,
+// 64-byte aligned, 192 bytes in three cache lines: the per-step passes over a large list (detection,
 // warm start, NLGS set-up and end) move whole lines. The fields are grouped by the passes that read
-// them: the warm start (recup_rloc) touches only the first two lines of this step's and of the stored
-// list's records (key, reaction, statuses, point, internal variables), the NLGS set-up reads the
-// geometry of lines 2-3.
-// The law's local problem is not kept here (LocalProblem2D below).
+// them: the warm start (recup_rloc) touches only the first line of this step's and of the stored
+// list's records (key, reaction, statuses, point), the NLGS set-up reads the geometry of lines 1-2.
+// The law's local problem is not kept here (LocalProblem2D below), nor its internal variables
+// (LawState2D, kept beside the list only where a law has some).
 struct alignas(64) Interaction2D {
   // Line 0: the key, the reaction and the statuses.
   PairFamily2D family = PairFamily2D::DKDKx;
@@ -39,26 +39,26 @@ struct alignas(64) Interaction2D {
   Eigen::Vector2d r = Eigen::Vector2d::Zero();
   Eigen::Vector2d point = Eigen::Vector2d::Zero();  // contact point
 
-  // Line 1: the law's internal variables and the rest of the pair's description.
-  std::array<double, 6> internal{};     // law internal variables (contact-laws.md, state-and-outputs §1.4.4)
-  std::int32_t antagonist_segment = 0;  // PLPLx: segment of the antagonist polygon
-  std::int32_t visibility = 0;          // index into Scene2D::visibility
-  std::int32_t periodic_shift = 0;      // antagonist shifted by this many periods in x
-
-  // Lines 2-3: geometry at the detection configuration (θ-scheme "TT" configuration).
-  Eigen::Vector2d normal = Eigen::Vector2d::Zero();   // from antagonist to candidate
-  Eigen::Vector2d tangent = Eigen::Vector2d::Zero();  // (n_y, -n_x)
-  double gap_begin = 0.0;                             // signed distance at detection [m]
-  double length = 1.0;                                // contact length used by cohesive laws
-  double cohesive_shift_t = 0.0;                      // cohesive zone laws: r_coh's tangential shift
-  double mu = 0.0;                                    // friction coefficient of the law's local problem
+  // Lines 1-2: geometry at the detection configuration (θ-scheme "TT" configuration), and the rest
+  // of the pair's description.
+  Eigen::Vector2d normal = Eigen::Vector2d::Zero();  // from antagonist to candidate
+  double gap_begin = 0.0;                            // signed distance at detection [m]
+  double length = 1.0;                               // contact length used by cohesive laws
+  double cohesive_shift_t = 0.0;                     // cohesive zone laws: r_coh's tangential shift
+  double mu = 0.0;                                   // friction coefficient of the law's local problem
   // Lever-arm products ℓ×t and ℓ×n of each body (H rows of the rotational dof).
   Eigen::Vector2d lever_candidate = Eigen::Vector2d::Zero();
   Eigen::Vector2d lever_antagonist = Eigen::Vector2d::Zero();
   Eigen::Vector2d velocity_begin = Eigen::Vector2d::Zero();  // local (t, n) relative velocity at t_begin
   Eigen::Vector2d u = Eigen::Vector2d::Zero();
+  std::int32_t antagonist_segment = 0;  // PLPLx: segment of the antagonist polygon
+  std::int32_t visibility = 0;          // index into Scene2D::visibility
+  std::int32_t periodic_shift = 0;      // antagonist shifted by this many periods in x
+
+  // The tangent (n_y, -n_x): computed, not kept (16 bytes of every record of every pass).
+  Eigen::Vector2d tangent() const { return Eigen::Vector2d(normal.y(), -normal.x()); }
 };
-static_assert(sizeof(Interaction2D) == 256);
+static_assert(sizeof(Interaction2D) == 192);
 
 // An interaction with the local problem of its law (contact-laws.md §2): Delassus block, modified
 // block, shift, correction. What a 2D law's prepare works on; the NLGS set-up builds it for one
@@ -70,6 +70,17 @@ struct LocalProblem2D : Interaction2D {
   Eigen::Vector2d covfree = Eigen::Vector2d::Zero();
   Eigen::Vector2d correction = Eigen::Vector2d::Zero();  // corr added to the auxiliary reaction
   Eigen::Vector2d cohesive_slope = Eigen::Vector2d::Zero();
+  // The contact's internal variables (its LawState2D's, or 0 where the scene keeps none): the set-up
+  // copies them in and back.
+  std::array<double, 6> internal{};
+};
+
+// A 2D law's internal variables (contact-laws.md, state-and-outputs §1.4.4), warm started and
+// written to Vloc_Rloc. Kept beside the interaction list, index for index, only in a scene with a
+// law that has some (keeps_law_state_2d): in every record they were 48 of the bytes each pass over
+// a 64k-disk list streamed, for laws (IQS_CLB, ...) that have none.
+struct LawState2D {
+  std::array<double, 6> internal{};
 };
 
 }  // namespace lmgc::solver

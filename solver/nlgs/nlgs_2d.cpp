@@ -132,9 +132,10 @@ inline Vector2d minus_w_r(const SweepContact2D& c, const Vector2d& u, double rt,
 
 Matrix2d delassus_block(const Interaction2D& c, const std::vector<Vector3d>& inverse_mass) {
   Matrix2d W = Matrix2d::Zero();
+  const Vector2d tangent = c.tangent();
   for (int side = 0; side < 2; ++side) {
     const Vector2d& lever = side == 0 ? c.lever_candidate : c.lever_antagonist;
-    const Vector3d t(c.tangent.x(), c.tangent.y(), lever(0)), n(c.normal.x(), c.normal.y(), lever(1));
+    const Vector3d t(tangent.x(), tangent.y(), lever(0)), n(c.normal.x(), c.normal.y(), lever(1));
     const Vector3d& m =
         inverse_mass[static_cast<std::size_t>(side == 0 ? c.candidate_body : c.antagonist_body)];
     W(0, 0) += t.cwiseProduct(m).dot(t);
@@ -209,8 +210,8 @@ void cohesive_solve(const SweepContact2D& c, const LawTerms2D& l, double vt, dou
 }  // namespace
 
 NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray<Interaction2D>& contacts,
-                         double h, double time, const NlgsOptions& options, bool first_step,
-                         bool first_preparation, QuickScramble& scramble) {
+                         std::span<LawState2D> law_states, double h, double time, const NlgsOptions& options,
+                         bool first_step, bool first_preparation, QuickScramble& scramble) {
   NlgsResult result;
   const std::size_t count = contacts.size();
   std::vector<Vector3d>& v = bodies.velocity;
@@ -257,13 +258,16 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
   std::size_t loaded = 0;  // contacts with a reaction: the warm start's, then each check's
   // The law's local problem is built beside each interaction, which keeps what the law changed.
   LocalProblem2D c;
+  const bool keeps_law_state = !law_states.empty();
   for (std::size_t a = 0; a < count; ++a) {
     static_cast<Interaction2D&>(c) = contacts[a];
+    c.internal = keeps_law_state ? law_states[a].internal : std::array<double, 6>{};
     const ContactLaw& law = scene.laws[static_cast<std::size_t>(c.law)].law;
     c.W = delassus_block(c, inverse_mass);
     prepare_local_problem_2d(law, c, law_step);
     if (c.inactive) c.r.setZero();
     contacts[a] = c;
+    if (keeps_law_state) law_states[a].internal = c.internal;
     SweepContact2D& k = hot[slot[a]];
     k.cd = c.candidate_body;
     k.an = c.antagonist_body;
@@ -342,8 +346,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     const auto l = static_cast<std::size_t>(contacts[a].law);
     if (!law_updates_at_check[l]) return false;
     static_cast<Interaction2D&>(problem) = contacts[a];
+    problem.internal = keeps_law_state ? law_states[a].internal : std::array<double, 6>{};
     if (!update_law_at_check(scene.laws[l].law, problem, Vector2d(ut, un), law_step)) return false;
     contacts[a] = problem;
+    if (keeps_law_state) law_states[a].internal = problem.internal;
     return true;
   };
 
@@ -694,7 +700,9 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     const Vector3d f(s.rt * tx + s.rn * k.nx(), s.rt * ty + s.rn * k.ny(), 0.0);
     bodies.impulse[static_cast<std::size_t>(k.cd)] += f + Vector3d(0, 0, s.rt * k.gcd_t() + s.rn * k.gcd_n());
     bodies.impulse[static_cast<std::size_t>(k.an)] -= f + Vector3d(0, 0, s.rt * k.gan_t() + s.rn * k.gan_n());
-    finish_step_2d(scene.laws[static_cast<std::size_t>(c.law)].law, c, h, time);
+    LawState2D none;  // a law without internals does not touch it
+    finish_step_2d(scene.laws[static_cast<std::size_t>(c.law)].law, c, keeps_law_state ? law_states[a] : none,
+                   h, time);
   }
   result.residual_absolute = std::sqrt(residual2);
   result.residual_relative = result.free_velocity_norm > 0.0

@@ -1,5 +1,6 @@
 #pragma once
 // Non-linear Gauss–Seidel over the 2D interactions of a step. spec: numerics.md §3-§4.
+#include <span>
 #include <string>
 #include <vector>
 
@@ -15,9 +16,10 @@ namespace lmgc::solver {
 // Builds the Delassus blocks and local problems, starts from the reactions already in
 // `contacts` (warm start), iterates, then sets velocities (bodies.velocity = V_free + M⁻¹ H r),
 // relative velocities and statuses. `first_step`, `first_preparation`: LawStep's. `scramble`: the
-// run's quick-scramble generator, used when options.quick_scramble.
+// run's quick-scramble generator, used when options.quick_scramble. `law_states`: the interactions'
+// internal variables, index for index, or empty in a scene whose laws have none.
 NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray<Interaction2D>& contacts,
-                         double h, double time, const NlgsOptions& options, bool first_step,
-                         bool first_preparation, QuickScramble& scramble);
+                         std::span<LawState2D> law_states, double h, double time, const NlgsOptions& options,
+                         bool first_step, bool first_preparation, QuickScramble& scramble);
 
 }  // namespace lmgc::solver

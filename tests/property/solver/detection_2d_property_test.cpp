@@ -158,7 +158,8 @@ RC_GTEST_PROP(Detection2D, EachInteractionCarriesTheRelativeVelocityOfItsBodiesA
     const Vector3d& a = v[static_cast<std::size_t>(c.candidate_body)];
     const Vector3d& b = v[static_cast<std::size_t>(c.antagonist_body)];
     const Vector2d relative = a.head<2>() - b.head<2>();
-    const double ut = c.tangent.dot(relative) + c.lever_candidate(0) * a.z() - c.lever_antagonist(0) * b.z();
+    const double ut =
+        c.tangent().dot(relative) + c.lever_candidate(0) * a.z() - c.lever_antagonist(0) * b.z();
     const double un = c.normal.dot(relative) + c.lever_candidate(1) * a.z() - c.lever_antagonist(1) * b.z();
     const double scale = 1.0 + a.norm() + b.norm();
     RC_ASSERT(std::fabs(c.velocity_begin(0) - ut) <= 1e-12 * scale);

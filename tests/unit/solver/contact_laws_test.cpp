@@ -31,6 +31,14 @@ LocalProblem2D contact_2d(double gap, ContactStatus begin = ContactStatus::nknow
   return c;
 }
 
+// The end of a 2D step on a local problem's internals, as the NLGS keeps them: in the
+// interaction's LawState2D.
+void finish_law(const ContactLaw& law, LocalProblem2D& c, const LawStep& step) {
+  LawState2D state{c.internal};
+  solver::finish_law(law, c, state, step);
+  c.internal = state.internal;
+}
+
 // A 3D interaction with its law state, as the step keeps them side by side.
 struct Contact3D : Interaction3D {
   LawState3D state;
