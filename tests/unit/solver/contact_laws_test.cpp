@@ -117,6 +117,21 @@ TEST(ContactLawTable, OnlyLawsWithInternalsCohesionOrAReferenceLengthKeepA3DLawS
   EXPECT_TRUE(keeps_law_state_3d(GapSgrClb{0.3}));  // LMGC90 writes its 3D internal
 }
 
+// In 2D a law keeps a LawState2D (its internal variables) beside each interaction when it has
+// internals, or when LMGC90 writes 2D internals for it.
+TEST(ContactLawTable, OnlyLawsWithInternalsKeepA2DLawState) {
+  EXPECT_FALSE(keeps_law_state_2d(IqsClb{0.3}));
+  EXPECT_FALSE(keeps_law_state_2d(IqsDsClb{0.2, 0.3}));
+  EXPECT_FALSE(keeps_law_state_2d(RstClb{0.5, 0.0, 0.3}));
+  EXPECT_FALSE(keeps_law_state_2d(IqsMohrDsClb{}));
+  EXPECT_FALSE(keeps_law_state_2d(IqsWetDsClb{}));
+  EXPECT_FALSE(keeps_law_state_2d(NoNlgsBranch{0.3}));  // MD_JKRs
+  EXPECT_TRUE(keeps_law_state_2d(IqsMacCzm{}));
+  EXPECT_TRUE(keeps_law_state_2d(IqsClbG0{}));
+  EXPECT_TRUE(keeps_law_state_2d(GapSgrClb{0.3}));
+  EXPECT_TRUE(keeps_law_state_2d(VelSgrDsClb{0.2, 0.3}));
+}
+
 TEST(IqsClb, ClosesAnOpenGapWithinTheStepButNeverPushesOut) {
   LocalProblem2D open = contact_2d(0.002), sunk = contact_2d(-0.002);
   prepare_law(IqsClb{0.4}, open, LawStep{h});
