@@ -62,8 +62,9 @@ static_assert(sizeof(Interaction2D) == 192);
 
 // An interaction with the local problem of its law (contact-laws.md §2): Delassus block, modified
 // block, shift, correction. What a 2D law's prepare works on; the NLGS set-up builds it for one
-// contact at a time and keeps the interaction's part. Kept in the list, these 96 bytes took it from
-// four to six cache lines per interaction, which detection wrote and the set-up wrote again.
+// contact at a time and keeps the interaction's part. Kept in the list, these 96 bytes (and the
+// internals) would take it from three to six cache lines per interaction, which detection wrote and
+// the set-up wrote again.
 struct LocalProblem2D : Interaction2D {
   Eigen::Matrix2d W = Eigen::Matrix2d::Zero();
   Eigen::Matrix2d WW = Eigen::Matrix2d::Zero();

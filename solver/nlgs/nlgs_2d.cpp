@@ -681,6 +681,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
   double residual2 = 0.0;
   result.active = 0;
   std::fill(bodies.impulse.begin(), bodies.impulse.end(), Vector3d::Zero());
+  LawState2D unused_law_state;  // the state handed to a law without internals, which does not touch it
   for (std::size_t a = 0; a < count; ++a) {
     const SweepContact2D& k = hot[slot[a]];
     const ContactReaction2D& s = reaction[slot[a]];
@@ -700,9 +701,8 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     const Vector3d f(s.rt * tx + s.rn * k.nx(), s.rt * ty + s.rn * k.ny(), 0.0);
     bodies.impulse[static_cast<std::size_t>(k.cd)] += f + Vector3d(0, 0, s.rt * k.gcd_t() + s.rn * k.gcd_n());
     bodies.impulse[static_cast<std::size_t>(k.an)] -= f + Vector3d(0, 0, s.rt * k.gan_t() + s.rn * k.gan_n());
-    LawState2D none;  // a law without internals does not touch it
-    finish_step_2d(scene.laws[static_cast<std::size_t>(c.law)].law, c, keeps_law_state ? law_states[a] : none,
-                   h, time);
+    finish_step_2d(scene.laws[static_cast<std::size_t>(c.law)].law, c,
+                   keeps_law_state ? law_states[a] : unused_law_state, h, time);
   }
   result.residual_absolute = std::sqrt(residual2);
   result.residual_relative = result.free_velocity_norm > 0.0
