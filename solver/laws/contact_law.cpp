@@ -53,6 +53,14 @@ concept FinishesWithState2D = requires(const Law& law, Interaction2D& c, LawStat
   finish(law, c, s, step);
 };
 
+// Whether LMGC90 writes internal variables for the law (2D or 3D): looked up in the law catalogue once
+// per law type, since the detection of every step asks (scene_keeps_law_state_2d/3d).
+template <class Law>
+const grammar::LawKind* catalogue_kind() {
+  static const grammar::LawKind* const kind = grammar::find_law_kind(Law::keyword);
+  return kind;
+}
+
 template <std::size_t... I>
 bool from_card(std::string_view keyword, const LawParameters& p, ContactLaw& law, std::index_sequence<I...>) {
   const auto try_one = [&]<std::size_t K>() {
@@ -96,14 +104,13 @@ void prepare_law(const ContactLaw& law, LocalProblem2D& c, const LawStep& step) 
 bool keeps_law_state_2d(const ContactLaw& law) {
   // Its own internals (which its prepare, checks and finish read and write), or internals that
   // LMGC90 writes for it and a Vloc_Rloc.INI may hold.
-  const bool in_code = std::visit(
+  return std::visit(
       [](const auto& p) {
         using Law = std::decay_t<decltype(p)>;
-        return Law::internals_2d > 0 || FinishesWithState2D<Law>;
+        const grammar::LawKind* kind = catalogue_kind<Law>();
+        return Law::internals_2d > 0 || FinishesWithState2D<Law> || (kind && kind->internals_2d.count > 0);
       },
       law);
-  const grammar::LawKind* kind = grammar::find_law_kind(law_keyword(law));
-  return in_code || (kind && kind->internals_2d.count > 0);
 }
 
 void finish_law(const ContactLaw& law, Interaction2D& c, LawState2D& state, const LawStep& step) {
@@ -123,16 +130,16 @@ bool provided_in_3d(const ContactLaw& law) {
 }
 
 bool keeps_law_state_3d(const ContactLaw& law) {
-  const bool in_code = std::visit(
-      [](const auto& p) {
-        using Law = std::decay_t<decltype(p)>;
-        return PreparesWithState3D<Law> || FinishesWithState3D<Law> || UpdatesAtCheckWithState3D<Law>;
-      },
-      law);
   // A law whose 3D internals LMGC90 writes keeps them from a Vloc_Rloc.INI to the outputs even where
   // no code of ours reads them.
-  const grammar::LawKind* kind = grammar::find_law_kind(law_keyword(law));
-  return in_code || (kind && kind->internals_3d.count > 0);
+  return std::visit(
+      [](const auto& p) {
+        using Law = std::decay_t<decltype(p)>;
+        const grammar::LawKind* kind = catalogue_kind<Law>();
+        return PreparesWithState3D<Law> || FinishesWithState3D<Law> || UpdatesAtCheckWithState3D<Law> ||
+               (kind && kind->internals_3d.count > 0);
+      },
+      law);
 }
 
 bool prepare_law(const ContactLaw& law, Interaction3D& c, LawState3D& state, const LawStep& step) {
