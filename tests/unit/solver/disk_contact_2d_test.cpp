@@ -71,5 +71,28 @@ TEST(Rigid2D, RestitutionReversesTheNormalVelocityTimesE) {
   EXPECT_NEAR(scene.bodies.velocity[0].y(), 0.8, 1e-12);
 }
 
+// A contact without reaction whose free velocity opens it is passed by in the sweeps only when its
+// law is plain Signorini–Coulomb: a sound cohesive zone (IQS_MAC_CZM, β = 1 from the first step)
+// holds a disk hanging under a wall although gravity pulls it away and it starts without reaction.
+TEST(Rigid2D, AnOpeningCohesiveContactIsSolvedNotPassedByAndHoldsItsDisk) {
+  SceneBuilder2D b;
+  b.add_disk(0.0, -0.1, 0.1, 1000.0);
+  b.add_fixed_joncx(0.0, 0.05, 0.0, 1.0, 0.05);
+  b.add_law("mac01", IqsMacCzm{0.3, 0.3, 1e9, 1e9, 0.0, 1e6});
+  b.see("DISKx", "BLEUx", "mac01", "JONCx", "WALLx", 0.01);
+  Scene2D scene = b.build();
+  RunState2D state;
+  state.h = 1e-3;
+  state.visibility = build_visibility_index(scene);
+  for (int i = 0; i < 50; ++i) {
+    const NlgsResult step = step_2d(scene, state, tight());
+    ASSERT_TRUE(step.converged) << "step " << i;
+  }
+  ASSERT_EQ(state.contacts.size(), 1u);
+  EXPECT_LT(state.contacts[0].r(1), 0.0);  // a tensile reaction
+  // Free fall would have taken it 1.2 cm down in 50 ms; the zone's stiffness lets it sag by microns.
+  EXPECT_LT(std::abs(scene.bodies.displacement[0].y()), 1e-5);
+}
+
 }  // namespace
 }  // namespace lmgc::solver
