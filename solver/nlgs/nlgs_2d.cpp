@@ -3,9 +3,9 @@
 // velocity shift, μ, the block's reciprocals: 128 bytes) and write a separate one of reactions (24 bytes).
 // A visit to a contact without reaction, which mostly ends in passing it by, reads a 48-byte record of
 // its own (OpenContactTest2D) instead of the contact's. Laws that modify the block or add a correction
-// (cohesive, wet, glued, elastic...) keep those terms in an array that only they read. On a 64k-disk box the sweeps stream these arrays from memory: one
-// 192-byte record read and written back per update was nearly twice the traffic. The full
-// Interaction2D records are read before and written after.
+// (cohesive, wet, glued, elastic...) keep those terms in an array that only they read. On a 64k-disk box the
+// sweeps stream these arrays from memory: one 192-byte record read and written back per update was nearly
+// twice the traffic. The full Interaction2D records are read before and written after.
 #include "solver/nlgs/nlgs_2d.hpp"
 
 #include <Eigen/LU>
