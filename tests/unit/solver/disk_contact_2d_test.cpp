@@ -90,7 +90,7 @@ TEST(Rigid2D, AnOpeningCohesiveContactIsSolvedNotPassedByAndHoldsItsDisk) {
   }
   ASSERT_EQ(state.contacts.size(), 1u);
   EXPECT_LT(state.contacts[0].r(1), 0.0);  // a tensile reaction
-  // Free fall would have taken it 1.2 cm down in 50 ms; the zone's stiffness lets it sag by microns.
+  // Free fall would have taken it 1.2 cm down in 50 ms; the zone's stiffness lets it sag 0.3 µm.
   EXPECT_LT(std::abs(scene.bodies.displacement[0].y()), 1e-5);
 }
 
