@@ -6,6 +6,7 @@
 
 #include "solver/integrator/step_2d.hpp"
 #include "solver/model/scene_builder_2d.hpp"
+#include "tests/support/nlgs_options.hpp"
 
 namespace lmgc::solver {
 namespace {
@@ -13,16 +14,6 @@ namespace {
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 constexpr double g = 9.81;
-
-NlgsOptions converged_options() {
-  NlgsOptions o;
-  o.norm = NlgsNorm::quad;
-  o.tolerance = 1e-10;
-  o.gs_it1 = 20;
-  o.gs_it2 = 500;
-  o.residual_target = 1e-12;
-  return o;
-}
 
 RunState2D run_state(const Scene2D& scene, double h, double theta = 0.5) {
   RunState2D s;
@@ -46,7 +37,7 @@ TEST(Rigid2DAnalytic, BounceHeightsFollowRestitutionSquared) {
   std::vector<double> apexes;
   double previous_vy = 0.0;
   for (int i = 0; i < 60000 && apexes.size() < 3; ++i) {
-    step_2d(scene, state, converged_options());
+    step_2d(scene, state, test::converged_nlgs_options(20, 1e-12));
     const double vy = scene.bodies.velocity[0].y();
     if (previous_vy > 0.0 && vy <= 0.0)
       apexes.push_back(scene.bodies.reference[0].y() + scene.bodies.displacement[0].y() - r);
@@ -72,9 +63,9 @@ void block_on_slope(double alpha, double mu, double& acceleration, double& speed
   b.set_gravity(Vector2d(g * std::sin(alpha), -g * std::cos(alpha)));
   Scene2D scene = b.build();
   RunState2D state = run_state(scene, 1e-3);
-  for (int i = 0; i < 200; ++i) step_2d(scene, state, converged_options());
+  for (int i = 0; i < 200; ++i) step_2d(scene, state, test::converged_nlgs_options(20, 1e-12));
   const double v1 = scene.bodies.velocity[0].x();
-  for (int i = 0; i < 200; ++i) step_2d(scene, state, converged_options());
+  for (int i = 0; i < 200; ++i) step_2d(scene, state, test::converged_nlgs_options(20, 1e-12));
   const double v2 = scene.bodies.velocity[0].x();
   acceleration = (v2 - v1) / (200 * 1e-3);
   speed = v2;
@@ -108,9 +99,9 @@ TEST(Rigid2DAnalytic, DiskRollsWithTwoThirdsGSinAlpha) {
   b.set_gravity(Vector2d(g * std::sin(alpha), -g * std::cos(alpha)));
   Scene2D scene = b.build();
   RunState2D state = run_state(scene, 1e-3);
-  for (int i = 0; i < 100; ++i) step_2d(scene, state, converged_options());
+  for (int i = 0; i < 100; ++i) step_2d(scene, state, test::converged_nlgs_options(20, 1e-12));
   const double v1 = scene.bodies.velocity[0].x();
-  for (int i = 0; i < 300; ++i) step_2d(scene, state, converged_options());
+  for (int i = 0; i < 300; ++i) step_2d(scene, state, test::converged_nlgs_options(20, 1e-12));
   const double v2 = scene.bodies.velocity[0].x();
   const double a = (v2 - v1) / 0.3;
   EXPECT_NEAR(a, 2.0 / 3.0 * g * std::sin(alpha), 1e-6 * g);
@@ -131,7 +122,7 @@ TEST(Rigid2DAnalytic, ColumnOfTwentyDisksCarriesTheWeightAbove) {
   b.see("DISKx", "BLEUx", "iqsc0", "JONCx", "WALLx", 0.001);
   Scene2D scene = b.build();
   RunState2D state = run_state(scene, 1e-3);
-  for (int i = 0; i < 20; ++i) step_2d(scene, state, converged_options());
+  for (int i = 0; i < 20; ++i) step_2d(scene, state, test::converged_nlgs_options(20, 1e-12));
   const double weight = scene.bodies.mass[0] * g;
   ASSERT_EQ(state.contacts.size(), static_cast<std::size_t>(n));
   for (const Interaction2D& c : state.contacts) {
@@ -157,7 +148,7 @@ TEST(Rigid2DAnalytic, HeadOnCollisionConservesMomentumAndReversesTimesE) {
   Scene2D scene = b.build();
   const double m1 = scene.bodies.mass[0], m2 = scene.bodies.mass[1];
   RunState2D state = run_state(scene, 1e-4);
-  for (int i = 0; i < 10; ++i) step_2d(scene, state, converged_options());
+  for (int i = 0; i < 10; ++i) step_2d(scene, state, test::converged_nlgs_options(20, 1e-12));
   const double v1 = scene.bodies.velocity[0].x(), v2 = scene.bodies.velocity[1].x();
   EXPECT_NEAR(m1 * v1 + m2 * v2, m1 * 2.0 + m2 * -1.0, 1e-10 * m2);
   EXPECT_NEAR(v2 - v1, e * 3.0, 1e-10);
@@ -179,7 +170,7 @@ TEST(Rigid2DAnalytic, SoundCohesiveInterfaceHoldsAHangingDiskFromTheFirstStepOnl
     Scene2D scene = b.build();
     RunState2D state = run_state(scene, h);
     if (!from_start) state.laws_initialized = true;  // as if an earlier step had had contacts
-    for (int i = 0; i < 200; ++i) step_2d(scene, state, converged_options());
+    for (int i = 0; i < 200; ++i) step_2d(scene, state, test::converged_nlgs_options(20, 1e-12));
     const double moved = std::abs(scene.bodies.displacement[0].y());
     if (from_start) {
       ASSERT_EQ(state.contacts.size(), 1u);
@@ -209,7 +200,7 @@ TEST(Rigid2DAnalytic, CohesiveInterfaceTornInOneStepReactsWithTheBetaItStores) {
   b.set_velocity(lower, Eigen::Vector3d(0.0, -1.0, 0.0));
   Scene2D scene = b.build();
   RunState2D state = run_state(scene, h);
-  NlgsOptions options = converged_options();
+  NlgsOptions options = test::converged_nlgs_options(20, 1e-12);
   options.gs_it1 = 1;  // a check after every sweep
   options.residual_target = 0.0;
   const NlgsResult result = step_2d(scene, state, options);

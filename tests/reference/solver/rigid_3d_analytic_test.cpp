@@ -10,6 +10,7 @@
 #include "solver/detection/point_contact.hpp"
 #include "solver/integrator/step_3d.hpp"
 #include "solver/model/scene_builder_3d.hpp"
+#include "tests/support/nlgs_options.hpp"
 
 namespace lmgc::solver {
 namespace {
@@ -17,15 +18,6 @@ namespace {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 constexpr double g = 9.81;
-
-NlgsOptions converged_options() {
-  NlgsOptions o;
-  o.norm = NlgsNorm::quad;
-  o.tolerance = 1e-10;
-  o.gs_it1 = 10;
-  o.gs_it2 = 500;
-  return o;
-}
 
 RunState3D run_state(double h, double theta = 0.5) {
   RunState3D s;
@@ -58,7 +50,7 @@ TEST(Rigid3DAnalytic, SphereBounceHeightsFollowRestitutionSquared) {
   std::vector<double> apexes;
   double previous_vz = 0.0;
   for (int i = 0; i < 60000 && apexes.size() < 3; ++i) {
-    const NlgsResult result = step_3d(scene, state, converged_options());
+    const NlgsResult result = step_3d(scene, state, test::converged_nlgs_options(10));
     ASSERT_FALSE(result.diverged);
     const double vz = scene.bodies.velocity[static_cast<std::size_t>(ball)](2);
     if (previous_vz > 0.0 && vz <= 0.0) apexes.push_back(centre_of(scene, ball).z() - r);
@@ -87,7 +79,7 @@ TEST(Rigid3DAnalytic, SphereRollsDownASlopeWithFiveSeventhsGSinAlpha) {
   Scene3D scene = b.build();
   RunState3D state = run_state(1e-3);
   const int steps = 500;
-  for (int i = 0; i < steps; ++i) step_3d(scene, state, converged_options());
+  for (int i = 0; i < steps; ++i) step_3d(scene, state, test::converged_nlgs_options(10));
   const Vector3d v = scene.bodies.velocity[static_cast<std::size_t>(ball)].head<3>();
   const Vector3d down = slope.col(0);
   const double expected = 5.0 / 7.0 * g * std::sin(alpha) * steps * 1e-3;
@@ -111,7 +103,7 @@ TEST(Rigid3DAnalytic, SphereSlidesDownASlopeWithCoulombAcceleration) {
   b.see("SPHER", "BLEUx", "iqs05", "PLANx", "VERTx", 0.01);
   Scene3D scene = b.build();
   RunState3D state = run_state(1e-3);
-  for (int i = 0; i < 300; ++i) step_3d(scene, state, converged_options());
+  for (int i = 0; i < 300; ++i) step_3d(scene, state, test::converged_nlgs_options(10));
   // Still sliding at 0.3 s: friction spins the sphere up at 5/2 μ g cos α / r, too slowly to roll yet.
   const double expected = g * (std::sin(alpha) - mu * std::cos(alpha)) * 0.3;
   EXPECT_NEAR(scene.bodies.velocity[static_cast<std::size_t>(ball)].head<3>().dot(slope.col(0)), expected,
@@ -135,7 +127,7 @@ TEST(Rigid3DAnalytic, ColumnOfTenSpheresCarriesTheWeightAboveWithEitherLocalSolv
     b.see("SPHER", "BLEUx", "iqs05", "SPHER", "BLEUx", 0.001);
     Scene3D scene = b.build();
     RunState3D state = run_state(h);
-    NlgsOptions options = converged_options();
+    NlgsOptions options = test::converged_nlgs_options(10);
     options.diagonal_resolution = diagonal;
     for (int i = 0; i < 200; ++i) step_3d(scene, state, options);
     const double mass = scene.bodies.mass[0];
@@ -167,7 +159,7 @@ TEST(Rigid3DAnalytic, FlatSphereClusterFallsFlatAndSharesItsWeight) {
   b.see("SPHER", "BLEUx", "iqs05", "PLANx", "VERTx", 0.001);
   Scene3D scene = b.build();
   RunState3D state = run_state(h);
-  for (int i = 0; i < 400; ++i) step_3d(scene, state, converged_options());
+  for (int i = 0; i < 400; ++i) step_3d(scene, state, test::converged_nlgs_options(10));
   const auto c = static_cast<std::size_t>(cluster);
   EXPECT_NEAR(centre_of(scene, cluster).z(), r, 1e-6);
   EXPECT_LT(scene.bodies.velocity[c].tail<3>().norm(), 1e-9);
@@ -194,7 +186,7 @@ TEST(Rigid3DAnalytic, TorqueFreeRotationKeepsEnergyThroughThePipeline) {
   scene.bodies.velocity_begin[body] = scene.bodies.velocity[body] = v0;
   const double e0 = kinetic_energy(scene.bodies);
   RunState3D state = run_state(1e-3);
-  for (int i = 0; i < 10000; ++i) step_3d(scene, state, converged_options());
+  for (int i = 0; i < 10000; ++i) step_3d(scene, state, test::converged_nlgs_options(10));
   EXPECT_NEAR(kinetic_energy(scene.bodies), e0, 3e-4 * e0);
 }
 
@@ -215,7 +207,7 @@ TEST(Rigid3DAnalytic, SourcePointReleasesTheNextBodyWhenTheLastIsOneRadiusAway) 
   RunState3D state = run_state(h);
   long entered = 0;
   for (long step = 1; step <= 1000 && entered == 0; ++step) {
-    step_3d(scene, state, converged_options());
+    step_3d(scene, state, test::converged_nlgs_options(10));
     if (scene.bodies.visible[static_cast<std::size_t>(second)])
       entered = step;
     else
@@ -242,7 +234,7 @@ TEST(Rigid3DAnalytic, SpheresMeetAcrossAPeriodicSide) {
   scene.x_period = period;
   RunState3D state = run_state(h);
   // Gap 0.3 + 0.15 - 0.2 = 0.25 m at 1 m/s: the impact happens near t = 0.25 s.
-  for (int step = 0; step < 4000; ++step) step_3d(scene, state, converged_options());
+  for (int step = 0; step < 4000; ++step) step_3d(scene, state, test::converged_nlgs_options(10));
   EXPECT_NEAR(scene.bodies.velocity[static_cast<std::size_t>(moving)](0), 0.0, 1e-9);
   EXPECT_NEAR(scene.bodies.velocity[static_cast<std::size_t>(resting)](0), 1.0, 1e-9);
 }
@@ -265,7 +257,7 @@ Hanging hang_under_a_plane(const ContactLaw& law, double h = 1e-3, int steps = 2
   Scene3D scene = b.build();
   RunState3D state = run_state(h);
   Hanging out;
-  for (int i = 0; i < steps; ++i) step_3d(scene, state, converged_options());
+  for (int i = 0; i < steps; ++i) step_3d(scene, state, test::converged_nlgs_options(10));
   out.z_after = centre_of(scene, ball).z();
   if (!state.contacts.empty()) {
     out.normal_force = state.contacts.front().r(1) / h;
@@ -322,7 +314,7 @@ TEST(Rigid3DAnalytic, CylindersAtRestCarryTheWeightAbove) {
   b.see("SPHER", "BLEUx", "iqs05", "CYLND", "BLEUx", 0.001);
   Scene3D scene = b.build();
   RunState3D state = run_state(h);
-  for (int i = 0; i < 200; ++i) step_3d(scene, state, converged_options());
+  for (int i = 0; i < 200; ++i) step_3d(scene, state, test::converged_nlgs_options(10));
   const auto weight = [&](int body) { return scene.bodies.mass[static_cast<std::size_t>(body)] * g; };
   int ground_points = 0, crossing_points = 0, sphere_points = 0;
   double ground = 0.0, crossing = 0.0, sphere = 0.0;
@@ -354,7 +346,7 @@ TEST(Rigid3DAnalytic, ParallelCylindersTouchAtTwoPointsSharingTheWeight) {
   b.see("CYLND", "BLEUx", "iqs05", "CYLND", "BLEUx", 0.001);
   Scene3D scene = b.build();
   RunState3D state = run_state(h);
-  for (int i = 0; i < 200; ++i) step_3d(scene, state, converged_options());
+  for (int i = 0; i < 200; ++i) step_3d(scene, state, test::converged_nlgs_options(10));
   const double weight = scene.bodies.mass[static_cast<std::size_t>(upper)] * g;
   std::vector<double> forces;
   for (const Interaction3D& c : state.contacts)
@@ -375,7 +367,7 @@ TEST(Rigid3DAnalytic, SphereInsideADrumRestsOnItsInnerWall) {
   b.see("SPHER", "BLEUx", "iqs05", "DNLYC", "VERTx", 0.001);
   Scene3D scene = b.build();
   RunState3D state = run_state(h);
-  for (int i = 0; i < 100; ++i) step_3d(scene, state, converged_options());
+  for (int i = 0; i < 100; ++i) step_3d(scene, state, test::converged_nlgs_options(10));
   ASSERT_EQ(state.contacts.size(), 1u);
   const Interaction3D& c = state.contacts.front();
   EXPECT_EQ(c.family, PairFamily3D::SPDCx);
@@ -420,7 +412,7 @@ TEST(Rigid3DAnalytic, ElasticWireHoldsAHangingMassAtItsStaticElongation) {
   ASSERT_EQ(s.scene.point_links.size(), 1u);
   EXPECT_DOUBLE_EQ(s.scene.point_links.front().reference_length, L0);
   RunState3D state = run_state(h);
-  for (int i = 0; i < 1000; ++i) step_3d(s.scene, state, converged_options());
+  for (int i = 0; i < 1000; ++i) step_3d(s.scene, state, test::converged_nlgs_options(10));
   ASSERT_EQ(state.contacts.size(), 1u);
   const Interaction3D& c = state.contacts.front();
   EXPECT_EQ(c.family, PairFamily3D::PTPT3);
@@ -457,7 +449,7 @@ TEST(Rigid3DAnalytic, ElasticWireAcrossAPeriodicSideHoldsTheMassAtItsStaticElong
     const auto i = static_cast<std::size_t>(ball);
     scene.bodies.displacement_begin[i].x() = scene.bodies.displacement[i].x() = -delta;
     RunState3D state = run_state(h);
-    for (int n = 0; n < 300; ++n) step_3d(scene, state, converged_options());
+    for (int n = 0; n < 300; ++n) step_3d(scene, state, test::converged_nlgs_options(10));
     if (!periodic) {
       EXPECT_TRUE(state.contacts.empty());
       EXPECT_LT(centre_of(scene, ball).x(), 2.2 - 0.4);  // fell freely: 0.44 m in 0.3 s
@@ -480,7 +472,7 @@ TEST(Rigid3DAnalytic, SlackElasticWireLetsTheMassFallFreely) {
   const double L0 = 1.0, h = 1e-3;
   PointLinkScene s = hanging_by_a_link(ElasticWire{2000.0, 0.0}, L0, 0.5 * L0);
   RunState3D state = run_state(h);
-  for (int i = 0; i < 200; ++i) step_3d(s.scene, state, converged_options());
+  for (int i = 0; i < 200; ++i) step_3d(s.scene, state, test::converged_nlgs_options(10));
   ASSERT_EQ(state.contacts.size(), 1u);
   EXPECT_EQ(state.contacts.front().status, ContactStatus::vnish);
   EXPECT_EQ(state.contacts.front().r, Vector3d::Zero());
@@ -494,7 +486,7 @@ TEST(Rigid3DAnalytic, ElasticRodCarriesAMassInCompression) {
   const double delta = m * g * L0 / k;
   PointLinkScene s = hanging_by_a_link(ElasticRod{k, 0.0}, L0, -delta, +1.0);
   RunState3D state = run_state(h);
-  for (int i = 0; i < 1000; ++i) step_3d(s.scene, state, converged_options());
+  for (int i = 0; i < 1000; ++i) step_3d(s.scene, state, test::converged_nlgs_options(10));
   ASSERT_EQ(state.contacts.size(), 1u);
   EXPECT_NEAR(state.contacts.front().r(1) / h, m * g, 1e-9 * m * g);  // push
   EXPECT_NEAR(centre_of(s.scene, s.ball).z(), L0 - delta, 1e-10);
@@ -523,7 +515,7 @@ TEST(Rigid3DAnalytic, SoundCohesiveZoneHoldsASphereUnderAPlaneAtItsElasticOpenin
   int ball = 0;
   Scene3D scene = sphere_under_a_plane(IqsMacCzm{0.3, 0.3, cn, cn, 0.0, 1e6}, opening, ball);
   RunState3D state = run_state(h);
-  for (int i = 0; i < 500; ++i) step_3d(scene, state, converged_options());
+  for (int i = 0; i < 500; ++i) step_3d(scene, state, test::converged_nlgs_options(10));
   ASSERT_EQ(state.contacts.size(), 1u);
   const Interaction3D& c = state.contacts.front();
   EXPECT_EQ(state.law_states.at(0).internal[4], 1.0);  // β
@@ -542,7 +534,7 @@ TEST(Rigid3DAnalytic, WeakCohesiveZoneBreaksAndLetsTheSphereFall) {
   RunState3D state = run_state(h);
   double beta = 1.0;
   for (int i = 0; i < 200; ++i) {
-    step_3d(scene, state, converged_options());
+    step_3d(scene, state, test::converged_nlgs_options(10));
     if (!state.contacts.empty()) beta = state.law_states.at(0).internal[4];
   }
   EXPECT_LT(beta, 1e-2);
@@ -571,7 +563,7 @@ TEST(Rigid3DAnalytic, CohesiveZoneTornInOneStepReactsWithTheBetaItStores) {
   leaving(2) = -1.0;
   b.set_velocity(lower, leaving);
   Scene3D scene = b.build();
-  NlgsOptions options = converged_options();
+  NlgsOptions options = test::converged_nlgs_options(10);
   options.gs_it1 = 1;  // a check after every sweep
   RunState3D state = run_state(h);
   const NlgsResult result = step_3d(scene, state, options);
@@ -605,7 +597,7 @@ TEST(Rigid3DAnalytic, ElasticRepellSphereRestsAtItsSpringPenetration) {
   b.see("SPHER", "BLEUx", "rep01", "PLANx", "VERTx", 0.01);
   Scene3D scene = b.build();
   RunState3D state = run_state(h);
-  for (int i = 0; i < 500; ++i) step_3d(scene, state, converged_options());
+  for (int i = 0; i < 500; ++i) step_3d(scene, state, test::converged_nlgs_options(10));
   ASSERT_EQ(state.contacts.size(), 1u);
   EXPECT_NEAR(state.contacts.front().r(1) / h, m * g, 1e-6 * m * g);
   EXPECT_NEAR(centre_of(scene, ball).z(), r - depth, 1e-10);
@@ -619,7 +611,7 @@ TEST(Rigid3DAnalytic, CoupledDofHoldsASphereUnderAPlane) {
   int ball = 0;
   Scene3D scene = sphere_under_a_plane(CoupledDof{}, 0.0, ball);
   RunState3D state = run_state(h);
-  for (int i = 0; i < 200; ++i) step_3d(scene, state, converged_options());
+  for (int i = 0; i < 200; ++i) step_3d(scene, state, test::converged_nlgs_options(10));
   ASSERT_EQ(state.contacts.size(), 1u);
   EXPECT_EQ(state.contacts.front().status, ContactStatus::stick);
   EXPECT_NEAR(state.contacts.front().r(1) / h, -m * g, 1e-9 * m * g);

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "solver/model/scene_builder_3d.hpp"
+#include "tests/support/nlgs_options.hpp"
 #include "tests/support/run_tool.hpp"
 
 namespace lmgc::solver {
@@ -234,15 +235,6 @@ Scene3D build_scene() {
   return b.build();
 }
 
-NlgsOptions converged_options() {
-  NlgsOptions o;
-  o.norm = NlgsNorm::quad;
-  o.tolerance = 1e-10;
-  o.gs_it1 = 10;
-  o.gs_it2 = 500;
-  return o;
-}
-
 struct Written {
   fs::path dir;
   Scene3D scene;
@@ -254,7 +246,7 @@ Written run_and_write(const std::string& name) {
   w.state.h = kH;
   DisplayWriter3D display(w.dir);
   for (int k = 0; k < 2; ++k) {
-    EXPECT_TRUE(step_3d(w.scene, w.state, converged_options()).converged);
+    EXPECT_TRUE(step_3d(w.scene, w.state, test::converged_nlgs_options(10)).converged);
     std::string error;
     EXPECT_TRUE(display.write(w.scene, w.state, error)) << error;
     EXPECT_EQ(display.count(), static_cast<std::size_t>(k + 1));

@@ -15,21 +15,12 @@
 #include "grammar/vloc_rloc/writer.hpp"
 #include "solver/integrator/step_2d.hpp"
 #include "solver/model/scene_builder_2d.hpp"
+#include "tests/support/nlgs_options.hpp"
 
 namespace lmgc::solver {
 namespace {
 
 constexpr double kH = 1e-3;
-
-NlgsOptions converged_options() {
-  NlgsOptions o;
-  o.norm = NlgsNorm::quad;
-  o.tolerance = 1e-10;
-  o.gs_it1 = 20;
-  o.gs_it2 = 500;
-  o.residual_target = 1e-12;
-  return o;
-}
 
 // Two disks hanging in a chain under a fixed JONCx, both interfaces IQS_MAC_CZM, sound from the first
 // step (β = 1); the lower disk is pulled down, so the interfaces open and store their jumps.
@@ -51,7 +42,8 @@ SceneRun run(int steps) {
   SceneRun s{b.build(), {}};
   s.state.h = kH;
   s.state.visibility = build_visibility_index(s.scene);
-  for (int i = 0; i < steps; ++i) EXPECT_TRUE(step_2d(s.scene, s.state, converged_options()).converged);
+  for (int i = 0; i < steps; ++i)
+    EXPECT_TRUE(step_2d(s.scene, s.state, test::converged_nlgs_options(20, 1e-12)).converged);
   return s;
 }
 
@@ -89,8 +81,8 @@ TEST(StateFiles2D, WarmStartCarriesTheLawsInternalsAndRestartsTheRun) {
 
   SceneRun restarted = r;
   store_interactions(restarted.state, warm.interactions, warm.law_states);
-  step_2d(r.scene, r.state, converged_options());
-  step_2d(restarted.scene, restarted.state, converged_options());
+  step_2d(r.scene, r.state, test::converged_nlgs_options(20, 1e-12));
+  step_2d(restarted.scene, restarted.state, test::converged_nlgs_options(20, 1e-12));
   ASSERT_EQ(restarted.state.contacts.size(), 2u);
   ASSERT_EQ(restarted.state.law_states.size(), 2u);
   for (std::size_t k = 0; k < 2; ++k) {

@@ -20,6 +20,7 @@
 #include "grammar/vloc_rloc/writer.hpp"
 #include "solver/detection/point_contact.hpp"
 #include "solver/model/scene_builder_3d.hpp"
+#include "tests/support/nlgs_options.hpp"
 
 namespace lmgc::solver {
 namespace {
@@ -28,15 +29,6 @@ using Eigen::Matrix3d;
 using Eigen::Vector3d;
 constexpr double kH = 1e-3;
 constexpr double kG = 9.81;
-
-NlgsOptions converged_options() {
-  NlgsOptions o;
-  o.norm = NlgsNorm::quad;
-  o.tolerance = 1e-10;
-  o.gs_it1 = 10;
-  o.gs_it2 = 500;
-  return o;
-}
 
 // Body 1: a ground PLANx (top face z = 0); body 2: a sphere resting on it; body 3: a sphere resting
 // on body 2; body 4: a two-sphere cluster (SPHEb) resting on the ground. Contactors 0..4.
@@ -62,7 +54,7 @@ SceneRun run(int steps) {
   SceneRun r{build_scene(), {}};
   r.state.h = kH;
   for (int i = 0; i < steps; ++i) {
-    const NlgsResult result = step_3d(r.scene, r.state, converged_options());
+    const NlgsResult result = step_3d(r.scene, r.state, test::converged_nlgs_options(10));
     EXPECT_TRUE(result.converged);
   }
   return r;
@@ -259,8 +251,8 @@ TEST(StateFiles3D, WarmStartGivesBackTheReactionsAndStatuses) {
   // Restarting from the warm start gives the step the run itself takes next.
   SceneRun restarted{r.scene, r.state};
   store_interactions(restarted.state, warm, warm_start.law_states);
-  step_3d(r.scene, r.state, converged_options());
-  step_3d(restarted.scene, restarted.state, converged_options());
+  step_3d(r.scene, r.state, test::converged_nlgs_options(10));
+  step_3d(restarted.scene, restarted.state, test::converged_nlgs_options(10));
   ASSERT_EQ(restarted.state.contacts.size(), r.state.contacts.size());
   for (std::size_t k = 0; k < r.state.contacts.size(); ++k) {
     EXPECT_EQ(restarted.state.contacts[k].status, r.state.contacts[k].status);
@@ -290,7 +282,7 @@ TEST(StateFiles3D, InternalVariablesOfTheLawAreWrittenWithTheirNames) {
   Scene3D scene = b.build();
   RunState3D state;
   state.h = kH;
-  step_3d(scene, state, converged_options());
+  step_3d(scene, state, test::converged_nlgs_options(10));
   ASSERT_EQ(state.contacts.size(), 1u);
   ASSERT_EQ(state.law_states.size(), 1u);  // GAP_SGR_CLB has 3D internals: its scene keeps law states
   state.law_states[0].internal[0] = 0.25;
@@ -338,7 +330,7 @@ TEST(StateFiles3D, DrumAndPointLinkBlocksRoundTripAndWarmStart) {
   b.see("PT3Dx", "ANCRx", "wire1", "PT3Dx", "BLEUx", 2.0);
   SceneRun r{b.build(), {}};
   r.state.h = kH;
-  for (int i = 0; i < 5; ++i) step_3d(r.scene, r.state, converged_options());
+  for (int i = 0; i < 5; ++i) step_3d(r.scene, r.state, test::converged_nlgs_options(10));
   ASSERT_EQ(r.state.contacts.size(), 2u);
   const std::string text = grammar::write_vloc_rloc(vloc_rloc_file_3d(r.scene, r.state));
   EXPECT_NE(text.find("$icdan  PTPT3"), std::string::npos) << text;
@@ -373,7 +365,7 @@ TEST(StateFiles3D, DuplicateLinksOfOnePairWarmStartInTheirOrder) {
   r.scene.point_links = link_points_3d(r.scene);
   ASSERT_EQ(r.scene.point_links.size(), 2u);
   r.state.h = kH;
-  step_3d(r.scene, r.state, converged_options());
+  step_3d(r.scene, r.state, test::converged_nlgs_options(10));
   ASSERT_EQ(r.state.contacts.size(), 2u);
   r.state.contacts[0].r = Vector3d(0.0, 1.0, 0.0);
   r.state.contacts[1].r = Vector3d(0.0, -2.0, 0.0);
