@@ -4,7 +4,9 @@
 Runs each given bench binary (build/release/bench/rigid_2d_bench or rigid_3d_bench) in full, N rounds,
 the binaries alternated within each round so that they share the machine's slow and quick spells.
 Prints, per binary and scene, every run's ratio, their median, and the ratio from the fastest run at
-each size (on a shared machine other load only adds time, so the fastest run is the least disturbed).
+each size (on a shared machine other load only adds time, so the fastest run is the least disturbed);
+then, from the fastest run at each size, the time per contact and step of every size and its growth
+over the 1k one's.
 
   bench/scaling_ratio.py [--runs N] [--keep DIR] BENCH [BENCH...]
 """
@@ -70,6 +72,13 @@ def main():
             print(f'{bench} {scene}: contacts {contacts[0]:.0f} -> {contacts[1]:.0f}; runs '
                   f'{" ".join(f"{x:.3f}" for x in ratios)}; median {statistics.median(ratios):.3f}; '
                   f'fastest at each size (1k {fastest_small * 1e3:.3f} ms, 64k {fastest_large:.4f} s): {fastest:.3f}')
+            # Every size, from its fastest run: time per contact and step, and its growth over 1k's.
+            per_contact = {}
+            for size in sorted({size for (s, size) in results[0] if s == scene}):
+                seconds = min(r[(scene, size)][0] for r in results)
+                per_contact[size] = seconds / results[0][(scene, size)][1]
+            print('  per contact and step, fastest run at each size: ' + ', '.join(
+                f'{size // 1000}k {t * 1e9:.0f} ns ({t / per_contact[1000]:.3f})' for size, t in per_contact.items()))
 
 
 if __name__ == '__main__':
