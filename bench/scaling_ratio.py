@@ -1,14 +1,15 @@
 #!/usr/bin/python3
 """Scaling ratio of the rigid benches: (64k s/step ÷ 1k s/step) ÷ (64k contacts ÷ 1k contacts).
 
-Runs each given bench binary (build/release/bench/rigid_2d_bench or rigid_3d_bench) in full, N rounds,
-the binaries alternated within each round so that they share the machine's slow and quick spells.
+Runs each given bench binary (build/release/bench/rigid_2d_bench or rigid_3d_bench) in full, or the
+benchmarks --filter takes, N rounds, the binaries alternated within each round so that they share the
+machine's slow and quick spells.
 Prints, per binary and scene, every run's ratio, their median, and the ratio from the fastest run at
 each size (on a shared machine other load only adds time, so the fastest run is the least disturbed);
 then, from the fastest run at each size, the time per contact and step of every size and its growth
 over the 1k one's.
 
-  bench/scaling_ratio.py [--runs N] [--keep DIR] BENCH [BENCH...]
+  bench/scaling_ratio.py [--runs N] [--keep DIR] [--filter REGEX] BENCH [BENCH...]
 """
 import argparse
 import os
@@ -27,9 +28,10 @@ def counter(line, name):
     return float(match.group(1)) * UNITS[match.group(2)]
 
 
-def run_once(bench):
-    """{(scene, size): (s_per_step, contacts)} of one full run."""
-    out = subprocess.run([bench], capture_output=True, text=True, check=True).stdout
+def run_once(bench, benchmark_filter=None):
+    """{(scene, size): (s_per_step, contacts)} of one run (all of the bench, or the benchmarks the filter takes)."""
+    command = [bench] + ([f'--benchmark_filter={benchmark_filter}'] if benchmark_filter else [])
+    out = subprocess.run(command, capture_output=True, text=True, check=True).stdout
     sizes = {}
     for line in out.splitlines():
         match = re.match(r'BM_Step(\w+)/(\d+)/', line)
@@ -48,18 +50,23 @@ def main():
     parser.add_argument('benches', nargs='+', metavar='BENCH')
     parser.add_argument('--runs', type=int, default=4)
     parser.add_argument('--keep', metavar='DIR', help='write each run\'s output there')
+    parser.add_argument('--filter', metavar='REGEX',
+                        help='only the benchmarks this Google Benchmark filter takes; it must keep the 1k and 64k '
+                             'sizes of a scene, e.g. \'StepDiskLayer/(1000|64000)/\' (more runs in the same time)')
     args = parser.parse_args()
     runs = {bench: [] for bench in args.benches}
     for round_index in range(args.runs):
         for bench in args.benches:
-            out, sizes = run_once(bench)
+            out, sizes = run_once(bench, args.filter)
+            scenes = sorted({scene for scene, _ in sizes})
+            if not scenes or any((scene, size) not in sizes for scene in scenes for size in (1000, 64000)):
+                sys.exit(f'{bench}: every scene run needs its 1k and 64k sizes (filter: {args.filter})')
             runs[bench].append(sizes)
             if args.keep:
                 os.makedirs(args.keep, exist_ok=True)
                 name = f'{os.path.basename(bench)}.{args.benches.index(bench)}.run{round_index}.txt'
                 with open(os.path.join(args.keep, name), 'w') as f:
                     f.write(out)
-            scenes = sorted({scene for scene, _ in sizes})
             line = ', '.join(f'{s} {ratio(sizes[(s, 1000)], sizes[(s, 64000)]):.3f}' for s in scenes)
             print(f'round {round_index + 1}: {bench}: {line}', file=sys.stderr, flush=True)
     for bench, results in runs.items():
