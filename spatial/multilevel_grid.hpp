@@ -34,7 +34,13 @@ class MultilevelGrid {
   // Cells are twice the largest radius of their level, and at least `min_cell`.
   void build(std::span<const Eigen::Vector3d> centres, std::span<const double> radii,
              std::span<const std::uint8_t> placed, double min_cell) {
-    levels_.clear();
+    // The levels keep their storage from the last build: a grid kept from step to step allocates
+    // nothing once it has seen its largest scene.
+    for (Level& l : levels_) {
+      l.entries.clear();
+      l.largest_radius = 0.0;
+    }
+    std::size_t level_count = 0;
     level_of_.assign(centres.size(), -1);
     double smallest = 0.0;
     for (std::size_t i = 0; i < centres.size(); ++i)
@@ -47,9 +53,11 @@ class MultilevelGrid {
                             : 0;
       level_of_[i] = level;
       if (static_cast<int>(levels_.size()) <= level) levels_.resize(static_cast<std::size_t>(level) + 1);
+      level_count = std::max(level_count, static_cast<std::size_t>(level) + 1);
       Level& l = levels_[static_cast<std::size_t>(level)];
       l.largest_radius = std::max(l.largest_radius, radii[i]);
     }
+    levels_.resize(level_count);
     for (Level& l : levels_) l.cell = std::max({2.0 * l.largest_radius, min_cell, 1e-300});
     for (std::size_t i = 0; i < centres.size(); ++i)
       if (level_of_[i] >= 0) {
@@ -152,6 +160,8 @@ class MultilevelGrid {
     Cell low{}, high{};
     std::int64_t ny = 0, nz = 0;
     std::vector<std::uint32_t> first_entry;
+    std::vector<Entry> sorted;  // sort_entries' scratch, kept with the level
+    std::vector<std::uint32_t> next;
 
     Cell cell_of(const Eigen::Vector3d& p) const {
       return {grid_index(p.x(), cell), grid_index(p.y(), cell), grid_index(p.z(), cell)};
@@ -184,10 +194,10 @@ class MultilevelGrid {
       first_entry.assign(static_cast<std::size_t>(cells) + 1, 0u);
       for (const Entry& e : entries) ++first_entry[dense_index(e.cell) + 1];
       for (std::size_t k = 1; k < first_entry.size(); ++k) first_entry[k] += first_entry[k - 1];
-      std::vector<Entry> sorted(entries.size());
-      std::vector<std::uint32_t> next(first_entry.begin(), first_entry.end() - 1);
+      sorted.resize(entries.size());
+      next.assign(first_entry.begin(), first_entry.end() - 1);
       for (const Entry& e : entries) sorted[next[dense_index(e.cell)]++] = e;
-      entries = std::move(sorted);
+      entries.swap(sorted);
     }
   };
 

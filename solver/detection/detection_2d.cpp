@@ -170,7 +170,8 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
     if ((centre[i] - centre[j]).squaredNorm() > reach * reach) return;
     rough.push_back({std::min(i, j), std::max(i, j), 0});
   };
-  spatial::MultilevelGrid grid;
+  // Kept from step to step, as `rough`: its levels keep their storage (spatial/multilevel_grid.hpp).
+  thread_local spatial::MultilevelGrid grid;
   grid.build(grid_centres, radii, in_grid, index.max_alert);
   grid.for_each_candidate_pair(grid_centres, radii, index.max_alert, [&](std::size_t i, std::size_t j) {
     consider(std::min(i, j), std::max(i, j));
@@ -231,9 +232,12 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
   // of the keys was a twentieth of a 64k-disk step.
   {
     const std::size_t family_slots = kPairFamily2DCount + 1;  // the last: pairs no row sees
-    std::vector<std::size_t> bucket(rough.size());
-    std::vector<std::uint32_t> antagonist(rough.size());
-    std::vector<std::uint32_t> start(family_slots * n + 1, 0);
+    // Kept from step to step, as `rough`.
+    thread_local std::vector<std::size_t> bucket;
+    thread_local std::vector<std::uint32_t> antagonist, start, order;
+    bucket.resize(rough.size());
+    antagonist.resize(rough.size());
+    start.assign(family_slots * n + 1, 0);
     for (std::size_t k = 0; k < rough.size(); ++k) {
       const PairRoles roles = pair_roles(index, rough[k].i, rough[k].j);
       const std::size_t cd = roles.candidate, an = roles.antagonist;
@@ -244,7 +248,7 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
       ++start[bucket[k] + 1];
     }
     for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
-    std::vector<std::uint32_t> order(rough.size());
+    order.resize(rough.size());
     for (std::size_t k = 0; k < rough.size(); ++k) order[start[bucket[k]]++] = static_cast<std::uint32_t>(k);
     const auto before = [&](std::uint32_t x, std::uint32_t y) {
       return std::tie(antagonist[x], rough[x].shift) < std::tie(antagonist[y], rough[y].shift);
@@ -255,7 +259,8 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
            q > 0 && bucket[order[q - 1]] == bucket[order[q]] && before(order[q], order[q - 1]); --q)
         std::swap(order[q - 1], order[q]);
     if (!std::is_sorted(order.begin(), order.end())) {  // not the identity: the grid's order moved
-      std::vector<RoughPair> sorted(rough.size());
+      thread_local std::vector<RoughPair> sorted;
+      sorted.resize(rough.size());
       for (std::size_t p = 0; p < order.size(); ++p) sorted[p] = rough[order[p]];
       rough.swap(sorted);
     }

@@ -6,28 +6,49 @@
 
 #include <cmath>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include "spatial/multilevel_grid.hpp"
 
 namespace lmgc::spatial {
 namespace {
 
-RC_GTEST_PROP(MultilevelGrid, FindsEveryOverlappingPairExactlyOnce, ()) {
+struct Items {
+  std::vector<Eigen::Vector3d> centres;
+  std::vector<double> radii;
+};
+
+Items random_items() {
   const int count = *rc::gen::inRange(0, 120);
   const bool flat = *rc::gen::arbitrary<bool>();  // 2D scenes pass z = 0
   // Packed items take the grid's dense cell table, spread ones its sorted cell list.
   const double spread = *rc::gen::element(0.2, 1.0, 100.0);
-  std::vector<Eigen::Vector3d> centres;
-  std::vector<double> radii;
+  Items items;
   for (int i = 0; i < count; ++i) {
     auto coordinate = [&] { return spread * *rc::gen::inRange(-1000, 1000) / 100.0; };
-    centres.emplace_back(coordinate(), coordinate(), flat ? 0.0 : coordinate());
+    items.centres.emplace_back(coordinate(), coordinate(), flat ? 0.0 : coordinate());
     // Mostly small items, a few very large ones (walls), some points.
     const int kind = *rc::gen::inRange(0, 10);
-    radii.push_back(kind == 0   ? 0.0
-                    : kind == 1 ? *rc::gen::inRange(100, 800) / 100.0
-                                : *rc::gen::inRange(1, 60) / 100.0);
+    items.radii.push_back(kind == 0   ? 0.0
+                          : kind == 1 ? *rc::gen::inRange(100, 800) / 100.0
+                                      : *rc::gen::inRange(1, 60) / 100.0);
   }
+  return items;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> candidate_pairs(const MultilevelGrid& grid,
+                                                                 const Items& items, double margin) {
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  grid.for_each_candidate_pair(items.centres, items.radii, margin,
+                               [&](std::size_t i, std::size_t j) { pairs.emplace_back(i, j); });
+  return pairs;
+}
+
+RC_GTEST_PROP(MultilevelGrid, FindsEveryOverlappingPairExactlyOnce, ()) {
+  const Items items = random_items();
+  const std::vector<Eigen::Vector3d>& centres = items.centres;
+  const std::vector<double>& radii = items.radii;
   const double margin = *rc::gen::inRange(0, 30) / 100.0;
   MultilevelGrid grid;
   grid.build(centres, radii, {}, margin);
@@ -44,6 +65,19 @@ RC_GTEST_PROP(MultilevelGrid, FindsEveryOverlappingPairExactlyOnce, ()) {
       const double reach = radii[i] + radii[j] + margin;
       if ((centres[i] - centres[j]).norm() <= reach) RC_ASSERT(found.count({i, j}) == 1u);
     }
+}
+
+// Detection keeps its grid from step to step, and a build reuses the levels' storage: what a build
+// gives must not depend on the builds before it.
+RC_GTEST_PROP(MultilevelGrid, ARebuiltGridGivesTheSamePairsInTheSameOrderAsAFreshOne, ()) {
+  const Items before = random_items(), after = random_items();
+  const double margin = *rc::gen::inRange(0, 30) / 100.0;
+  MultilevelGrid reused, fresh;
+  reused.build(before.centres, before.radii, {}, margin);
+  reused.build(after.centres, after.radii, {}, margin);
+  fresh.build(after.centres, after.radii, {}, margin);
+  RC_ASSERT(reused.level_count() == fresh.level_count());
+  RC_ASSERT(candidate_pairs(reused, after, margin) == candidate_pairs(fresh, after, margin));
 }
 
 RC_GTEST_PROP(MultilevelGrid, CellIndexIsTheFloorOfTheQuotientWithinTheClamp, ()) {
