@@ -111,14 +111,23 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
   out.clear();
   const std::size_t n = scene.contactors.size();
   if (n == 0) return;
-  // World placement of every contactor at this configuration.
+  // World placement of every contactor at this configuration, and the rough detection's compact reads
+  // (below), in one pass over the contactors (~130 bytes each).
   std::vector<Vector2d> centre(n);
   std::vector<Eigen::Matrix2d> orientation(n);
+  std::vector<double> radii(n);
+  std::vector<Vector3d> grid_centres(n);
+  std::vector<std::uint8_t> in_grid(n);
+  std::vector<std::int32_t> body_of(n);  // the pair loop's reads, compact (a Contactor2D is ~130 bytes)
   for (std::size_t i = 0; i < n; ++i) {
     const Contactor2D& c = scene.contactors[i];
     const Vector3d& q = coordinates[static_cast<std::size_t>(c.body)];
     orientation[i] = rotation(q.z());
     centre[i] = q.head<2>() + orientation[i] * c.shift;
+    radii[i] = c.bounding_radius;
+    grid_centres[i] = Vector3d(centre[i].x(), centre[i].y(), 0.0);
+    in_grid[i] = scene.bodies.visible[static_cast<std::size_t>(c.body)];
+    body_of[i] = c.body;
   }
   // Periodic images: a contactor taken one period to the right (+1) or left (-1) for one pair.
   std::vector<double> image_shift(n, 0.0);
@@ -137,17 +146,6 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
 
   // Rough detection on the spatial grid shared with lmgc-check (spatial/multilevel_grid.hpp):
   // every pair whose bounding circles, grown by the largest alert distance, may meet.
-  std::vector<double> radii(n);
-  std::vector<Vector3d> grid_centres(n);
-  std::vector<std::uint8_t> in_grid(n);
-  std::vector<std::int32_t> body_of(n);  // the pair loop's reads, compact (a Contactor2D is ~130 bytes)
-  for (std::size_t i = 0; i < n; ++i) {
-    const Contactor2D& c = scene.contactors[i];
-    radii[i] = c.bounding_radius;
-    grid_centres[i] = Vector3d(centre[i].x(), centre[i].y(), 0.0);
-    in_grid[i] = scene.bodies.visible[static_cast<std::size_t>(c.body)];
-    body_of[i] = c.body;
-  }
   // Rough pairs (i < j); `shift` moves j by that many periods (periodic pairs only).
   struct RoughPair {
     std::size_t i, j;
