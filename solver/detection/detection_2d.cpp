@@ -118,7 +118,7 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
   std::vector<double> radii(n);
   std::vector<Vector3d> grid_centres(n);
   std::vector<std::uint8_t> in_grid(n);
-  std::vector<std::int32_t> body_of(n);  // the pair loop's reads, compact (a Contactor2D is ~130 bytes)
+  std::vector<std::int32_t> body_of(n);  // the pair loop's reads, compact
   for (std::size_t i = 0; i < n; ++i) {
     const Contactor2D& c = scene.contactors[i];
     const Vector3d& q = coordinates[static_cast<std::size_t>(c.body)];
