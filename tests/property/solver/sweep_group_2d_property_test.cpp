@@ -1,13 +1,16 @@
-// The 2D sweeps with plain updates four at a time (solver/nlgs/sweep_group_2d.hpp) against the
-// sweeps that run every update alone: on random disk packings with plain, restitution and
-// law-term contacts, relaxation and the quick scramble, whole steps give the same positions,
-// velocities and reactions bit for bit. (On a processor without AVX2 both runs take the scalar path.)
+// The 2D sweeps' ways of running the same Gauss–Seidel sweep, against the sweeps that walk every
+// contact and run every update alone: plain updates four at a time (solver/nlgs/sweep_group_2d.hpp),
+// and visits of the due contacts only, found in bitmaps (solver/nlgs/open_contact_visits.hpp). On
+// random disk packings with plain, restitution and law-term contacts, relaxation and the quick
+// scramble, whole steps give the same positions, velocities and reactions bit for bit. (On a
+// processor without AVX2 the four-at-a-time runs take the scalar path.)
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "solver/integrator/step_2d.hpp"
@@ -49,7 +52,8 @@ struct Outcome {
   std::size_t loaded = 0;  // contacts with a reaction at the end
 };
 
-Outcome run(const RandomPacking& p, bool vector_sweeps) {
+// `due_visits_from`: NlgsOptions's (0: always, the largest value: never).
+Outcome run(const RandomPacking& p, bool vector_sweeps, std::size_t due_visits_from) {
   SceneBuilder2D b;
   const char* color[] = {"BLEUx", "REDxx", "VERTx"};
   for (std::size_t k = 0; k < p.disks.size(); ++k)
@@ -76,6 +80,7 @@ Outcome run(const RandomPacking& p, bool vector_sweeps) {
   options.relax = p.relax;
   options.quick_scramble = p.scramble;
   options.vector_sweeps = vector_sweeps;
+  options.due_visits_from = due_visits_from;
   Outcome o;
   for (int i = 0; i < p.steps; ++i) o.sweeps += step_2d(scene, state, options).iterations;
   auto keep = [&](double x) { o.bits.push_back(std::bit_cast<std::uint64_t>(x)); };
@@ -92,12 +97,26 @@ Outcome run(const RandomPacking& p, bool vector_sweeps) {
   return o;
 }
 
+constexpr std::size_t kNever = std::numeric_limits<std::size_t>::max();
+
 RC_GTEST_PROP(SweepGroup2DProperty, VectorSweepsGiveTheScalarSweepsStateBitForBit, ()) {
   const RandomPacking p = random_packing();
-  const Outcome scalar = run(p, false), vector = run(p, true);
+  const Outcome scalar = run(p, false, kNever), vector = run(p, true, kNever);
   RC_ASSERT(vector.sweeps == scalar.sweeps);
   RC_ASSERT(vector.bits == scalar.bits);
   RC_CLASSIFY(scalar.loaded >= 8, "eight loaded contacts or more");
+}
+
+// Alone and four at a time: the groups' blocks walk their segments, the others the bitmaps.
+RC_GTEST_PROP(SweepGroup2DProperty, SweepsByDueVisitsGiveTheWalkOfEveryContactsStateBitForBit, ()) {
+  const RandomPacking p = random_packing();
+  const Outcome walk = run(p, false, kNever);
+  const Outcome due = run(p, false, 0), due_vector = run(p, true, 0);
+  RC_ASSERT(due.sweeps == walk.sweeps);
+  RC_ASSERT(due.bits == walk.bits);
+  RC_ASSERT(due_vector.sweeps == walk.sweeps);
+  RC_ASSERT(due_vector.bits == walk.bits);
+  RC_CLASSIFY(walk.loaded >= 8, "eight loaded contacts or more");
 }
 
 }  // namespace

@@ -71,5 +71,64 @@ TEST(OpenContactSchedule, PassesByAtTheSweepsTheCountedFormDoes) {
   }
 }
 
+// Contacts through random blocks of sweeps (their solves returning a reaction or not, as a fixed
+// function of contact and sweep): the bitmaps visit, at every sweep, exactly the contacts that the
+// walk of every contact does not pass by, in execution order, with the same schedules after.
+TEST(DueVisits, VisitAtEverySweepTheContactsTheWalkDoesNotPassBy) {
+  std::mt19937 random(2026);
+  for (int run = 0; run < 100; ++run) {
+    const std::size_t count = 1 + random() % 300;
+    const auto sweeps = static_cast<std::int32_t>(1 + random() % 60);
+    const int blocks = 1 + static_cast<int>(random() % 3);
+    const std::uint32_t seed = random(), reaction_odds = random() % 5;  // in 8: how often a solve gives one
+    // The update's effect on the schedule, as the sweeps make it.
+    auto visit = [&](std::vector<OpenContactSchedule>& schedule, std::vector<char>& reaction, std::size_t k,
+                     std::int32_t sweep) {
+      if (!reaction[k]) schedule[k].count_solve(sweep);
+      std::uint32_t h =
+          seed ^ static_cast<std::uint32_t>(k * 2654435761u) ^ static_cast<std::uint32_t>(sweep * 40503u);
+      h ^= h >> 13;
+      h *= 0x5bd1e995u;
+      h ^= h >> 15;
+      reaction[k] = (h % 8) < reaction_odds;
+      schedule[k].restart_if(reaction[k] != 0);
+    };
+    std::vector<OpenContactSchedule> walked(count), filed(count);
+    std::vector<char> walked_reaction(count, 0), filed_reaction(count, 0);
+    DueVisits due;
+    std::int32_t sweep = 0;
+    for (int block = 0; block < blocks; ++block) {
+      for (std::size_t k = 0; k < count; ++k) {  // the check before the block
+        walked[k].restart();
+        filed[k].restart();
+      }
+      due.start_block(count, sweep, sweeps);
+      for (std::int32_t i = 0; i < sweeps; ++i, ++sweep) {
+        std::vector<std::size_t> expected, visited;
+        for (std::size_t k = 0; k < count; ++k) {
+          if (walked[k].passes_by(sweep)) continue;
+          expected.push_back(k);
+          visit(walked, walked_reaction, k, sweep);
+        }
+        due.sweep(sweep, [&](std::size_t k) {
+          visited.push_back(k);
+          visit(filed, filed_reaction, k, sweep);
+          return filed[k];
+        });
+        ASSERT_EQ(visited, expected) << "run " << run << ", sweep " << sweep;
+      }
+    }
+  }
+}
+
+TEST(DueVisits, TheRingOutlastsTheLargestGapOfABlock) {
+  EXPECT_EQ(DueVisits::largest_gap(1), 1);
+  EXPECT_EQ(DueVisits::largest_gap(25), 6);  // solves at sweeps 0, 2, 5, 9, 14, 20 (27 is past the block)
+  EXPECT_EQ(DueVisits::ring_length(25), 8u);
+  EXPECT_EQ(DueVisits::largest_gap(200), 19);
+  for (std::int32_t sweeps = 1; sweeps < 2000; ++sweeps)
+    EXPECT_GT(DueVisits::ring_length(sweeps), static_cast<std::size_t>(DueVisits::largest_gap(sweeps)));
+}
+
 }  // namespace
 }  // namespace lmgc::solver
