@@ -27,8 +27,8 @@ struct NlgsOptions {
   // every contact and branching on its schedule. The same iterates bit for bit (tests compare both:
   // 0 always, SIZE_MAX never). Below it the walk is as fast or faster: this processor's branch
   // predictor learns a short list's pattern, repeated at every sweep. Disk layer, sweeps with the
-  // bitmaps against the walk, medians of paired runs: 1968 contacts 1.9% slower (8 runs), 7968 1.7%
-  // slower, 31968 1.8% faster, 127968 4.5% faster (10 runs).
+  // bitmaps against the walk, medians of paired runs: 1968 contacts 1.9% slower (8 runs of an earlier
+  // build), 7968 1.7% slower, 31968 1.8% faster, 127968 4.5% faster (10 runs).
   std::size_t due_visits_from = 16384;
   // 3D: nlgs_3D_DiagonalResolution — each contact solved with the diagonal of its block only (its
   // own off-diagonal couplings kept at the previous iterate), then projected on the Coulomb cone.

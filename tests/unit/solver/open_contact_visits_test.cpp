@@ -116,18 +116,45 @@ TEST(DueVisits, VisitAtEverySweepTheContactsTheWalkDoesNotPassBy) {
           return filed[k];
         });
         ASSERT_EQ(visited, expected) << "run " << run << ", sweep " << sweep;
+        for (std::size_t k = 0; k < count; ++k) {
+          ASSERT_EQ(filed[k].next, walked[k].next)
+              << "run " << run << ", sweep " << sweep << ", contact " << k;
+          ASSERT_EQ(filed[k].threshold, walked[k].threshold);
+        }
       }
     }
   }
 }
 
-TEST(DueVisits, TheRingOutlastsTheLargestGapOfABlock) {
+TEST(DueVisits, TheLargestGapOfABlockIsTheScheduleFromItsStart) {
   EXPECT_EQ(DueVisits::largest_gap(1), 1);
   EXPECT_EQ(DueVisits::largest_gap(25), 6);  // solves at sweeps 0, 2, 5, 9, 14, 20 (27 is past the block)
   EXPECT_EQ(DueVisits::ring_length(25), 8u);
   EXPECT_EQ(DueVisits::largest_gap(200), 19);
-  for (std::int32_t sweeps = 1; sweeps < 2000; ++sweeps)
-    EXPECT_GT(DueVisits::ring_length(sweeps), static_cast<std::size_t>(DueVisits::largest_gap(sweeps)));
+}
+
+// A contact whose solves return a reaction at random sweeps (restarts in mid-block included) is never
+// filed further ahead within its block than largest_gap: the ring never holds two sweeps in one bitmap.
+TEST(DueVisits, NoVisitFilesAContactFurtherAheadThanTheLargestGap) {
+  std::mt19937 random(7);
+  for (std::int32_t sweeps = 1; sweeps <= 200; ++sweeps) {
+    const std::int32_t gap = DueVisits::largest_gap(sweeps);
+    for (int run = 0; run < 50; ++run) {
+      OpenContactSchedule s;
+      bool reaction = random() % 2 == 0;
+      const std::uint32_t odds = random() % 4;  // in 16: how often a solve gives a reaction
+      for (std::int32_t sweep = 0; sweep < sweeps; ++sweep) {
+        if (s.passes_by(sweep)) continue;
+        if (!reaction) s.count_solve(sweep);
+        reaction = random() % 16 < odds;
+        s.restart_if(reaction);
+        const std::int32_t filed = s.next > sweep ? s.next : sweep + 1;
+        if (filed < sweeps) {
+          ASSERT_LE(filed - sweep, gap) << sweeps << " sweeps, at sweep " << sweep;
+        }
+      }
+    }
+  }
 }
 
 }  // namespace
