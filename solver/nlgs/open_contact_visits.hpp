@@ -67,6 +67,11 @@ class DueVisits {
       sweep = s.next;
     }
   }
+  // The sweep at which a contact visited at `sweep` is visited next, from its schedule after the
+  // visit: the following one while it has a reaction (next 0), else the one its schedule names.
+  static std::int32_t due_at(const OpenContactSchedule& after, std::int32_t sweep) {
+    return after.next > sweep ? after.next : sweep + 1;
+  }
   // Bitmaps for blocks of `sweeps` sweeps (the ring's length: the power of two above the largest gap).
   static std::size_t ring_length(std::int32_t sweeps) {
     return std::bit_ceil(static_cast<std::size_t>(largest_gap(sweeps)) + 1);
@@ -105,9 +110,9 @@ class DueVisits {
         const auto bit = static_cast<unsigned>(std::countr_zero(word));
         word &= word - 1;
         const std::size_t position = 64 * w + bit;
-        const std::int32_t next = visit(position).next;
+        const std::int32_t next = due_at(visit(position), sweep);
         const std::uint64_t mask = std::uint64_t{1} << bit;
-        if (next <= sweep) {
+        if (next == sweep + 1) {
           next_bits |= mask;
         } else if (next < end_) {
           if (later < 0) later = next;

@@ -148,7 +148,7 @@ TEST(DueVisits, NoVisitFilesAContactFurtherAheadThanTheLargestGap) {
         if (!reaction) s.count_solve(sweep);
         reaction = random() % 16 < odds;
         s.restart_if(reaction);
-        const std::int32_t filed = s.next > sweep ? s.next : sweep + 1;
+        const std::int32_t filed = DueVisits::due_at(s, sweep);
         if (filed < sweeps) {
           ASSERT_LE(filed - sweep, gap) << sweeps << " sweeps, at sweep " << sweep;
         }
