@@ -270,7 +270,8 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
         [&](std::uint32_t a) {
           // A long list's records come from beyond the caches (detection wrote them): 16 ahead, the
           // 64k-disk layer's reorder 39 -> 17 ns per contact, where a sampled profile had put three
-          // quarters of its time on this load. `order` is the contact order here but after a scramble.
+          // quarters of its time on this load. a + 16 is the record 16 ahead in `order` because `order`
+          // is the contact order; after a quick scramble it is not, and the prefetch only guesses wrong.
           if (a + 16 < count) __builtin_prefetch(&contacts[a + 16], 0);
           return std::pair(contacts[a].candidate_body, contacts[a].antagonist_body);
         },
