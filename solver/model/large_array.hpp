@@ -53,4 +53,14 @@ struct HugePageAllocator {
 template <class T>
 using LargeArray = std::vector<T, HugePageAllocator<T>>;
 
+// A pass that goes through a large array in order asks for the element kPrefetchAhead places on (for
+// writing when `write`), nothing past the end: at 64k disks the passes over the interactions waited
+// on each record from memory (warm start 0.034-0.037 -> 0.030 ms per 1968 contacts; wavefront
+// reorder 39 -> 17 and end of the step 44 -> 39 ns per contact).
+inline constexpr std::size_t kPrefetchAhead = 16;
+template <bool write, class T>
+[[gnu::always_inline]] inline void prefetch_ahead(const LargeArray<T>& array, std::size_t index) {
+  if (index + kPrefetchAhead < array.size()) __builtin_prefetch(array.data() + index + kPrefetchAhead, write);
+}
+
 }  // namespace lmgc::solver

@@ -268,11 +268,11 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     wavefront.reorder(
         order,
         [&](std::uint32_t a) {
-          // A long list's records come from beyond the caches (detection wrote them): 16 ahead, the
-          // 64k-disk layer's reorder 39 -> 17 ns per contact, where a sampled profile had put three
-          // quarters of its time on this load. a + 16 is the record 16 ahead in `order` because `order`
-          // is the contact order; after a quick scramble it is not, and the prefetch only guesses wrong.
-          if (a + 16 < count) __builtin_prefetch(&contacts[a + 16], 0);
+          // A long list's records come from beyond the caches (detection wrote them); a sampled profile
+          // had put three quarters of the reorder's time on this load. The record kPrefetchAhead on in
+          // contact order is the one that many places on in `order`, which is the contact order; after
+          // a quick scramble it is not, and the prefetch only guesses wrong.
+          prefetch_ahead<false>(contacts, a);
           return std::pair(contacts[a].candidate_body, contacts[a].antagonist_body);
         },
         [&](std::int32_t i) { return !inverse_mass[static_cast<std::size_t>(i)].isZero(0.0); }, bodies.size(),
@@ -758,8 +758,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
   std::fill(bodies.impulse.begin(), bodies.impulse.end(), Vector3d::Zero());
   LawState2D unused_law_state;  // the state handed to a law without internals, which does not touch it
   for (std::size_t a = 0; a < count; ++a) {
-    // As in the reorder: the records the end writes, 16 ahead (64k-disk layer 44 -> 39 ns per contact).
-    if (a + 16 < count) __builtin_prefetch(&contacts[a + 16], 1);
+    prefetch_ahead<true>(contacts, a);  // the records the end writes, as in the reorder
     const SweepContact2D& k = hot[slot[a]];
     const ContactReaction2D& s = reaction[slot[a]];
     Interaction2D& c = contacts[a];
