@@ -1,6 +1,7 @@
 #include "solver/detection/detection_2d.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -56,6 +57,11 @@ VisibilityIndex2D build_visibility_index(const Scene2D& scene) {
     auto [it, inserted] = classes.emplace(key, static_cast<std::int32_t>(class_keys.size()));
     if (inserted) class_keys.push_back(key);
     index.contactor_class.push_back(it->second);
+    index.contactor_body.push_back(c.body);
+    index.contactor_shape.push_back(c.shape);
+    index.contactor_radius.push_back(c.radius);
+    index.contactor_bounding_radius.push_back(c.bounding_radius);
+    index.contactor_shift.push_back(c.shift);
   }
   index.class_count = static_cast<std::int32_t>(class_keys.size());
   index.row.assign(static_cast<std::size_t>(index.class_count * index.class_count), -1);
@@ -111,33 +117,33 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
   out.clear();
   const std::size_t n = scene.contactors.size();
   if (n == 0) return;
-  // World placement of every contactor at this configuration, and the rough detection's compact reads
-  // (below), in one pass over the contactors (~130 bytes each).
-  std::vector<Vector2d> centre(n);
-  std::vector<Eigen::Matrix2d> orientation(n);
-  std::vector<double> radii(n);
-  std::vector<Vector3d> grid_centres(n);
-  std::vector<std::uint8_t> in_grid(n);
-  // The pair loops' reads of the contactors, compact: the fine test of a 64k-disk layer read each
-  // antagonist's radius from its 136-byte record, a line beyond the caches at every pair (a sampled
-  // profile put 7% of detect_contacts_2d's time on that load, 2% with 1k disks).
-  std::vector<std::int32_t> body_of(n);
-  std::vector<double> radius_of(n);
-  std::vector<ContactorShape2D> shape_of(n);
+  // The contactors' fixed data, compact (VisibilityIndex2D): the pair loops read them at every
+  // pair, and reading each antagonist's radius from its 136-byte record went beyond the caches at
+  // every pair of a 64k-disk layer (a sampled profile: 7% of detect_contacts_2d's time, 2% at 1k).
+  const std::vector<std::int32_t>& body_of = index.contactor_body;
+  const std::vector<double>& radius_of = index.contactor_radius;
+  const std::vector<double>& radii = index.contactor_bounding_radius;
+  const std::vector<ContactorShape2D>& shape_of = index.contactor_shape;
+  // World placement of every contactor at this configuration. Kept from step to step (one set per
+  // thread), as the rough pairs below.
+  thread_local std::vector<Vector2d> centre;
+  thread_local std::vector<Eigen::Matrix2d> orientation;
+  thread_local std::vector<Vector3d> grid_centres;
+  thread_local std::vector<std::uint8_t> in_grid;
+  centre.resize(n);
+  orientation.resize(n);
+  grid_centres.resize(n);
+  in_grid.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const Contactor2D& c = scene.contactors[i];
-    radius_of[i] = c.radius;
-    shape_of[i] = c.shape;
-    const Vector3d& q = coordinates[static_cast<std::size_t>(c.body)];
+    const Vector3d& q = coordinates[static_cast<std::size_t>(body_of[i])];
     orientation[i] = rotation(q.z());
-    centre[i] = q.head<2>() + orientation[i] * c.shift;
-    radii[i] = c.bounding_radius;
+    centre[i] = q.head<2>() + orientation[i] * index.contactor_shift[i];
     grid_centres[i] = Vector3d(centre[i].x(), centre[i].y(), 0.0);
-    in_grid[i] = scene.bodies.visible[static_cast<std::size_t>(c.body)];
-    body_of[i] = c.body;
+    in_grid[i] = scene.bodies.visible[static_cast<std::size_t>(body_of[i])];
   }
   // Periodic images: a contactor taken one period to the right (+1) or left (-1) for one pair.
-  std::vector<double> image_shift(n, 0.0);
+  thread_local std::vector<double> image_shift;
+  image_shift.assign(n, 0.0);
   auto body_position = [&](std::size_t k) {
     const Vector3d& q = coordinates[static_cast<std::size_t>(body_of[k])];
     return Vector2d(q.x() + image_shift[k], q.y());
@@ -154,9 +160,10 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
   // Rough detection on the spatial grid shared with lmgc-check (spatial/multilevel_grid.hpp):
   // every pair whose bounding circles, grown by the largest alert distance, may meet.
   // Rough pairs (i < j); `shift` moves j by that many periods (periodic pairs only).
+  // 12 bytes: a 64k-disk layer's list (about 190k pairs) is written and read again at every step.
   struct RoughPair {
-    std::size_t i, j;
-    int shift;
+    std::uint32_t i, j;  // contactor indices (the grid's own entries hold 32 bits)
+    std::int32_t shift;
     bool operator<(const RoughPair& o) const { return std::tie(i, j, shift) < std::tie(o.i, o.j, o.shift); }
     bool operator==(const RoughPair& o) const { return i == o.i && j == o.j && shift == o.shift; }
   };
@@ -173,7 +180,8 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
     if (!ij && !ji) return;
     const double reach = radii[i] + radii[j] + index.max_alert;
     if ((centre[i] - centre[j]).squaredNorm() > reach * reach) return;
-    rough.push_back({std::min(i, j), std::max(i, j), 0});
+    rough.push_back(
+        {static_cast<std::uint32_t>(std::min(i, j)), static_cast<std::uint32_t>(std::max(i, j)), 0});
   };
   // Kept from step to step, as `rough`: its levels keep their storage (spatial/multilevel_grid.hpp).
   thread_local spatial::MultilevelGrid grid;
@@ -206,9 +214,9 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
         if ((centre[b] + Vector2d(scene.x_period, 0.0) - centre[a]).squaredNorm() > reach * reach) continue;
         // The lower index keeps its place; the other one is the image.
         if (a < b)
-          rough.push_back({a, b, +1});
+          rough.push_back({static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b), +1});
         else
-          rough.push_back({b, a, -1});
+          rough.push_back({static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(a), -1});
       }
   }
   if (scene.x_period > 0.0) {
@@ -232,17 +240,25 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
   // Rough pairs in the order the interactions are kept (family, candidate, antagonist; periodic
   // images of one pair by shift): fine detection then reads contactors in sequence and writes the
   // list in order, where a 64k-disk step sorted its 53 MB of interactions by permuting them at
-  // random. Roles as the fine loop takes them; a pair no row sees sorts last. A counting sort on
-  // (family, candidate), then each candidate's few pairs by (antagonist, shift) in place: std::sort
-  // of the keys was a twentieth of a 64k-disk step.
+  // random. Roles as the fine loop takes them; a pair no row sees sorts last. `order` lists the
+  // pairs in that order: sorted on (family, candidate), then each candidate's few pairs by
+  // (antagonist, shift) in place (std::sort of the keys was a twentieth of a 64k-disk step).
+  // The grid gives the pairs by candidate (it visits the contactors in order, and a pair's
+  // candidate is mostly the one it visits), so a counting sort on the family alone mostly does:
+  // the one on (family, candidate) zeroed and summed a table of nine entries per contactor, 2 MB
+  // at 64k disks. The pairs themselves are not moved: gathering them into a sorted copy went to
+  // memory at every pair of a 64k-disk layer.
+  thread_local std::vector<std::uint32_t> order;
   {
     const std::size_t family_slots = kPairFamily2DCount + 1;  // the last: pairs no row sees
     // Kept from step to step, as `rough`.
     thread_local std::vector<std::size_t> bucket;
-    thread_local std::vector<std::uint32_t> antagonist, start, order;
+    thread_local std::vector<std::uint32_t> antagonist, start;
+    thread_local std::vector<std::uint8_t> family_of;
     bucket.resize(rough.size());
     antagonist.resize(rough.size());
-    start.assign(family_slots * n + 1, 0);
+    family_of.resize(rough.size());
+    std::array<std::size_t, family_slots + 1> family_start{};
     for (std::size_t k = 0; k < rough.size(); ++k) {
       const PairRoles roles = pair_roles(index, rough[k].i, rough[k].j);
       const std::size_t cd = roles.candidate, an = roles.antagonist;
@@ -250,11 +266,24 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
           roles.seen ? static_cast<std::size_t>(index.family[roles.pair]) : family_slots - 1;
       bucket[k] = family * n + cd;
       antagonist[k] = static_cast<std::uint32_t>(an);
-      ++start[bucket[k] + 1];
+      family_of[k] = static_cast<std::uint8_t>(family);
+      ++family_start[family + 1];
     }
-    for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
     order.resize(rough.size());
-    for (std::size_t k = 0; k < rough.size(); ++k) order[start[bucket[k]]++] = static_cast<std::uint32_t>(k);
+    for (std::size_t f = 1; f < family_start.size(); ++f) family_start[f] += family_start[f - 1];
+    for (std::size_t k = 0; k < rough.size(); ++k)
+      order[family_start[family_of[k]]++] = static_cast<std::uint32_t>(k);
+    // Sorted on the family, stably: sorted on (family, candidate) too when no candidate comes
+    // after a larger one of its family.
+    bool by_candidate = true;
+    for (std::size_t p = 1; p < order.size(); ++p) by_candidate &= bucket[order[p - 1]] <= bucket[order[p]];
+    if (!by_candidate) {
+      start.assign(family_slots * n + 1, 0);
+      for (std::size_t k = 0; k < rough.size(); ++k) ++start[bucket[k] + 1];
+      for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
+      for (std::size_t k = 0; k < rough.size(); ++k)
+        order[start[bucket[k]]++] = static_cast<std::uint32_t>(k);
+    }
     const auto before = [&](std::uint32_t x, std::uint32_t y) {
       return std::tie(antagonist[x], rough[x].shift) < std::tie(antagonist[y], rough[y].shift);
     };
@@ -263,12 +292,6 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
       for (std::size_t q = p;
            q > 0 && bucket[order[q - 1]] == bucket[order[q]] && before(order[q], order[q - 1]); --q)
         std::swap(order[q - 1], order[q]);
-    if (!std::is_sorted(order.begin(), order.end())) {  // not the identity: the grid's order moved
-      thread_local std::vector<RoughPair> sorted;
-      sorted.resize(rough.size());
-      for (std::size_t p = 0; p < order.size(); ++p) sorted[p] = rough[order[p]];
-      rough.swap(sorted);
-    }
   }
 
   const auto key_of = [](const Interaction2D& c) {
@@ -277,7 +300,8 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
   };
   bool in_order = true;
   const std::vector<Vector3d>& velocity_begin = scene.bodies.velocity_begin;
-  for (const RoughPair& rp : rough) {
+  for (const std::uint32_t pair_index : order) {
+    const RoughPair& rp = rough[pair_index];
     const std::size_t i = rp.i, j = rp.j;
     if (rp.shift != 0) {
       const ContactorShape2D si = shape_of[i], sj = shape_of[j];

@@ -11,7 +11,8 @@
 
 namespace lmgc::solver {
 
-// Per-scene lookup built once: which '$seety' row applies to a pair of contactors.
+// Per-scene lookup built once: which '$seety' row applies to a pair of contactors, and the
+// contactors' fixed data in the layout detection reads.
 struct VisibilityIndex2D {
   std::vector<std::int32_t> contactor_class;  // (contactors) class = distinct (type, colour)
   std::int32_t class_count = 0;
@@ -21,6 +22,13 @@ struct VisibilityIndex2D {
   // (class_count²) pair family of (candidate class, antagonist class), -1 when LMGC90 has none.
   std::vector<std::int8_t> family;
   double max_alert = 0.0;
+  // The contactors' fixed data that detection reads at every step, compact (by contactor): from
+  // the 136-byte Contactor2D records, a 64k-disk layer's detection streamed 8.7 MB at every step
+  // for these few fields.
+  std::vector<std::int32_t> contactor_body;
+  std::vector<ContactorShape2D> contactor_shape;
+  std::vector<double> contactor_radius, contactor_bounding_radius;
+  std::vector<Eigen::Vector2d> contactor_shift;
 };
 
 VisibilityIndex2D build_visibility_index(const Scene2D& scene);
