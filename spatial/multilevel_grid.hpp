@@ -81,6 +81,9 @@ class MultilevelGrid {
   int level_of(std::size_t i) const { return level_of_[i]; }
   std::size_t level_count() const { return levels_.size(); }
   bool has_dense_table(std::size_t level) const { return !levels_[level].first_entry.empty(); }
+  bool dense_table_is_y_major(std::size_t level) const {
+    return has_dense_table(level) && levels_[level].y_major;
+  }
 
   // Calls f(j) for every item j of `level` whose cell meets the box [lo, hi] grown by the level's
   // largest radius (a superset of the items whose sphere meets the box). Walks the whole level
@@ -99,17 +102,36 @@ class MultilevelGrid {
       return;
     }
     if (!l.first_entry.empty()) {
-      // Dense table: the entries of cells (x, y, a.z … b.z) are one run, found in O(1).
+      // Dense table: the entries of cells (x, y, a.z … b.z) are one run, found in O(1); with every
+      // z of the level (a 2D scene), so are those of a whole row of the box along the table's
+      // faster axis of x and y.
       const std::int64_t x0 = std::max(a.x, l.low.x), x1 = std::min(b.x, l.high.x);
       const std::int64_t y0 = std::max(a.y, l.low.y), y1 = std::min(b.y, l.high.y);
       const std::int64_t z0 = std::max(a.z, l.low.z), z1 = std::min(b.z, l.high.z);
-      if (z0 > z1) return;
-      for (std::int64_t x = x0; x <= x1; ++x)
+      if (z0 > z1 || x0 > x1 || y0 > y1) return;
+      const bool whole_z = z0 == l.low.z && z1 == l.high.z;
+      const auto visit = [&](const Cell& from, const Cell& to) {
+        const std::size_t first = l.first_entry[l.dense_index(from)];
+        const std::size_t last = l.first_entry[l.dense_index(to) + 1];
+        for (std::size_t k = first; k < last; ++k) f(l.entries[k].item);
+      };
+      if (l.y_major) {
         for (std::int64_t y = y0; y <= y1; ++y) {
-          const std::size_t first = l.first_entry[l.dense_index({x, y, z0})];
-          const std::size_t last = l.first_entry[l.dense_index({x, y, z1}) + 1];
-          for (std::size_t k = first; k < last; ++k) f(l.entries[k].item);
+          if (whole_z) {
+            visit({x0, y, z0}, {x1, y, z1});
+            continue;
+          }
+          for (std::int64_t x = x0; x <= x1; ++x) visit({x, y, z0}, {x, y, z1});
         }
+      } else {
+        for (std::int64_t x = x0; x <= x1; ++x) {
+          if (whole_z) {
+            visit({x, y0, z0}, {x, y1, z1});
+            continue;
+          }
+          for (std::int64_t y = y0; y <= y1; ++y) visit({x, y, z0}, {x, y, z1});
+        }
+      }
       return;
     }
     // Entries are sorted by (x, y, z): one binary search per (x, y) column of the box.
@@ -154,11 +176,17 @@ class MultilevelGrid {
     double cell = 0.0;
     std::vector<Entry> entries;
     // When the occupied cells' bounding box is small against the entries (a packing, not a few
-    // items far apart), first_entry[k] is the first entry of dense cell k (x-major, then y, z):
-    // a lookup is one read instead of a binary search (the searches were most of the candidate-pair
-    // loop, itself a third to two fifths of a disk-box step in perf).
+    // items far apart), first_entry[k] is the first entry of dense cell k (x-major, then y, z; or
+    // y-major, then x, z): a lookup is one read instead of a binary search (the searches were most
+    // of the candidate-pair loop, itself a third to two fifths of a disk-box step in perf).
     Cell low{}, high{};
-    std::int64_t ny = 0, nz = 0;
+    std::int64_t nx = 0, ny = 0, nz = 0;
+    // The table's order follows the items': y-major when, in a plane, the cell's x changes from
+    // item to item more often than its y (bodies numbered row by row), so that the table is filled
+    // in sequence and the queries of items in order walk it in sequence. In the x-major order, a
+    // 64k-disk layer numbered row by row scattered its entries over 2 MB and walked the whole table
+    // once per row.
+    bool y_major = false;
     std::vector<std::uint32_t> first_entry;
     std::vector<Entry> sorted;  // sort_entries' scratch, kept with the level
     std::vector<std::uint32_t> next;
@@ -167,7 +195,9 @@ class MultilevelGrid {
       return {grid_index(p.x(), cell), grid_index(p.y(), cell), grid_index(p.z(), cell)};
     }
     std::size_t dense_index(const Cell& c) const {
-      return static_cast<std::size_t>(((c.x - low.x) * ny + (c.y - low.y)) * nz + (c.z - low.z));
+      const std::int64_t plane =
+          y_major ? (c.y - low.y) * nx + (c.x - low.x) : (c.x - low.x) * ny + (c.y - low.y);
+      return static_cast<std::size_t>(plane * nz + (c.z - low.z));
     }
 
     // Entries in (cell, item) order; a counting sort over the dense table when there is one.
@@ -175,9 +205,14 @@ class MultilevelGrid {
       first_entry.clear();
       if (entries.empty()) return;
       low = high = entries.front().cell;
+      std::size_t x_changes = 0, y_changes = 0;
+      const Cell* previous = &entries.front().cell;
       for (const Entry& e : entries) {
         low = {std::min(low.x, e.cell.x), std::min(low.y, e.cell.y), std::min(low.z, e.cell.z)};
         high = {std::max(high.x, e.cell.x), std::max(high.y, e.cell.y), std::max(high.z, e.cell.z)};
+        x_changes += e.cell.x != previous->x;
+        y_changes += e.cell.y != previous->y;
+        previous = &e.cell;
       }
       const double cells =
           double(high.x - low.x + 1) * double(high.y - low.y + 1) * double(high.z - low.z + 1);
@@ -188,8 +223,12 @@ class MultilevelGrid {
         });
         return;
       }
+      nx = high.x - low.x + 1;
       ny = high.y - low.y + 1;
       nz = high.z - low.z + 1;
+      // Only in a plane (2D scenes, whose detection sorts its pairs whatever the order the grid
+      // gives them in); a 3D step keeps the order of a pair's periodic images as the grid gives them.
+      y_major = nz == 1 && x_changes > y_changes;
       // Entries were appended in item order, so the counting sort keeps items ascending per cell.
       first_entry.assign(static_cast<std::size_t>(cells) + 1, 0u);
       for (const Entry& e : entries) ++first_entry[dense_index(e.cell) + 1];

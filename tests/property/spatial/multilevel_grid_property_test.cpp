@@ -1,6 +1,6 @@
 // The shared spatial grid finds every pair of items whose spheres, grown by the margin, overlap
 // (compared with the all-pairs search) and gives each candidate pair exactly once, whether its
-// levels use the dense cell table or the sorted cell list.
+// levels use the dense cell table (x-major or y-major) or the sorted cell list.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -19,7 +19,24 @@ struct Items {
   std::vector<double> radii;
 };
 
+// A flat lattice of touching items, numbered row by row or column by column: the dense table's
+// y-major and x-major orders.
+Items lattice_items() {
+  const int columns = *rc::gen::inRange(1, 16), rows = *rc::gen::inRange(1, 16);
+  const bool row_by_row = *rc::gen::arbitrary<bool>();
+  const double spacing = *rc::gen::element(0.5, 1.0), radius = 0.5 * spacing;
+  Items items;
+  for (int a = 0; a < (row_by_row ? rows : columns); ++a)
+    for (int b = 0; b < (row_by_row ? columns : rows); ++b) {
+      const int column = row_by_row ? b : a, row = row_by_row ? a : b;
+      items.centres.emplace_back(spacing * column, spacing * row, 0.0);
+      items.radii.push_back(radius * *rc::gen::element(1.0, 0.9, 1.1));
+    }
+  return items;
+}
+
 Items random_items() {
+  if (*rc::gen::inRange(0, 4) == 0) return lattice_items();
   const int count = *rc::gen::inRange(0, 120);
   const bool flat = *rc::gen::arbitrary<bool>();  // 2D scenes pass z = 0
   // Packed items take the grid's dense cell table, spread ones its sorted cell list.
@@ -52,6 +69,7 @@ RC_GTEST_PROP(MultilevelGrid, FindsEveryOverlappingPairExactlyOnce, ()) {
   const double margin = *rc::gen::inRange(0, 30) / 100.0;
   MultilevelGrid grid;
   grid.build(centres, radii, {}, margin);
+  RC_CLASSIFY(grid.level_count() > 0 && grid.dense_table_is_y_major(0), "y-major dense table");
   std::set<std::pair<std::size_t, std::size_t>> found;
   std::size_t calls = 0;
   grid.for_each_candidate_pair(centres, radii, margin, [&](std::size_t i, std::size_t j) {
@@ -95,6 +113,26 @@ RC_GTEST_PROP(MultilevelGrid, CellIndexIsTheFloorOfTheQuotientWithinTheClamp, ()
   } else {
     RC_ASSERT(std::llabs(index) == 1099511627776LL);  // clamped at 2^40
   }
+}
+
+TEST(MultilevelGrid, AFlatLatticeNumberedRowByRowGetsAYMajorTableAndColumnByColumnAnXMajorOne) {
+  std::vector<Eigen::Vector3d> by_rows, by_columns, stacked;
+  for (int a = 0; a < 20; ++a)
+    for (int b = 0; b < 5; ++b) {
+      by_rows.emplace_back(b, a, 0.0);
+      by_columns.emplace_back(a, b, 0.0);
+      stacked.emplace_back(b, 0.0, a);  // 3D: the table stays x-major
+    }
+  const std::vector<double> radii(100, 0.5);
+  MultilevelGrid grid;
+  grid.build(by_rows, radii, {}, 0.0);
+  EXPECT_TRUE(grid.dense_table_is_y_major(0));
+  grid.build(by_columns, radii, {}, 0.0);
+  ASSERT_TRUE(grid.has_dense_table(0));
+  EXPECT_FALSE(grid.dense_table_is_y_major(0));
+  grid.build(stacked, radii, {}, 0.0);
+  ASSERT_TRUE(grid.has_dense_table(0));
+  EXPECT_FALSE(grid.dense_table_is_y_major(0));
 }
 
 TEST(MultilevelGrid, PackedItemsGetTheDenseCellTableAndFarApartOnesTheSortedList) {
