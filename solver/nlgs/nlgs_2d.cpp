@@ -602,9 +602,24 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     };
     if constexpr (by_due) {
       due_visits.sweep(
-          sweep_number, [&](std::size_t index) __attribute__((always_inline)) {
+          sweep_number,
+          [&](std::size_t index) __attribute__((always_inline)) {
             update(index);
             return sweep_reaction[index].visits;
+          },
+          // What the visit will read: the sweep record of a contact with a reaction (both lines),
+          // else its open-contact test (which may straddle two).
+          [&](std::size_t index) __attribute__((always_inline)) {
+            const ContactReaction2D& s = sweep_reaction[index];
+            if (s.rt != 0.0 || s.rn != 0.0) {
+              const char* record = reinterpret_cast<const char*>(sweep_hot + index);
+              __builtin_prefetch(record);
+              __builtin_prefetch(record + 64);
+            } else {
+              const char* test = reinterpret_cast<const char*>(sweep_open_test + index);
+              __builtin_prefetch(test);
+              __builtin_prefetch(test + sizeof(OpenContactTest2D) - 1);
+            }
           });
     } else if (!post && grouped) {
       std::uint32_t group = 0, scalar = 0;

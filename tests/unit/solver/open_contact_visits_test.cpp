@@ -73,7 +73,8 @@ TEST(OpenContactSchedule, PassesByAtTheSweepsTheCountedFormDoes) {
 
 // Contacts through random blocks of sweeps (their solves returning a reaction or not, as a fixed
 // function of contact and sweep): the bitmaps visit, at every sweep, exactly the contacts that the
-// walk of every contact does not pass by, in execution order, with the same schedules after.
+// walk of every contact does not pass by, in execution order, with the same schedules after; and
+// their lookahead names each of those positions, in order, `lookahead` visits before its visit.
 TEST(DueVisits, VisitAtEverySweepTheContactsTheWalkDoesNotPassBy) {
   std::mt19937 random(2026);
   for (int run = 0; run < 100; ++run) {
@@ -110,12 +111,22 @@ TEST(DueVisits, VisitAtEverySweepTheContactsTheWalkDoesNotPassBy) {
           expected.push_back(k);
           visit(walked, walked_reaction, k, sweep);
         }
-        due.sweep(sweep, [&](std::size_t k) {
-          visited.push_back(k);
-          visit(filed, filed_reaction, k, sweep);
-          return filed[k];
-        });
+        // The lookahead names every visit's position, `lookahead` calls before the visit itself.
+        std::vector<std::size_t> announced;
+        bool announced_in_time = true;
+        due.sweep(
+            sweep,
+            [&](std::size_t k) {
+              const std::size_t due_by = std::min(visited.size() + DueVisits::lookahead + 1, expected.size());
+              announced_in_time = announced_in_time && announced.size() == due_by;
+              visited.push_back(k);
+              visit(filed, filed_reaction, k, sweep);
+              return filed[k];
+            },
+            [&](std::size_t k) { announced.push_back(k); });
         ASSERT_EQ(visited, expected) << "run " << run << ", sweep " << sweep;
+        ASSERT_EQ(announced, expected) << "run " << run << ", sweep " << sweep;
+        ASSERT_TRUE(announced_in_time) << "run " << run << ", sweep " << sweep;
         for (std::size_t k = 0; k < count; ++k) {
           ASSERT_EQ(filed[k].next, walked[k].next)
               << "run " << run << ", sweep " << sweep << ", contact " << k;
