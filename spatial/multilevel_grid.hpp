@@ -203,6 +203,7 @@ class MultilevelGrid {
     // Entries in (cell, item) order; a counting sort over the dense table when there is one.
     void sort_entries() {
       first_entry.clear();
+      y_major = false;  // set below with the dense table, which alone reads it
       if (entries.empty()) return;
       low = high = entries.front().cell;
       std::size_t x_changes = 0, y_changes = 0;

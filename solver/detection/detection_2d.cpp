@@ -162,7 +162,7 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
   // Rough pairs (i < j); `shift` moves j by that many periods (periodic pairs only).
   // 12 bytes: a 64k-disk layer's list (about 190k pairs) is written and read again at every step.
   struct RoughPair {
-    std::uint32_t i, j;  // contactor indices (the grid's own entries hold 32 bits)
+    std::uint32_t i, j;  // contactor indices: a scene holds far fewer than 2^32 (each takes over 100 bytes)
     std::int32_t shift;
     bool operator<(const RoughPair& o) const { return std::tie(i, j, shift) < std::tie(o.i, o.j, o.shift); }
     bool operator==(const RoughPair& o) const { return i == o.i && j == o.j && shift == o.shift; }
