@@ -12,15 +12,11 @@ using namespace lmgc;
 
 // rows = 0: a square box; else a layer of that many rows.
 void step_disk_box(benchmark::State& state, int rows) {
-  solver::Scene2D scene = bench::disk_box_2d(static_cast<int>(state.range(0)), rows);
-  solver::RunState2D run;
-  run.h = 2e-4;
-  run.visibility = solver::build_visibility_index(scene);
-  solver::NlgsOptions options;
-  options.tolerance = 1e-12;  // fixed work per step: always gs_it1 × gs_it2 sweeps
-  options.gs_it1 = 25;
-  options.gs_it2 = 2;
-  for (int i = 0; i < 100; ++i) solver::step_2d(scene, run, options);  // let the packing load
+  const solver::NlgsOptions options = bench::fixed_work_options();
+  bench::SettledDiskBox2D settled =
+      bench::settled_disk_box_2d(static_cast<int>(state.range(0)), rows, options);
+  solver::Scene2D& scene = settled.scene;
+  solver::RunState2D& run = settled.run;
   bench::time_settled_steps(state, scene, run, 10, 50.0,
                             [&](solver::Scene2D& timed, solver::RunState2D& timed_run) {
                               return solver::step_2d(timed, timed_run, options);

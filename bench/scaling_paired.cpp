@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench/scenes/disk_box_2d.hpp"
@@ -37,23 +38,14 @@ struct SettledScene {
   solver::RunState2D run;
 };
 
-solver::NlgsOptions fixed_work_options() {
-  solver::NlgsOptions options;
-  options.tolerance = 1e-12;  // fixed work per step: always gs_it1 × gs_it2 sweeps
-  options.gs_it1 = 25;
-  options.gs_it2 = 2;
-  return options;
-}
-
 SettledScene settle(int disks, int rows, const solver::NlgsOptions& options) {
   SettledScene s;
   s.disks = disks;
-  s.scene = bench::disk_box_2d(disks, rows);
-  s.run.h = 2e-4;
-  s.run.visibility = solver::build_visibility_index(s.scene);
-  for (int i = 0; i < 100; ++i) solver::step_2d(s.scene, s.run, options);  // let the packing load
-  s.settled = s.scene;
-  s.settled_run = s.run;
+  bench::SettledDiskBox2D settled = bench::settled_disk_box_2d(disks, rows, options);
+  s.settled = settled.scene;
+  s.settled_run = settled.run;
+  s.scene = std::move(settled.scene);
+  s.run = std::move(settled.run);
   return s;
 }
 
@@ -117,7 +109,7 @@ int main(int argc, char** argv) {
     return usage(argv[0]);
   const int rows = scene_name == "layer" ? 32 : 0;  // as BM_StepDiskLayer and BM_StepDiskBox
 
-  const solver::NlgsOptions options = fixed_work_options();
+  const solver::NlgsOptions options = bench::fixed_work_options();
   SettledScene sizes[2] = {settle(small, rows, options), settle(large, rows, options)};
 
   std::vector<double> ratios, small_times, large_times;

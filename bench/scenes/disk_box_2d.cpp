@@ -25,4 +25,20 @@ solver::Scene2D disk_box_2d(int disks, int rows) {
   return b.build();
 }
 
+solver::NlgsOptions fixed_work_options() {
+  solver::NlgsOptions options;
+  options.tolerance = 1e-12;
+  options.gs_it1 = 25;
+  options.gs_it2 = 2;
+  return options;
+}
+
+SettledDiskBox2D settled_disk_box_2d(int disks, int rows, const solver::NlgsOptions& options) {
+  SettledDiskBox2D s{disk_box_2d(disks, rows), {}};
+  s.run.h = 2e-4;
+  s.run.visibility = solver::build_visibility_index(s.scene);
+  for (int i = 0; i < 100; ++i) solver::step_2d(s.scene, s.run, options);
+  return s;
+}
+
 }  // namespace lmgc::bench

@@ -614,7 +614,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
             if (s.rt != 0.0 || s.rn != 0.0) {
               const char* record = reinterpret_cast<const char*>(sweep_hot + index);
               __builtin_prefetch(record);
-              __builtin_prefetch(record + 64);
+              __builtin_prefetch(record + sizeof(SweepContact2D) - 1);
             } else {
               const char* test = reinterpret_cast<const char*>(sweep_open_test + index);
               __builtin_prefetch(test);

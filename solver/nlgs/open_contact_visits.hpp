@@ -90,16 +90,11 @@ class DueVisits {
   }
 
   // Sweep `sweep`: visit(position) for every contact due, in execution order; visit returns the
-  // contact's schedule after the visit, which files it for its next one. Inlined into the caller's
-  // sweep, whose arrays then stay in registers (called, a 64k-disk layer's sweeps were 9% slower, 16
-  // paired runs).
-  template <typename Visit>
-  [[gnu::always_inline]] void sweep(std::int32_t sweep, Visit&& visit) {
-    this->sweep(sweep, visit, [](std::size_t) {});
-  }
-  // The same, calling ahead(position) `lookahead` visits before visit(position), so that the
-  // caller can prefetch what that visit will read: in a long list the due contacts' records are
-  // beyond the caches, and each visit waited for its own.
+  // contact's schedule after the visit, which files it for its next one. ahead(position) is called
+  // `lookahead` visits before visit(position), so that the caller can prefetch what that visit will
+  // read: in a long list the due contacts' records are beyond the caches, and each visit waited for
+  // its own. Inlined into the caller's sweep, whose arrays then stay in registers (called, a
+  // 64k-disk layer's sweeps were 9% slower, 16 paired runs).
   static constexpr int lookahead = 8;
   template <typename Visit, typename Ahead>
   [[gnu::always_inline]] void sweep(std::int32_t sweep, Visit&& visit, Ahead&& ahead) {
