@@ -4,9 +4,10 @@
 // a minute apart, and on a machine shared with other tenants single runs' ratios spread from 0.8 to
 // 1.8; here every block gives a paired ratio and the median over blocks is the figure.
 //
-//   scaling_paired [--scene layer|box] [--small N] [--large N] [--blocks K]
+//   scaling_paired [--scene layer|box] [--state rest|landing] [--small N] [--large N] [--blocks K]
 //
-// Each size is built and settled as rigid_2d_bench does (100 steps, fixed 50 sweeps per step), then
+// Each size is built and settled as rigid_2d_bench does (fixed 50 sweeps per step; at rest, or 100
+// steps for the landing: bench/scenes/disk_box_2d.hpp), then
 // each block times, for both sizes, 10 steps from the settled state repeated max(1, 16000/n) times,
 // as rigid_2d_bench times one run. The order within a block alternates (small first, then large
 // first), so a drift in the machine's speed does not favour one size; the small size also runs one
@@ -38,10 +39,11 @@ struct SettledScene {
   solver::RunState2D run;
 };
 
-SettledScene settle(int disks, int rows, const solver::NlgsOptions& options) {
+SettledScene settle(int disks, int rows, const solver::NlgsOptions& options, bench::DiskBoxState state) {
   SettledScene s;
   s.disks = disks;
-  bench::SettledDiskBox2D settled = bench::settled_disk_box_2d(disks, rows, options);
+  bench::SettledDiskBox2D settled = bench::settled_disk_box_2d(disks, rows, options, state);
+  std::printf("n = %d: %d settling steps\n", disks, settled.settling_steps);
   s.settled = settled.scene;
   s.settled_run = settled.run;
   s.scene = std::move(settled.scene);
@@ -83,19 +85,23 @@ double quantile(std::vector<double> values, double q) {
 }
 
 int usage(const char* program) {
-  std::fprintf(stderr, "usage: %s [--scene layer|box] [--small N] [--large N] [--blocks K]\n", program);
+  std::fprintf(stderr,
+               "usage: %s [--scene layer|box] [--state rest|landing] [--small N] [--large N] [--blocks K]\n",
+               program);
   return 2;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string scene_name = "layer";
+  std::string scene_name = "layer", state_name = "rest";
   int small = 1000, large = 64000, blocks = 12;
   for (int i = 1; i < argc; ++i) {
     const bool has_value = i + 1 < argc;
     if (std::strcmp(argv[i], "--scene") == 0 && has_value)
       scene_name = argv[++i];
+    else if (std::strcmp(argv[i], "--state") == 0 && has_value)
+      state_name = argv[++i];
     else if (std::strcmp(argv[i], "--small") == 0 && has_value)
       small = std::atoi(argv[++i]);
     else if (std::strcmp(argv[i], "--large") == 0 && has_value)
@@ -105,12 +111,15 @@ int main(int argc, char** argv) {
     else
       return usage(argv[0]);
   }
-  if ((scene_name != "layer" && scene_name != "box") || small < 1 || large <= small || blocks < 1)
+  if ((scene_name != "layer" && scene_name != "box") || (state_name != "rest" && state_name != "landing") ||
+      small < 1 || large <= small || blocks < 1)
     return usage(argv[0]);
   const int rows = scene_name == "layer" ? 32 : 0;  // as BM_StepDiskLayer and BM_StepDiskBox
 
   const solver::NlgsOptions options = bench::fixed_work_options();
-  SettledScene sizes[2] = {settle(small, rows, options), settle(large, rows, options)};
+  const bench::DiskBoxState state =
+      state_name == "rest" ? bench::DiskBoxState::at_rest : bench::DiskBoxState::landing;
+  SettledScene sizes[2] = {settle(small, rows, options, state), settle(large, rows, options, state)};
 
   std::vector<double> ratios, small_times, large_times;
   double contacts[2] = {0, 0};
@@ -145,9 +154,9 @@ int main(int argc, char** argv) {
                           *std::min_element(small_times.begin(), small_times.end())) /
                          contact_growth;
   std::printf(
-      "%s %d -> %d: contacts %.0f -> %.0f; paired ratio median %.3f (quartiles %.3f %.3f, "
+      "%s (%s) %d -> %d: contacts %.0f -> %.0f; paired ratio median %.3f (quartiles %.3f %.3f, "
       "%d blocks); fastest at each size %.3f (%.0f ns -> %.0f ns per contact and step)\n",
-      scene_name.c_str(), small, large, contacts[0], contacts[1], quantile(ratios, 0.5),
+      scene_name.c_str(), state_name.c_str(), small, large, contacts[0], contacts[1], quantile(ratios, 0.5),
       quantile(ratios, 0.25), quantile(ratios, 0.75), blocks, fastest,
       1e9 * *std::min_element(small_times.begin(), small_times.end()) / contacts[0],
       1e9 * *std::min_element(large_times.begin(), large_times.end()) / contacts[1]);

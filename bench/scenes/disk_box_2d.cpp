@@ -1,6 +1,8 @@
 #include "bench/scenes/disk_box_2d.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace lmgc::bench {
 
@@ -33,11 +35,24 @@ solver::NlgsOptions fixed_work_options() {
   return options;
 }
 
-SettledDiskBox2D settled_disk_box_2d(int disks, int rows, const solver::NlgsOptions& options) {
-  SettledDiskBox2D s{disk_box_2d(disks, rows), {}};
+SettledDiskBox2D settled_disk_box_2d(int disks, int rows, const solver::NlgsOptions& options,
+                                     DiskBoxState state) {
+  SettledDiskBox2D s{disk_box_2d(disks, rows), {}, 0};
   s.run.h = 2e-4;
   s.run.visibility = solver::build_visibility_index(s.scene);
-  for (int i = 0; i < 100; ++i) solver::step_2d(s.scene, s.run, options);
+  if (state == DiskBoxState::landing) {
+    for (; s.settling_steps < 100; ++s.settling_steps) solver::step_2d(s.scene, s.run, options);
+    return s;
+  }
+  constexpr int kStepsCarried = 10, kMaxSteps = 1000;
+  const double carried = 0.98 * static_cast<double>(disks);
+  for (int carried_steps = 0; carried_steps < kStepsCarried; ++s.settling_steps) {
+    if (s.settling_steps == kMaxSteps)
+      throw std::runtime_error("disk box of " + std::to_string(disks) + " disks not at rest after " +
+                               std::to_string(kMaxSteps) + " steps");
+    const solver::NlgsResult result = solver::step_2d(s.scene, s.run, options);
+    carried_steps = static_cast<double>(result.active) >= carried ? carried_steps + 1 : 0;
+  }
   return s;
 }
 
