@@ -466,6 +466,12 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     int filled = 0;
     std::size_t scalars_in_segment = 0;
     auto moves = [&](std::int32_t body) { return !inverse_mass[static_cast<std::size_t>(body)].isZero(0.0); };
+    // A group keeps one translational inverse mass per body (SweepGroup2D): bit for bit the same
+    // along x and y, which a body with one of the two driven is not.
+    auto same_along_x_and_y = [&](std::int32_t body) {
+      const Vector3d& m = inverse_mass[static_cast<std::size_t>(body)];
+      return std::bit_cast<std::uint64_t>(m.x()) == std::bit_cast<std::uint64_t>(m.y());
+    };
     auto emit_scalar = [&](std::uint32_t p) {
       scalar_positions.push_back(p);
       ++scalars_in_segment;
@@ -491,17 +497,16 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
           g.wtn[lane] = c.wtn();
           g.wnn[lane] = c.wnn();
           g.cov_n[lane] = c.cov_n;
-          g.shift_t[lane] = static_cast<double>(c.zero_shift_t);
           g.mu[lane] = c.mu;
           g.inverse_det[lane] = c.inverse.det;
           g.inverse_forward[lane] = c.inverse.forward;
           g.inverse_backward[lane] = c.inverse.backward;
           const Vector3d& mi = inverse_mass[static_cast<std::size_t>(c.cd)];
           const Vector3d& mj = inverse_mass[static_cast<std::size_t>(c.an)];
-          for (int d = 0; d < 3; ++d) {
-            g.inverse_mass_cd[d][lane] = mi(d);
-            g.inverse_mass_an[d][lane] = mj(d);
-          }
+          g.inverse_mass_cd[lane] = mi.x();
+          g.inverse_inertia_cd[lane] = mi.z();
+          g.inverse_mass_an[lane] = mj.x();
+          g.inverse_inertia_an[lane] = mj.z();
           g.cd[lane] = c.cd;
           g.an[lane] = c.an;
           g.position[lane] = pending[lane];
@@ -525,7 +530,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
       const bool plain = k.law_terms == SweepContact2D::plain &&
                          !(any_update_at_check &&
                            law_updates_at_check[static_cast<std::size_t>(contacts[execution[p]].law)]);
-      if (!plain || (s.rt == 0.0 && s.rn == 0.0)) {
+      if (!plain || (s.rt == 0.0 && s.rn == 0.0) || !same_along_x_and_y(k.cd) || !same_along_x_and_y(k.an)) {
         emit_scalar(p);
         continue;
       }

@@ -81,13 +81,15 @@ LMGC_AVX2 __m256d with_impulse(__m256d v, __m256d impulse) {
 // inject's v[i] += M_i⁻¹ (f, dt ℓ_t + dn ℓ_n) (candidate) or v[j] −= ... (antagonist), on the lanes
 // taken: the others inject r_old − r_old = 0, which would turn a −0 velocity into +0.
 template <bool candidate>
-LMGC_AVX2 void inject_lanes(LaneBodies& b, const double (&inverse_mass)[3][4], __m256d fx, __m256d fy,
-                            __m256d dt, __m256d dn, __m256d lever_t, __m256d lever_n, __m256d taken) {
+LMGC_AVX2 void inject_lanes(LaneBodies& b, const double (&inverse_mass)[4],
+                            const double (&inverse_inertia)[4], __m256d fx, __m256d fy, __m256d dt,
+                            __m256d dn, __m256d lever_t, __m256d lever_n, __m256d taken) {
   const __m256d turn = _mm256_add_pd(_mm256_mul_pd(dt, lever_t), _mm256_mul_pd(dn, lever_n));
-  b.x = _mm256_blendv_pd(b.x, with_impulse<candidate>(b.x, _mm256_mul_pd(load(inverse_mass[0]), fx)), taken);
-  b.y = _mm256_blendv_pd(b.y, with_impulse<candidate>(b.y, _mm256_mul_pd(load(inverse_mass[1]), fy)), taken);
+  const __m256d m = load(inverse_mass);
+  b.x = _mm256_blendv_pd(b.x, with_impulse<candidate>(b.x, _mm256_mul_pd(m, fx)), taken);
+  b.y = _mm256_blendv_pd(b.y, with_impulse<candidate>(b.y, _mm256_mul_pd(m, fy)), taken);
   b.w =
-      _mm256_blendv_pd(b.w, with_impulse<candidate>(b.w, _mm256_mul_pd(load(inverse_mass[2]), turn)), taken);
+      _mm256_blendv_pd(b.w, with_impulse<candidate>(b.w, _mm256_mul_pd(load(inverse_inertia), turn)), taken);
 }
 
 LMGC_AVX2 void store_bodies(const LaneBodies& b) {
@@ -128,10 +130,12 @@ __attribute__((target("avx2"))) int sweep_group_2d(const SweepGroup2D& g, Contac
   const __m256d un = _mm256_sub_pd(
       _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, dx), _mm256_mul_pd(ny, dy)), _mm256_mul_pd(lcd_n, a.w)),
       _mm256_mul_pd(lan_n, b.w));
-  // minus_w_r: u − (W_t r_t + W_n r_n); then the plain path's shifts.
-  const __m256d qt =
-      _mm256_add_pd(_mm256_sub_pd(ut, _mm256_add_pd(_mm256_mul_pd(wtt, rt_old), _mm256_mul_pd(wtn, rn_old))),
-                    load(g.shift_t));
+  // minus_w_r: u − (W_t r_t + W_n r_n); then the plain path's normal shift. Its tangential shift, +0
+  // or -0, is left out: it only decides the sign of a zero q_t, which reaches nothing. q_t enters
+  // d_t = -(W_nn q_t - W_tn q_n), which is a zero only when W_tn q_n is one; the case tests compare
+  // with zero, where the sign does not count; and a sticking r_t = d_t / det that is zero is flushed
+  // to +0 below. Sliding lanes' reactions do not read q_t.
+  const __m256d qt = _mm256_sub_pd(ut, _mm256_add_pd(_mm256_mul_pd(wtt, rt_old), _mm256_mul_pd(wtn, rn_old)));
   const __m256d qn =
       _mm256_add_pd(_mm256_sub_pd(un, _mm256_add_pd(_mm256_mul_pd(wtn, rt_old), _mm256_mul_pd(wnn, rn_old))),
                     load(g.cov_n));
@@ -184,8 +188,8 @@ __attribute__((target("avx2"))) int sweep_group_2d(const SweepGroup2D& g, Contac
   const __m256d dt = _mm256_sub_pd(rt, rt_old), dn = _mm256_sub_pd(rn, rn_old);
   const __m256d fx = _mm256_add_pd(_mm256_mul_pd(ny, dt), _mm256_mul_pd(nx, dn));
   const __m256d fy = _mm256_add_pd(_mm256_mul_pd(minus_nx, dt), _mm256_mul_pd(ny, dn));
-  inject_lanes<true>(a, g.inverse_mass_cd, fx, fy, dt, dn, lcd_t, lcd_n, taken);
-  inject_lanes<false>(b, g.inverse_mass_an, fx, fy, dt, dn, lan_t, lan_n, taken);
+  inject_lanes<true>(a, g.inverse_mass_cd, g.inverse_inertia_cd, fx, fy, dt, dn, lcd_t, lcd_n, taken);
+  inject_lanes<false>(b, g.inverse_mass_an, g.inverse_inertia_an, fx, fy, dt, dn, lan_t, lan_n, taken);
   // Candidates first, as the scalar update writes its candidate before its antagonist: a body that
   // no update moves (inverse mass 0) may be an antagonist of several lanes, each writing it unchanged.
   store_bodies(a);

@@ -29,13 +29,20 @@ struct alignas(32) SweepGroup2D {
   double lever_cd_t[4], lever_cd_n[4];  // candidate's ℓ×t, ℓ×n
   double lever_an_t[4], lever_an_n[4];  // antagonist's
   double wtt[4], wtn[4], wnn[4];        // Delassus block
-  double cov_n[4], shift_t[4];          // law shifts of the free velocity (shift_t: +0 or -0)
+  double cov_n[4];                      // law shift of the normal free velocity
   double mu[4];
   double inverse_det[4], inverse_forward[4], inverse_backward[4];  // SignoriniCoulombReciprocals2D
-  double inverse_mass_cd[3][4], inverse_mass_an[3][4];             // (x, y, ω) of each body
-  std::int32_t cd[4], an[4];                                       // body indices
+  // Each body's inverse mass, translation (the same along x and y: a lane whose body has one of the
+  // two driven is left to the scalar update) and rotation. 16 bytes a lane, where (x, y, ω) took 24.
+  double inverse_mass_cd[4], inverse_inertia_cd[4], inverse_mass_an[4], inverse_inertia_an[4];
+  std::int32_t cd[4], an[4];  // body indices
   std::uint32_t position[4];
+  // No tangential law shift: a plain contact's is +0 or -0 (SweepContact2D::zero_shift_t), which only
+  // decides the sign of a zero q_t, and no result keeps that sign (sweep_group_2d.cpp).
 };
+// The sweeps stream the groups from memory on large scenes (nlgs_2d.cpp prefetches them): 640 bytes
+// for four updates.
+static_assert(sizeof(SweepGroup2D) == 640);
 
 // Whether this processor runs the AVX2 kernel.
 bool sweep_groups_available();

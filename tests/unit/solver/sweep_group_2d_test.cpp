@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -33,16 +34,16 @@ struct Fixture {
       group.wtt[lane] = 1.0 + 0.1 * 0.1 * 2.0;
       group.wtn[lane] = 0.0;
       group.wnn[lane] = 1.0;
-      group.cov_n[lane] = group.shift_t[lane] = 0.0;
+      group.cov_n[lane] = 0.0;
       group.mu[lane] = 0.5;
       const SignoriniCoulombReciprocals2D inverse =
           signorini_coulomb_reciprocals_2d(group.wtt[lane], group.wtn[lane], group.wnn[lane], group.mu[lane]);
       group.inverse_det[lane] = inverse.det;
       group.inverse_forward[lane] = inverse.forward;
       group.inverse_backward[lane] = inverse.backward;
-      group.inverse_mass_cd[0][lane] = group.inverse_mass_cd[1][lane] = 1.0;
-      group.inverse_mass_cd[2][lane] = 2.0;
-      group.inverse_mass_an[0][lane] = group.inverse_mass_an[1][lane] = group.inverse_mass_an[2][lane] = 0.0;
+      group.inverse_mass_cd[lane] = 1.0;
+      group.inverse_inertia_cd[lane] = 2.0;
+      group.inverse_mass_an[lane] = group.inverse_inertia_an[lane] = 0.0;
       group.cd[lane] = lane;
       group.an[lane] = 4;
       group.position[lane] = static_cast<std::uint32_t>(lane);
@@ -104,6 +105,42 @@ TEST(SweepGroup2D, AGroupWithEveryLaneWithoutReactionWritesNothing) {
   const std::vector<Vector3d> before = f.velocity;
   EXPECT_EQ(f.run(), 0x0);
   for (std::size_t k = 0; k < 5; ++k) EXPECT_TRUE(same_bits(f.velocity[k], before[k]));
+}
+
+// The groups leave out a plain contact's tangential law shift, +0 or -0 (sweep_group_2d.cpp): it only
+// decides the sign of a zero q_t. Where that sign reaches furthest (u_t = -0 and W_tn = -0, so that
+// a sticking lane's d_t = -(W_nn q_t - W_tn q_n) is a zero of q_t's sign), the scalar update's
+// reactions are the same with either shift once |r| < 1e-24 is flushed to +0, and the group's are
+// theirs, bit for bit.
+TEST(SweepGroup2D, ATangentialShiftOfEitherZeroGivesTheReactionsTheGroupGives) {
+  if (!sweep_groups_available()) GTEST_SKIP() << "no AVX2 on this processor: every update runs alone";
+  Fixture f;
+  for (int lane = 0; lane < 4; ++lane) {
+    f.group.nx[lane] = -0.0;  // with the velocities below, u_t = -0 exactly
+    f.group.wtn[lane] = -0.0;
+    f.velocity[static_cast<std::size_t>(lane)] = Vector3d(-0.0, -1.0, -0.0);
+  }
+  const double wtt = f.group.wtt[0], wtn = f.group.wtn[0], wnn = f.group.wnn[0], mu = f.group.mu[0];
+  const SignoriniCoulombReciprocals2D inverse{f.group.inverse_det[0], f.group.inverse_forward[0],
+                                              f.group.inverse_backward[0]};
+  ASSERT_EQ(f.run(), 0xF);
+  for (const double shift : {0.0, -0.0}) {
+    // The scalar update: q = (u - W r_old) + shift, the plain solve, then the flush.
+    const double qt = (-0.0 - (wtt * 0.0 + wtn * 0.01)) + shift;
+    const double qn = -1.0 - (wtn * 0.0 + wnn * 0.01);
+    ASSERT_EQ(std::signbit(qt), std::signbit(shift));  // the shift decides q_t's zero sign
+    double rt = 1, rn = 1;
+    ContactStatus status;
+    ASSERT_TRUE(solve_signorini_coulomb_2d(wtt, wtn, wnn, inverse, qt, qn, mu, rt, rn, status));
+    ASSERT_EQ(status, ContactStatus::stick);
+    // Before the flush the shift shows: r_t = d_t / det, a zero of the sign opposite to q_t's.
+    EXPECT_NE(std::signbit(rt), std::signbit(shift));
+    if (std::fabs(rt) < 1e-24) rt = 0.0;
+    for (std::size_t k = 0; k < 4; ++k) {
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(f.reaction[k].rt), std::bit_cast<std::uint64_t>(rt));
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(f.reaction[k].rn), std::bit_cast<std::uint64_t>(rn));
+    }
+  }
 }
 
 }  // namespace
