@@ -425,9 +425,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
   };
 
   // Groups of four plain updates that share no movable body, run at once (sweep_group_2d.hpp), for
-  // the contacts with a reaction at the start of a block: the open ones are passed by on their
-  // reaction records (the scalar path), a group's lanes would mostly idle. Formed again at every
-  // block, after the check (the reactions have moved) and the quick scramble (the order has).
+  // the contacts with a reaction when they are formed: the open ones are passed by on their
+  // reaction records (the scalar path), a group's lanes would mostly idle. Formed at the first
+  // block, and again after a check that changed the number of loaded contacts by more than 1/16 or
+  // a quick scramble (the order has changed): see reuse_groups below.
   const bool use_groups = options.vector_sweeps && count >= 4 && sweep_groups_available();
   bool grouped = false;                 // this block's sweeps run the groups
   std::size_t loaded_at_formation = 0;  // contacts with a reaction when the groups were formed
@@ -438,13 +439,13 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
   const bool due_visits_fit =
       count >= options.due_visits_from && options.gs_it1 > 0 && DueVisits::ring_length(options.gs_it1) <= 64;
   thread_local std::vector<SweepGroup2D> groups;
-  // A sweep reads the groups in sequence, 736 bytes each, and its first load of a group missed the
-  // caches once they no longer held the array: a sampled profile of the 64k-disk layer at rest, half
-  // its contacts loaded, put 14% of the group kernel's samples on that load. So the group kGroupsAhead
-  // on is prefetched, once the array outgrows what a core's L2 keeps beside the bodies and the
-  // reactions. In-process A/B (alternated halves of 5 steps, medians of 10-16 rounds), sweeps with the
-  // prefetch against without: 64k disks 0.72-0.75 at 8-10 groups ahead (2: 0.78, 16 and 32: 0.75-0.76),
-  // 4k 1.007, 1k 1.048 (its array is in L2, the prefetches are instructions spent).
+  // A sweep reads the groups in sequence (then 736 bytes each, now 640), and its first load of a group missed
+  // the caches once they no longer held the array: a sampled profile of the 64k-disk layer at rest, half its
+  // contacts loaded, put 14% of the group kernel's samples on that load. So the group kGroupsAhead on is
+  // prefetched, once the array outgrows what a core's L2 keeps beside the bodies and the reactions.
+  // In-process A/B (alternated halves of 5 steps, medians of 10-16 rounds), sweeps with the prefetch against
+  // without: 64k disks 0.72-0.75 at 8-10 groups ahead (2: 0.78, 16 and 32: 0.75-0.76), 4k 1.007, 1k 1.048
+  // (its array is in L2, the prefetches are instructions spent).
   constexpr std::size_t kGroupsAhead = 8;
   constexpr std::size_t kPrefetchGroupsFrom = (512 * 1024) / sizeof(SweepGroup2D);
   bool prefetch_groups = false;
