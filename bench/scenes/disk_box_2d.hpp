@@ -20,7 +20,7 @@ enum class DiskBoxState {
   // After 100 steps, the landing's aftermath (the benches' state up to stop 29). It is not the same
   // physics at every size: the 1k box and the layers of every width (32 rows) have most disks in
   // flight again, a tenth of their contacts loaded, while the 16k and 64k boxes, whose landing the
-  // fixed sweeps resolve less well, have half of theirs loaded.
+  // fixed sweeps resolve less well, have half and a quarter of theirs loaded (0.49, 0.26).
   landing,
   // At rest: every disk carried (loaded contacts at least 98% of the disks: one below each) for 10
   // steps in a row, half of the contacts loaded at every size. 1k disks come to rest after about 200
