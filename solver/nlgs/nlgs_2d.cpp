@@ -444,8 +444,9 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
   // contacts loaded, put 14% of the group kernel's samples on that load. So the group kGroupsAhead on is
   // prefetched, once the array outgrows what a core's L2 keeps beside the bodies and the reactions.
   // In-process A/B (alternated halves of 5 steps, medians of 10-16 rounds), sweeps with the prefetch against
-  // without: 64k disks 0.72-0.75 at 8-10 groups ahead (2: 0.78, 16 and 32: 0.75-0.76), 4k 1.007, 1k 1.048
-  // (its array is in L2, the prefetches are instructions spent).
+  // without, 736-byte groups: 64k disks 0.72-0.73 at 10 groups ahead, 0.75-0.78 at 2, 3, 6, 16 and 32; at 8,
+  // 4k 1.007 and 1k 1.048 (its array is in L2, the prefetches are instructions spent). At 8 ahead with the
+  // 640-byte groups kept from block to block, in a heavily loaded hour: 64k 0.781 and 0.828.
   constexpr std::size_t kGroupsAhead = 8;
   constexpr std::size_t kPrefetchGroupsFrom = (512 * 1024) / sizeof(SweepGroup2D);
   bool prefetch_groups = false;
