@@ -108,37 +108,47 @@ TEST(SweepGroup2D, AGroupWithEveryLaneWithoutReactionWritesNothing) {
 }
 
 // The groups leave out a plain contact's tangential law shift, +0 or -0 (sweep_group_2d.cpp): it only
-// decides the sign of a zero q_t. Where that sign reaches furthest (u_t = -0 and W_tn = -0, so that
-// a sticking lane's d_t = -(W_nn q_t - W_tn q_n) is a zero of q_t's sign), the scalar update's
-// reactions are the same with either shift once |r| < 1e-24 is flushed to +0, and the group's are
-// theirs, bit for bit.
+// decides the sign of a zero q_t. With W_tn = -0, a sticking lane's d_t = -(W_nn q_t - W_tn q_n) is a
+// zero of the sign opposite to q_t's, and so is r_t = d_t / det before |r| < 1e-24 is flushed to +0.
+// Lanes 0 and 1 have u_t = -0, where the shift decides q_t's sign; lanes 2 and 3 have u_t = +0, where
+// r_t is -0 with either shift, so that the group's +0 comes from its flush. With either shift, the
+// scalar update's flushed reactions are the group's, bit for bit.
 TEST(SweepGroup2D, ATangentialShiftOfEitherZeroGivesTheReactionsTheGroupGives) {
   if (!sweep_groups_available()) GTEST_SKIP() << "no AVX2 on this processor: every update runs alone";
   Fixture f;
   for (int lane = 0; lane < 4; ++lane) {
-    f.group.nx[lane] = -0.0;  // with the velocities below, u_t = -0 exactly
+    const bool minus_zero_ut = lane < 2;
+    f.group.nx[lane] = minus_zero_ut ? -0.0 : 0.0;
     f.group.wtn[lane] = -0.0;
-    f.velocity[static_cast<std::size_t>(lane)] = Vector3d(-0.0, -1.0, -0.0);
+    f.velocity[static_cast<std::size_t>(lane)] =
+        minus_zero_ut ? Vector3d(-0.0, -1.0, -0.0) : Vector3d(0.0, -1.0, 0.0);
   }
   const double wtt = f.group.wtt[0], wtn = f.group.wtn[0], wnn = f.group.wnn[0], mu = f.group.mu[0];
   const SignoriniCoulombReciprocals2D inverse{f.group.inverse_det[0], f.group.inverse_forward[0],
                                               f.group.inverse_backward[0]};
   ASSERT_EQ(f.run(), 0xF);
-  for (const double shift : {0.0, -0.0}) {
-    // The scalar update: q = (u - W r_old) + shift, the plain solve, then the flush.
-    const double qt = (-0.0 - (wtt * 0.0 + wtn * 0.01)) + shift;
-    const double qn = -1.0 - (wtn * 0.0 + wnn * 0.01);
-    ASSERT_EQ(std::signbit(qt), std::signbit(shift));  // the shift decides q_t's zero sign
-    double rt = 1, rn = 1;
-    ContactStatus status;
-    ASSERT_TRUE(solve_signorini_coulomb_2d(wtt, wtn, wnn, inverse, qt, qn, mu, rt, rn, status));
-    ASSERT_EQ(status, ContactStatus::stick);
-    // Before the flush the shift shows: r_t = d_t / det, a zero of the sign opposite to q_t's.
-    EXPECT_NE(std::signbit(rt), std::signbit(shift));
-    if (std::fabs(rt) < 1e-24) rt = 0.0;
-    for (std::size_t k = 0; k < 4; ++k) {
-      EXPECT_EQ(std::bit_cast<std::uint64_t>(f.reaction[k].rt), std::bit_cast<std::uint64_t>(rt));
-      EXPECT_EQ(std::bit_cast<std::uint64_t>(f.reaction[k].rn), std::bit_cast<std::uint64_t>(rn));
+  for (std::size_t k = 0; k < 4; ++k) {
+    const double ut = k < 2 ? -0.0 : 0.0;
+    for (const double shift : {0.0, -0.0}) {
+      // The scalar update: q = (u - W r_old) + shift, the plain solve, then the flush.
+      const double qt = (ut - (wtt * 0.0 + wtn * 0.01)) + shift;
+      const double qn = -1.0 - (wtn * 0.0 + wnn * 0.01);
+      double rt = 1, rn = 1;
+      ContactStatus status;
+      ASSERT_TRUE(solve_signorini_coulomb_2d(wtt, wtn, wnn, inverse, qt, qn, mu, rt, rn, status));
+      ASSERT_EQ(status, ContactStatus::stick);
+      ASSERT_EQ(rt, 0.0);
+      EXPECT_NE(std::signbit(rt), std::signbit(qt)) << "lane " << k;
+      if (k < 2) {
+        EXPECT_EQ(std::signbit(qt), std::signbit(shift)) << "lane " << k;  // the shift decides
+      } else {
+        EXPECT_TRUE(std::signbit(rt)) << "lane " << k;  // -0 until the flush
+      }
+      if (std::fabs(rt) < 1e-24) rt = 0.0;
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(f.reaction[k].rt), std::bit_cast<std::uint64_t>(rt))
+          << "lane " << k;
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(f.reaction[k].rn), std::bit_cast<std::uint64_t>(rn))
+          << "lane " << k;
     }
   }
 }
