@@ -63,4 +63,15 @@ template <bool write, class T>
   if (index + kPrefetchAhead < array.size()) __builtin_prefetch(array.data() + index + kPrefetchAhead, write);
 }
 
+// The same for a pass that reads `array` through an index (`index_of[i]` for the i-th element of the
+// pass): the element kPrefetchAhead steps on, both ends of it.
+template <bool write, class T, class Index>
+[[gnu::always_inline]] inline void prefetch_gathered(const LargeArray<T>& array,
+                                                     const std::vector<Index>& index_of, std::size_t i) {
+  if (i + kPrefetchAhead >= index_of.size()) return;
+  const char* element = reinterpret_cast<const char*>(array.data() + index_of[i + kPrefetchAhead]);
+  __builtin_prefetch(element, write);
+  __builtin_prefetch(element + sizeof(T) - 1, write);
+}
+
 }  // namespace lmgc::solver
