@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <numeric>
+#include <vector>
 
 namespace lmgc::solver {
 namespace {
@@ -39,6 +40,25 @@ TEST(LargeArray, OverAlignedElementsKeepTheirAlignmentInSmallBuffers) {
     LargeArray<Line> lines(count);
     EXPECT_EQ(address(lines.data()) % 64, 0u) << count;
   }
+}
+
+// The passes that read an array through an index ask for the element kPrefetchAhead steps on: near the
+// end of the index there is none, and the index itself must not be read past its end (the sanitizer
+// configuration catches such a read: the index's buffer holds exactly its elements).
+TEST(LargeArray, PrefetchGatheredReadsNoIndexPastTheEnd) {
+  LargeArray<double> values(64, 1.0);
+  for (std::size_t n :
+       {std::size_t{0}, std::size_t{1}, kPrefetchAhead, kPrefetchAhead + 1, std::size_t{40}}) {
+    std::vector<std::uint32_t> index_of(n);
+    std::iota(index_of.begin(), index_of.end(), 0u);
+    index_of.shrink_to_fit();
+    for (std::size_t i = 0; i < n; ++i) {
+      prefetch_gathered<false>(values, index_of, i);
+      prefetch_gathered<true>(values, index_of, i);
+    }
+    EXPECT_EQ(index_of.size(), n);
+  }
+  EXPECT_EQ(std::accumulate(values.begin(), values.end(), 0.0), 64.0);  // prefetches change nothing
 }
 
 }  // namespace
