@@ -1,8 +1,9 @@
 #include "bench/scenes/disk_box_2d.hpp"
 
 #include <cmath>
-#include <stdexcept>
 #include <string>
+
+#include "bench/scenes/at_rest.hpp"
 
 namespace lmgc::bench {
 
@@ -44,15 +45,8 @@ SettledDiskBox2D settled_disk_box_2d(int disks, int rows, const solver::NlgsOpti
     for (; s.settling_steps < 100; ++s.settling_steps) solver::step_2d(s.scene, s.run, options);
     return s;
   }
-  constexpr int kStepsCarried = 10, kMaxSteps = 1000;
-  const double carried = 0.98 * static_cast<double>(disks);
-  for (int carried_steps = 0; carried_steps < kStepsCarried; ++s.settling_steps) {
-    if (s.settling_steps == kMaxSteps)
-      throw std::runtime_error("disk box of " + std::to_string(disks) + " disks not at rest after " +
-                               std::to_string(kMaxSteps) + " steps");
-    const solver::NlgsResult result = solver::step_2d(s.scene, s.run, options);
-    carried_steps = static_cast<double>(result.active) >= carried ? carried_steps + 1 : 0;
-  }
+  s.settling_steps = step_until_at_rest(disks, "disk box of " + std::to_string(disks) + " disks",
+                                        [&] { return solver::step_2d(s.scene, s.run, options); });
   return s;
 }
 
