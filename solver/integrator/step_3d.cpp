@@ -732,6 +732,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
     const LocalSolution3D s =
         solve_signorini_coulomb_3d(swap_normal_first(law_block(c)), inverse, swap_normal_first(q_local), c.mu,
                                    swap_normal_first(rr_previous), local_tolerance, forcing, keep_tolerance);
+    ++result.local_solves;
     return with_cohesion(c, swap_normal_first(s.r));
   };
   const double tol = options.tolerance;
