@@ -48,8 +48,7 @@ void time_settled_steps(benchmark::State& state, Scene& scene, Run& run, int ste
   state.counters["sweeps_run_per_step"] = sweeps_run / static_cast<double>(steps);
   // The 3D local solves per contact and step (NlgsResult::local_solves; none counted in 2D): what a
   // step's time follows, with the open contacts passed by and the skipped sweeps left out.
-  if (local_solves > 0)
-    state.counters["local_solves_per_contact"] = contacts > 0 ? local_solves / contacts : 0.0;
+  if (local_solves > 0) state.counters["local_solves_per_contact"] = local_solves / contacts;
   state.counters["s_per_step"] = benchmark::Counter(
       static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.counters["contact_updates_per_s"] =
