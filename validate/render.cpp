@@ -99,7 +99,9 @@ std::string render_json(const std::vector<grammar::Diagnostic>& diagnostics) {
                      {"hint", d.hint},
                      {"url", "docs/diagnostics.md#" + d.code}});
   }
-  return array.dump(2);
+  // A message may quote bytes of a damaged file that are not UTF-8 (a Latin-1 accent in a colour):
+  // replaced by U+FFFD rather than an exception.
+  return array.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 }  // namespace lmgc::validate

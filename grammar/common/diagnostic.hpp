@@ -32,8 +32,10 @@ struct Diagnostic {
   std::string hint;
 };
 
-// Collects diagnostics in emission order. Limits the count so a hostile file cannot
-// exhaust memory; the overflow is itself reported once.
+// Collects diagnostics in emission order. Limits the count so a hostile file cannot exhaust
+// memory. When the limit is reached, an error still takes the place of the latest stored warning
+// or note, so no error is lost while a warning is kept; what could not be kept is counted by
+// severity and stated by overflow_diagnostic() (L9004).
 class DiagnosticSink {
  public:
   explicit DiagnosticSink(std::size_t limit = 1000) : limit_(limit) {}
@@ -46,7 +48,10 @@ class DiagnosticSink {
   std::size_t error_count() const { return errors_; }
   std::size_t warning_count() const { return warnings_; }
   bool has_errors() const { return errors_ > 0; }
-  bool truncated() const { return dropped_ > 0; }
+  bool truncated() const { return dropped_errors_ + dropped_warnings_ + dropped_notes_ > 0; }
+  std::size_t dropped_errors() const { return dropped_errors_; }
+  // L9004 "diagnostics not shown", with the counts left out by severity; empty when none was.
+  std::vector<Diagnostic> overflow_diagnostic() const;
   void clear();
 
  private:
@@ -54,7 +59,8 @@ class DiagnosticSink {
   std::size_t limit_;
   std::size_t errors_ = 0;
   std::size_t warnings_ = 0;
-  std::size_t dropped_ = 0;
+  std::size_t stored_errors_ = 0;
+  std::size_t dropped_errors_ = 0, dropped_warnings_ = 0, dropped_notes_ = 0;
 };
 
 }  // namespace lmgc::grammar

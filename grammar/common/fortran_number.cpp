@@ -42,12 +42,15 @@ auto store(Member member) {
 auto const mark_point = [](auto& ctx) { x3::get<RealTag>(ctx).get().has_point = true; };
 auto const mark_exponent = [](auto& ctx) { x3::get<RealTag>(ctx).get().has_exponent = true; };
 
+// Digits as a range, not x3::digit: the standard encoding's classifier asserts on a byte >= 0x80
+// (a negative char), and any byte may sit in a damaged file.
+auto const digit = x3::char_('0', '9');
 auto const sign_char = x3::char_("+-");
 auto const exponent_letter = x3::char_("DdEe");
-auto const fraction = x3::lit('.')[mark_point] >> x3::raw[*x3::digit][store(&RealPieces::fraction_digits)];
-auto const mantissa = (x3::raw[+x3::digit][store(&RealPieces::integer_digits)] >> -fraction) |
-                      (x3::lit('.')[mark_point] >> x3::raw[+x3::digit][store(&RealPieces::fraction_digits)]);
-auto const exponent_digits = x3::raw[+x3::digit][store(&RealPieces::exponent_digits)];
+auto const fraction = x3::lit('.')[mark_point] >> x3::raw[*digit][store(&RealPieces::fraction_digits)];
+auto const mantissa = (x3::raw[+digit][store(&RealPieces::integer_digits)] >> -fraction) |
+                      (x3::lit('.')[mark_point] >> x3::raw[+digit][store(&RealPieces::fraction_digits)]);
+auto const exponent_digits = x3::raw[+digit][store(&RealPieces::exponent_digits)];
 auto const exponent =
     (exponent_letter[mark_exponent] >> -sign_char[store(&RealPieces::exponent_sign)] >> exponent_digits) |
     (sign_char[store(&RealPieces::exponent_sign)] >> x3::eps[mark_exponent] >> exponent_digits);
@@ -64,7 +67,7 @@ struct IntegerPieces {
 };
 auto const integer_grammar =
     -sign_char[([](auto& ctx) { x3::get<IntegerTag>(ctx).get().sign = x3::_attr(ctx); })] >>
-    x3::raw[+x3::digit][([](auto& ctx) { x3::get<IntegerTag>(ctx).get().digits = x3::_attr(ctx); })];
+    x3::raw[+digit][([](auto& ctx) { x3::get<IntegerTag>(ctx).get().digits = x3::_attr(ctx); })];
 
 bool parse_integer_pieces(const char* first, const char* last, char& sign, Range& digits) {
   IntegerPieces pieces;

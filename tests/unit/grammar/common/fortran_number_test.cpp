@@ -74,6 +74,24 @@ TEST(ListDirected, StopsAtBlankCommaSlash) {
   EXPECT_FALSE(read_list_directed_integer(" / 3").has_value());
 }
 
+// Every byte may sit in a damaged file: a byte >= 0x80 (a negative char) is malformed, never an
+// assertion of the parser's character classes (found by fuzzing POSTPRO.DAT's STEP line).
+TEST(FortranNumbers, BytesAbove127AreMalformedNotAsserted) {
+  for (int byte = 0x80; byte <= 0xFF; ++byte) {
+    const std::string high(1, static_cast<char>(byte));
+    EXPECT_EQ(read_fortran_integer("1" + high).error, NumberError::malformed);
+    EXPECT_EQ(read_fortran_integer(high).error, NumberError::malformed);
+    EXPECT_EQ(read_fortran_real("1.0" + high, 7).error, NumberError::malformed);
+    EXPECT_EQ(read_fortran_real("1.0D" + high, 7).error, NumberError::malformed);
+    const auto listed = read_list_directed_integer(" 7" + high + " ");
+    ASSERT_TRUE(listed.has_value());
+    EXPECT_EQ(listed->error, NumberError::malformed);
+    const auto real = read_list_directed_real(high);
+    ASSERT_TRUE(real.has_value());
+    EXPECT_EQ(real->error, NumberError::malformed);
+  }
+}
+
 TEST(FortranD, WritesLmgc90Layout) {
   EXPECT_EQ(fortran_d(0.0016), " 0.1600000D-02");
   EXPECT_EQ(fortran_d(-0.5175621), "-0.5175621D+00");
