@@ -10,6 +10,7 @@
 
 #include "grammar/common/diagnostic_catalogue.hpp"
 #include "grammar/common/output_file.hpp"
+#include "solver/driver/case_input.hpp"
 #include "validate/case_files.hpp"
 #include "validate/checks.hpp"
 #include "validate/render.hpp"
@@ -65,7 +66,11 @@ int main(int argc, char** argv) {
   auto files = lmgc::validate::load_case(case_dir, sink);
   // Semantic checks (references, consistency, physics) run on whatever could be read: a file
   // with syntax errors still gets its cross references checked.
-  if (files) lmgc::validate::check_case(*files, sink);
+  if (files) {
+    lmgc::validate::check_case(*files, sink);
+    // What lmgc-solve would refuse or leave out: warnings here, for a case valid for LMGC90.
+    lmgc::solver::report_solver_support(*files, sink);
+  }
 
   // Echo files are written only from a case that read without error, and never into DATBOX/.
   if (files && echo && !sink.has_errors()) {
@@ -82,8 +87,10 @@ int main(int argc, char** argv) {
 
   std::size_t notes = 0;
   for (const auto& d : sink.items()) notes += d.severity == lmgc::grammar::Severity::note;
+  std::vector<lmgc::grammar::Diagnostic> shown = sink.items();
+  for (auto& d : sink.overflow_diagnostic()) shown.push_back(std::move(d));
   if (json) {
-    std::cout << lmgc::validate::render_json(sink.items()) << "\n";
+    std::cout << lmgc::validate::render_json(shown) << "\n";
   } else {
     const bool color = !no_color && std::getenv("NO_COLOR") == nullptr && isatty(STDOUT_FILENO);
     const auto lookup = [&](const std::string& file, std::uint32_t line) -> std::string_view {
@@ -91,11 +98,10 @@ int main(int argc, char** argv) {
       auto it = files->sources.find(file);
       return it == files->sources.end() ? std::string_view{} : it->second.line_text(line);
     };
-    for (const auto& d : sink.items()) {
+    for (const auto& d : shown) {
       if (quiet && d.severity != lmgc::grammar::Severity::error) continue;
       std::cout << lmgc::validate::render_text(d, lookup, {color});
     }
-    if (sink.truncated()) std::cout << "(further diagnostics not shown)\n";
     std::cout << lmgc::validate::render_summary(sink.error_count(), sink.warning_count(), notes) << "\n";
   }
   if (!files) return kExitUsage;

@@ -1,43 +1,52 @@
-// lmgc-solve: runs an LMGC90 case (rigid 2D; rigid 3D with spheres and planes) and writes what LMGC90 writes:
-// OUTBOX echo and state files, DISPLAY, POSTPRO, plus a per-step run report with the achieved residual. Exit:
-// 0 success, 1 invalid data, 2 usage, 3 not converged under --strict, 130 interrupted.
+// lmgc-solve: runs an LMGC90 case (rigid 2D, rigid 3D) and writes what LMGC90 writes: OUTBOX echo
+// and state files, DISPLAY, POSTPRO, plus a per-step run report with the achieved residual and the
+// run's parameters with where each came from. Exit codes: see kExit* below and docs/lmgc-solve.md.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
+#include <set>
 
+#include "grammar/common/diagnostic_catalogue.hpp"
 #include "grammar/common/output_file.hpp"
 #include "solver/driver/case_input.hpp"
 #include "solver/driver/run_2d.hpp"
+#include "solver/driver/run_3d.hpp"
+#include "solver/driver/run_parameters.hpp"
 #include "validate/case_files.hpp"
 #include "validate/checks.hpp"
 #include "validate/render.hpp"
 
 namespace {
-constexpr int kExitOk = 0;
 
-// Whether BODIES.DAT holds RBDY3 bodies only (a cheap look before the case is loaded).
-bool rigid_3d_folder(const std::string& case_dir) {
-  std::ifstream in(std::filesystem::path(case_dir) / "DATBOX" / "BODIES.DAT");
-  std::string line;
-  bool any = false;
-  while (std::getline(in, line)) {
-    const auto first = line.find_first_not_of(' ');
-    if (first == std::string::npos) continue;
-    const bool body_line = line.compare(first, 4, "RBDY") == 0 || line.compare(first, 5, "MAILx") == 0;
-    if (!body_line) continue;
-    if (line.compare(first, 5, "RBDY3") != 0) return false;
-    any = true;
-  }
-  return any;
-}
-constexpr int kExitData = 1;
-constexpr int kExitUsage = 2;
-constexpr int kExitNotConverged = 3;
-constexpr int kExitInterrupted = 130;
+constexpr int kExitOk = 0;
+constexpr int kExitData = 1;          // the case's data are invalid (lmgc-check errors)
+constexpr int kExitUsage = 2;         // the command line, or a folder that is not a case
+constexpr int kExitNotConverged = 3;  // --strict: a step stopped at the NLGS's iteration cap
+constexpr int kExitOutput = 4;        // an output file could not be written (disk full, ...)
+constexpr int kExitRefused = 5;       // the case uses what lmgc-solve does not run yet (L4001-L4007)
+constexpr int kExitNonFinite = 6;     // a body's state became NaN or infinite
+// Stopped by a signal after finishing a step and writing .LAST: 128 + the signal's number
+// (129 SIGHUP, 130 SIGINT, 143 SIGTERM), as shells report it.
+constexpr int kExitSignalBase = 128;
+
+// CLI11's number checks let NaN through (every comparison with NaN is false).
+const CLI::Validator kFinite(
+    [](std::string& text) {
+      try {
+        std::size_t used = 0;
+        const double x = std::stod(text, &used);
+        if (!std::isfinite(x)) return std::string("must be a finite number");
+      } catch (const std::exception&) {
+        return std::string("is not a number");
+      }
+      return std::string();
+    },
+    "FINITE");
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -47,19 +56,27 @@ int main(int argc, char** argv) {
   std::string case_dir;
   solver::RunOptions options;
   std::string storage = "Stored_Delassus_Loops", norm = "Quad";
-  app.add_option("CASE_DIR", case_dir, "case folder holding DATBOX/")->required();
-  app.add_option("--dt", options.dt, "time step [s]")->check(CLI::PositiveNumber);
+  double rloc_tol = 0.0;
+  bool no_command_dat = false;
+  app.add_option("CASE_DIR", case_dir, "case folder holding DATBOX/ (after '--' it may start with '-')")
+      ->required();
+  app.add_option("--dt", options.dt, "time step [s]")->check(kFinite & CLI::PositiveNumber);
   app.add_option("--theta", options.theta, "theta of the Moreau-Jean scheme, in [0.5, 1]")
-      ->check(CLI::Range(0.5, 1.0));
-  app.add_option("--steps", options.steps, "number of steps")->check(CLI::NonNegativeNumber);
-  app.add_option("--solver", storage, "NLGS storage: Stored_Delassus_Loops or Exchange_Local_Global");
+      ->check(kFinite & CLI::Range(0.5, 1.0));
+  app.add_option("--steps", options.steps, "number of steps")->check(CLI::Range(0L, 1'000'000'000'000L));
+  app.add_option(
+      "--solver", storage,
+      "NLGS storage: Stored_Delassus_Loops or Exchange_Local_Global; LMGC90's two storages give the "
+      "same iterates, and lmgc-solve runs both the same way (every command.py names one)");
   app.add_option("--norm", norm, "NLGS convergence norm: Quad, QuaN, Maxm or QM/16");
-  app.add_option("--tol", options.nlgs.tolerance, "NLGS tolerance of the norm")->check(CLI::PositiveNumber);
-  app.add_option("--relax", options.nlgs.relax, "NLGS relaxation")->check(CLI::Range(0.0, 2.0));
+  app.add_option("--tol", options.nlgs.tolerance, "NLGS tolerance of the norm")
+      ->check(kFinite & CLI::PositiveNumber);
+  app.add_option("--relax", options.nlgs.relax, "NLGS relaxation, in (0, 2]")
+      ->check(kFinite & CLI::Range(std::nextafter(0.0, 1.0), 2.0));
   app.add_option("--gs-it1", options.nlgs.gs_it1, "NLGS sweeps between two convergence checks")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, 1'000'000'000));
   app.add_option("--gs-it2", options.nlgs.gs_it2, "maximum number of convergence checks")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, 1'000'000'000));
   app.add_flag("--quick-scramble", options.nlgs.quick_scramble,
                "scramble the contact order before each block of sweeps as LMGC90 does");
   app.add_option("--scramble-seed", options.nlgs.scramble_seed,
@@ -68,19 +85,29 @@ int main(int argc, char** argv) {
                "3D: solve each contact with the diagonal of its Delassus block, then project on the "
                "Coulomb cone (nlgs_3D_DiagonalResolution)");
   app.add_option("--residual-target", options.nlgs.residual_target,
-                 "also stop a step when the natural-map residual / |q| is below this (0 = off)");
-  app.add_option("--rloc-tol", options.rloc_tol,
-                 "warm-start matching tolerance (accepted; contactor matching is used)");
-  app.add_option("--write-every", options.write_every,
-                 "write DOF/Vloc_Rloc .OUT.n every n steps (0 = never)");
-  app.add_option("--display-every", options.display_every, "write DISPLAY files every n steps (0 = never)");
+                 "also stop a step when the natural-map residual / |q| is below this (0 = off)")
+      ->check(kFinite & CLI::NonNegativeNumber);
+  app.add_option("--rloc-tol", rloc_tol,
+                 "refused: LMGC90's RecupRloc(tol) matches PLPLx reactions by position; lmgc-solve matches "
+                 "them by contactor (the first NLGS iterate may differ, not the problem)");
+  app.add_option("--cundall-iterations", options.cundall_iterations,
+                 "3D: cap of Cundall's common-plane search between polyhedra "
+                 "(PRPRx_UseCpCundallDetection(n), CUNDALL ITERATION; default 100)")
+      ->check(CLI::Range(1, 1'000'000));
+  app.add_option("--write-every", options.write_every, "write DOF/Vloc_Rloc .OUT.n every n steps (0 = never)")
+      ->check(CLI::Range(0L, 1'000'000'000'000L));
+  app.add_option("--display-every", options.display_every, "write DISPLAY files every n steps (0 = never)")
+      ->check(CLI::Range(0L, 1'000'000'000'000L));
   app.add_option("--ymin-boundary", options.y_min,
-                 "bodies whose centre goes below this become invisible (RBDY2_SetYminBoundary)");
-  app.add_option("--ymax-boundary", options.y_max, "... above this");
-  app.add_option("--xmin-boundary", options.x_min, "... left of this");
-  app.add_option("--xmax-boundary", options.x_max, "... right of this");
-  app.add_option("--xperiod", options.x_period, "periodic in x with this period (SetPeriodicCondition)");
-  app.add_option("--yperiod", options.y_period, "3D: periodic in y with this period (SetPeriodicCondition)");
+                 "bodies whose centre goes below this become invisible (RBDY2_SetYminBoundary)")
+      ->check(kFinite);
+  app.add_option("--ymax-boundary", options.y_max, "... above this")->check(kFinite);
+  app.add_option("--xmin-boundary", options.x_min, "... left of this")->check(kFinite);
+  app.add_option("--xmax-boundary", options.x_max, "... right of this")->check(kFinite);
+  app.add_option("--xperiod", options.x_period, "periodic in x with this period (SetPeriodicCondition)")
+      ->check(kFinite & CLI::PositiveNumber);
+  app.add_option("--yperiod", options.y_period, "3D: periodic in y with this period (SetPeriodicCondition)")
+      ->check(kFinite & CLI::PositiveNumber);
   app.add_flag("--ptpt3-network", options.ptpt3_network,
                "3D: link PT3Dx points as DATBOX/PTPT3_NETWORK.DAT lists instead of by distance "
                "(PTPT3_LoadNetwork)");
@@ -92,134 +119,225 @@ int main(int argc, char** argv) {
                  "3D: FIRST RADIUS X Y Z: bodies after FIRST enter one by one at (X, Y, Z), each when the "
                  "previous one is farther than RADIUS from it (RBDY3_SetSourcePointWithIni)")
       ->expected(5)
-      ->delimiter(',');
-  app.add_flag("-q,--quiet", options.quiet, "no progress line");
+      ->delimiter(',')
+      ->check(kFinite);
+  app.add_flag("--no-command-dat", no_command_dat,
+               "do not read DATBOX/COMMAND.DAT (LMGC90 2025 no longer reads it): the run takes its "
+               "parameters from the defaults and the flags only");
+  app.add_flag("-q,--quiet", options.quiet, "no progress line, no warnings but those that refuse the run");
   app.add_flag("--new-rotation-scheme", options.new_rotation_scheme,
                "RBDY3: update the principal frame by the Cayley map (RBDY3_NewRotationScheme)");
   app.add_flag("--strict", options.strict, "exit 3 when a step stopped at the iteration cap");
   app.set_version_flag("--version", "lmgc-solve 0.1.0");
   app.footer(
-      "Run parameters come from CASE_DIR/DATBOX/COMMAND.DAT when it exists (TIME STEP, THETA, the step "
-      "loop's\n"
-      "REPETE count, NLGS CHECK TYPE, the NLGS loops, WRITE OUT DOF STEP, ...); a flag given here overrides\n"
-      "the file. Without COMMAND.DAT the defaults are --dt 1e-3 --theta 0.5 --steps 1000 --norm Quad --tol "
-      "1.666e-4\n"
-      "--gs-it1 50 --gs-it2 500.\n"
+      "Run parameters: the defaults (--dt 1e-3 --theta 0.5 --steps 1000 --norm Quad --tol 1.666e-4 --gs-it1 "
+      "50\n"
+      "--gs-it2 500), then DATBOX/COMMAND.DAT when it exists (TIME STEP, THETA, the step loop's REPETE "
+      "count,\n"
+      "NLGS CHECK TYPE, the NLGS loops, WRITE OUT DOF STEP, ...; not with --no-command-dat), then the flags\n"
+      "given here. OUTBOX/run_parameters.csv records every value and where it came from. A case's "
+      "command.py\n"
+      "is read, not run: every parameter whose value differs from the script's is named (L4008).\n"
       "Outputs: OUTBOX/ (echo files, DOF and Vloc_Rloc .OUT.n and .LAST, run_report.csv with the achieved\n"
-      "natural-map residual of every step), POSTPRO/ (POSTPRO.DAT's commands), DISPLAY/ (ParaView).\n"
-      "Exit: 0 success, 1 invalid data, 2 usage, 3 a step not converged under --strict, 130 interrupted.");
+      "natural-map residual of every step, run_parameters.csv), POSTPRO/ (POSTPRO.DAT's commands), "
+      "DISPLAY/.\n"
+      "Exit: 0 success, 1 invalid data, 2 usage, 3 a step not converged under --strict, 4 an output could "
+      "not\n"
+      "be written, 5 the case uses what lmgc-solve does not run yet, 6 a state became NaN or infinite,\n"
+      "129/130/143 stopped by SIGHUP/SIGINT/SIGTERM after the step in progress (.LAST written).");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitUsage;
   }
-  // An unknown norm is a usage error, except for rigid 3D cases: LMGC90's 3D NLGS ignores a norm it
-  // does not know and keeps Quad (mod_nlgs_3D set_nlgs_parameter has no default branch); the
-  // RIGID_3D example 1_ClusterSP_2_PL relies on it with 'MaxM '.
-  const bool norm_known = solver::parse_norm(norm, options.nlgs.norm);
-  if (!solver::parse_storage(storage, options.nlgs.storage) ||
-      (!norm_known && !(app.count("CASE_DIR") && rigid_3d_folder(case_dir)))) {
-    std::cerr << "lmgc-solve: unknown --solver or --norm value\n";
+  if (app.count("--rloc-tol")) {
+    std::cerr
+        << "lmgc-solve: --rloc-tol is not supported: LMGC90's RecupRloc(tol) matches PLPLx reactions by "
+           "position within tol, lmgc-solve matches the previous step's reactions by contactor (the NLGS "
+           "starts from another guess; the problem solved is the same). Leave the flag out.\n";
     return kExitUsage;
-  }
-  if (!norm_known) {
-    options.nlgs.norm = solver::NlgsNorm::quad;
-    if (!options.quiet)
-      std::cerr << "lmgc-solve: warning: unknown norm '" << norm
-                << "': the 3D NLGS keeps 'Quad ' as LMGC90 does\n";
   }
 
   grammar::DiagnosticSink sink(5000);
   // PTPT3_NETWORK.DAT is read (and checked) only when the run uses it, as LMGC90.
   auto files = validate::load_case(case_dir, sink, validate::LoadOptions{options.ptpt3_network});
-  if (files) validate::check_case(*files, sink);
+  if (files) validate::check_case(*files, sink, validate::CheckOptions{!no_command_dat});
+  const bool three_d = files && solver::is_rigid_3d_case(*files);
+
+  // The norm: an unknown one is a usage error, except for rigid 3D cases: LMGC90's 3D NLGS ignores
+  // a norm it does not know and keeps Quad (mod_nlgs_3D set_nlgs_parameter has no default branch);
+  // the RIGID_3D example 1_ClusterSP_2_PL relies on it with 'MaxM '.
+  if (!solver::parse_storage(storage, options.nlgs.storage)) {
+    std::cerr << "lmgc-solve: unknown --solver '" << storage
+              << "' (Stored_Delassus_Loops or Exchange_Local_Global)\n";
+    return kExitUsage;
+  }
+  if (!solver::parse_norm(norm, options.nlgs.norm)) {
+    if (!three_d) {
+      std::cerr << "lmgc-solve: unknown --norm '" << norm << "' (Quad, QuaN, Maxm or QM/16)\n";
+      return kExitUsage;
+    }
+    options.nlgs.norm = solver::NlgsNorm::quad;
+    std::cerr << "lmgc-solve: warning: unknown norm '" << norm
+              << "': the 3D NLGS keeps 'Quad ' as LMGC90 does\n";
+  }
+
   solver::Scene2D scene;
   solver::RunOutputs2D outputs;
   solver::Scene3D scene_3d;
   solver::RunOutputs3D outputs_3d;
-  const bool three_d = files && solver::is_rigid_3d_case(*files);
-  bool ready = files && !sink.has_errors() &&
-               (three_d ? solver::prepare_run_3d(*files, scene_3d, outputs_3d, sink)
-                        : solver::prepare_run_2d(*files, scene, outputs, sink));
-  if (ready) {
-    // COMMAND.DAT's parameters first, then the flags given on the command line on top of them.
-    solver::RunOptions from_file;
-    solver::apply_command_parameters(*files, from_file, sink);
-    const auto given = [&](const char* flag) { return app.count(flag) > 0; };
-    if (!given("--dt")) options.dt = from_file.dt;
-    if (!given("--theta")) options.theta = from_file.theta;
-    if (!given("--steps")) options.steps = from_file.steps;
-    if (!given("--solver")) options.nlgs.storage = from_file.nlgs.storage;
-    if (!given("--norm")) options.nlgs.norm = from_file.nlgs.norm;
-    if (!given("--tol")) options.nlgs.tolerance = from_file.nlgs.tolerance;
-    if (!given("--relax")) options.nlgs.relax = from_file.nlgs.relax;
-    if (!given("--gs-it1")) options.nlgs.gs_it1 = from_file.nlgs.gs_it1;
-    if (!given("--gs-it2")) options.nlgs.gs_it2 = from_file.nlgs.gs_it2;
-    if (!given("--quick-scramble")) options.nlgs.quick_scramble = from_file.nlgs.quick_scramble;
-    if (!given("--diagonal-resolution"))
-      options.nlgs.diagonal_resolution = from_file.nlgs.diagonal_resolution;
-    if (!given("--write-every")) options.write_every = from_file.write_every;
-    if (!given("--display-every")) options.display_every = from_file.display_every;
-    if (!given("--ymin-boundary")) options.y_min = from_file.y_min;
-    if (!given("--xperiod")) options.x_period = from_file.x_period;
-    if (!given("--new-rotation-scheme")) options.new_rotation_scheme = from_file.new_rotation_scheme;
-    if (!given("--yperiod")) options.y_period = from_file.y_period;
-    if (given("--source-point")) {
-      options.source_first = static_cast<long>(source_point[0]);
-      options.source_radius = source_point[1];
-      for (int d = 0; d < 3; ++d) options.source_point[d] = source_point[static_cast<std::size_t>(d + 2)];
-    } else {
-      options.source_first = from_file.source_first;
-      options.source_radius = from_file.source_radius;
-      for (int d = 0; d < 3; ++d) options.source_point[d] = from_file.source_point[d];
+  bool prepared = files && !sink.has_errors() &&
+                  (three_d ? solver::prepare_run_3d(*files, scene_3d, outputs_3d, sink)
+                           : solver::prepare_run_2d(*files, scene, outputs, sink));
+  solver::ParameterSources sources;
+  if (prepared) {
+    // The layers: defaults, COMMAND.DAT's parameters, then the flags given on the command line.
+    solver::RunOptions from_file;  // the defaults
+    solver::ParameterSources file_sources;
+    if (!no_command_dat) solver::apply_command_parameters(*files, from_file, sink, &file_sources);
+    solver::RunOptions run = from_file;
+    run.quiet = options.quiet;
+    run.strict = options.strict;
+    sources = file_sources;
+    for (const solver::RunParameter& p : solver::run_parameters()) {
+      if (p.flag.empty() || !app.count(std::string(p.flag))) continue;
+      sources[std::string(p.name)] = solver::ParameterSource::flag;
     }
+    const auto given = [&](const char* flag) { return app.count(flag) > 0; };
+    if (given("--dt")) run.dt = options.dt;
+    if (given("--theta")) run.theta = options.theta;
+    if (given("--steps")) run.steps = options.steps;
+    if (given("--solver")) run.nlgs.storage = options.nlgs.storage;
+    if (given("--norm")) run.nlgs.norm = options.nlgs.norm;
+    if (given("--tol")) run.nlgs.tolerance = options.nlgs.tolerance;
+    if (given("--relax")) run.nlgs.relax = options.nlgs.relax;
+    if (given("--gs-it1")) run.nlgs.gs_it1 = options.nlgs.gs_it1;
+    if (given("--gs-it2")) run.nlgs.gs_it2 = options.nlgs.gs_it2;
+    if (given("--quick-scramble")) run.nlgs.quick_scramble = true;
+    if (given("--scramble-seed")) run.nlgs.scramble_seed = options.nlgs.scramble_seed;
+    if (given("--diagonal-resolution")) run.nlgs.diagonal_resolution = true;
+    if (given("--residual-target")) run.nlgs.residual_target = options.nlgs.residual_target;
+    if (given("--cundall-iterations")) run.cundall_iterations = options.cundall_iterations;
+    if (given("--write-every")) run.write_every = options.write_every;
+    if (given("--display-every")) run.display_every = options.display_every;
+    if (given("--ymin-boundary")) run.y_min = options.y_min;
+    if (given("--ymax-boundary")) run.y_max = options.y_max;
+    if (given("--xmin-boundary")) run.x_min = options.x_min;
+    if (given("--xmax-boundary")) run.x_max = options.x_max;
+    if (given("--xperiod")) run.x_period = options.x_period;
+    if (given("--yperiod")) run.y_period = options.y_period;
+    if (given("--ptpt3-network")) run.ptpt3_network = true;
+    if (given("--ptpt3-current-nonuc0")) run.ptpt3_current_nonuc0 = true;
+    if (given("--new-rotation-scheme")) run.new_rotation_scheme = true;
+    if (given("--source-point")) {
+      if (source_point[0] < 1.0 || source_point[1] <= 0.0) {
+        std::cerr << "lmgc-solve: --source-point needs FIRST >= 1 and RADIUS > 0\n";
+        return kExitUsage;
+      }
+      run.source_first = static_cast<long>(source_point[0]);
+      run.source_radius = source_point[1];
+      for (int d = 0; d < 3; ++d) run.source_point[d] = source_point[static_cast<std::size_t>(d + 2)];
+    }
+    options = run;
     if (!three_d && (options.y_period > 0.0 || options.source_first > 0 || options.ptpt3_network ||
                      options.ptpt3_current_nonuc0)) {
       std::cerr << "lmgc-solve: --yperiod, --source-point (YPERIODIC CONDITION, INIT SOURCE POINT) and the "
                    "--ptpt3 options apply to RBDY3 cases only\n";
       return kExitUsage;
     }
+    // The script LMGC90 runs: say that lmgc-solve does not run it, and every parameter that differs.
+    if (files->command_script) {
+      const std::string& path = files->command_script->path;
+      sink.report(
+          "L4011", grammar::Location{path, {}},
+          "this case has a command.py, which LMGC90 runs; lmgc-solve reads its literals and runs " +
+              std::string(files->command && !no_command_dat ? "COMMAND.DAT's parameters" : "its defaults") +
+              " and the flags");
+      for (const solver::ScriptDifference& d : solver::script_differences(options, *files->command_script)) {
+        const auto it = sources.find(d.parameter->name);
+        const std::string source(
+            solver::source_name(it == sources.end() ? solver::ParameterSource::default_value : it->second));
+        sink.report("L4008",
+                    grammar::Location{path, grammar::SourceSpan{d.line, d.column,
+                                                                static_cast<std::uint16_t>(d.column + 1)}},
+                    std::string(d.parameter->name) + " is " + d.run_value + " (" + source +
+                        "); command.py passes " + d.script_value +
+                        (d.parameter->flag.empty() ? "" : " (" + std::string(d.parameter->flag) + ")"));
+      }
+    }
   }
-  // Diagnostics: errors always, warnings and notes unless --quiet (the run goes on with them).
+
+  // Diagnostics: errors and what refuses the run always; other warnings unless --quiet.
+  bool refused = false;
+  for (const auto& d : sink.items()) refused |= grammar::refuses_run(d.code);
+  std::vector<grammar::Diagnostic> shown = sink.items();
+  for (auto& d : sink.overflow_diagnostic()) shown.push_back(std::move(d));
   const bool color = std::getenv("NO_COLOR") == nullptr && isatty(STDERR_FILENO);
   const auto lookup = [&](const std::string& file, std::uint32_t line) -> std::string_view {
     if (!files) return {};
     auto it = files->sources.find(file);
     return it == files->sources.end() ? std::string_view{} : it->second.line_text(line);
   };
-  for (const auto& d : sink.items())
-    if (d.severity == grammar::Severity::error ||
+  for (const auto& d : shown)
+    if (d.severity == grammar::Severity::error || grammar::refuses_run(d.code) ||
         (!options.quiet && d.severity == grammar::Severity::warning))
       std::cerr << validate::render_text(d, lookup, {color});
-  if (!ready) {
+  if (!files) return kExitUsage;
+  if (sink.has_errors()) {
     std::cerr << "lmgc-solve: the case cannot run (" << sink.error_count() << " error"
               << (sink.error_count() == 1 ? "" : "s") << ")\n";
-    return files ? kExitData : kExitUsage;
+    return kExitData;
   }
-  // The echo files, as LMGC90 writes them when it reads the case.
-  for (const auto& output : three_d ? solver::echo_files_3d(*files) : solver::echo_files_2d(*files)) {
+  if (refused || !prepared) {
+    std::set<std::string> codes;
+    for (const auto& d : sink.items())
+      if (grammar::refuses_run(d.code)) codes.insert(d.code);
+    std::string list;
+    for (const std::string& c : codes) list += (list.empty() ? "" : ", ") + c;
+    std::cerr << "lmgc-solve: refused: the case uses what lmgc-solve does not run yet (" << list
+              << "); nothing was written\n";
+    return kExitRefused;
+  }
+
+  // Outputs: stale temporaries of a killed run first, then the echo files LMGC90 writes when it reads
+  // the case, and the run's parameters.
+  const std::filesystem::path case_path(case_dir);
+  for (const char* folder : {"OUTBOX", "POSTPRO", "DISPLAY"})
+    grammar::remove_stale_temporaries(case_path / folder);
+  std::vector<validate::OutputFile> echo =
+      three_d ? solver::echo_files_3d(*files) : solver::echo_files_2d(*files);
+  echo.push_back({"OUTBOX/run_parameters.csv", solver::run_parameters_csv(options, sources)});
+  for (const auto& output : echo) {
     std::string error;
-    if (!grammar::write_file_whole(std::filesystem::path(case_dir) / output.relative_path, output.content,
-                                   error)) {
+    if (!grammar::write_file_whole(case_path / output.relative_path, output.content, error)) {
       std::cerr << "lmgc-solve: " << error << "\n";
-      return kExitData;
+      return kExitOutput;
     }
   }
   solver::install_interrupt_handler();
   if (options.new_rotation_scheme) scene_3d.rotation = solver::FrameUpdate::cayley;
   const solver::RunSummary summary =
       three_d ? solver::run_3d(scene_3d, options, outputs_3d) : solver::run_2d(scene, options, outputs);
-  if (!summary.error.empty()) {
-    std::cerr << "lmgc-solve: " << summary.error << "\n";
-    return kExitData;
-  }
-  if (!options.quiet)
+  if (!options.quiet || summary.failure != solver::RunFailure::none)
     std::fprintf(
         stderr,
         "%ld steps to t=%.6g; %ld not converged within gs_it1*gs_it2; worst natural-map residual/|q| %.3e\n",
         summary.steps_done, summary.final_time, summary.steps_not_converged, summary.worst_residual);
-  if (summary.interrupted) return kExitInterrupted;
+  switch (summary.failure) {
+    case solver::RunFailure::none:
+      break;
+    case solver::RunFailure::data:
+      std::cerr << "lmgc-solve: " << summary.error << "\n";
+      return kExitData;
+    case solver::RunFailure::output:
+      std::cerr << "lmgc-solve: " << summary.error << "\n";
+      return kExitOutput;
+    case solver::RunFailure::non_finite:
+      std::cerr << "lmgc-solve: " << summary.error << "\n";
+      return kExitNonFinite;
+  }
+  if (summary.stop_signal != 0) return kExitSignalBase + summary.stop_signal;
   if (options.strict && summary.steps_not_converged > 0) return kExitNotConverged;
   return kExitOk;
 }

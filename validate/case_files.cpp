@@ -3,10 +3,8 @@
 #include "validate/case_files.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <system_error>
 
 #include "grammar/bodies/parser.hpp"
@@ -14,6 +12,7 @@
 #include "grammar/bulk_behav/parser.hpp"
 #include "grammar/bulk_behav/writer.hpp"
 #include "grammar/command/parser.hpp"
+#include "grammar/common/input_file.hpp"
 #include "grammar/dof/parser.hpp"
 #include "grammar/drv_dof/parser.hpp"
 #include "grammar/drv_dof/writer.hpp"
@@ -83,16 +82,6 @@ constexpr DatboxFileKind kDatboxFiles[] = {
      &LoadOptions::ptpt3_network, "lmgc-solve --ptpt3-network, PTPT3_LoadNetwork"},
 };
 
-bool read_whole_file(const fs::path& path, std::string& text) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream s;
-  s << in.rdbuf();
-  if (in.bad()) return false;
-  text = s.str();
-  return true;
-}
-
 bool has_contactors(const CaseFiles& c) {
   if (!c.bodies) return false;
   for (const auto& b : c.bodies->bodies)
@@ -122,14 +111,21 @@ std::optional<CaseFiles> load_case(const fs::path& case_dir, DiagnosticSink& sin
   CaseFiles files;
   files.case_dir = case_dir;
   std::set<std::string> known;
-  auto read_source = [&](const std::string& name) -> const SourceText* {
+  // A file that exists is read whole, or refused when it is not one (L9001): nullptr then; `missing`
+  // is set when nothing is at the path.
+  auto read_source = [&](const std::string& name, bool* missing = nullptr) -> const SourceText* {
     const fs::path path = datbox / name;
-    std::string text;
-    if (!read_whole_file(path, text)) {
-      sink.report("L9001", grammar::Location{path.string(), {}}, "cannot read '" + path.string() + "'");
+    grammar::InputFile input = grammar::read_input_file(path);
+    if (missing) *missing = input.status == grammar::InputFileStatus::missing;
+    if (input.status != grammar::InputFileStatus::read) {
+      if (input.status == grammar::InputFileStatus::refused || !missing)
+        sink.report("L9001", grammar::Location{path.string(), {}},
+                    "cannot read '" + path.string() +
+                        "': " + (input.error.empty() ? std::string("no such file") : input.error));
       return nullptr;
     }
-    auto [it, inserted] = files.sources.emplace(path.string(), SourceText(path.string(), std::move(text)));
+    auto [it, inserted] =
+        files.sources.emplace(path.string(), SourceText(path.string(), std::move(input.text)));
     return &it->second;
   };
 
@@ -142,7 +138,9 @@ std::optional<CaseFiles> load_case(const fs::path& case_dir, DiagnosticSink& sin
     }
     known.insert(name);
     const fs::path path = datbox / name;
-    if (!fs::exists(path, ec)) {
+    bool missing = false;
+    const SourceText* source = read_source(name, &missing);
+    if (missing) {
       const bool required = kind.requirement == Requirement::always ||
                             (kind.requirement == Requirement::with_mailx && has_mailx(files)) ||
                             (kind.requirement == Requirement::with_contactors && has_contactors(files));
@@ -154,7 +152,7 @@ std::optional<CaseFiles> load_case(const fs::path& case_dir, DiagnosticSink& sin
                     "'" + name + "' is missing; LMGC90 reads it for every case" + which);
       continue;
     }
-    if (const SourceText* source = read_source(name)) kind.parse(files, *source, sink);
+    if (source) kind.parse(files, *source, sink);
   }
 
   // Evolution files named by driven dofs.
@@ -166,25 +164,46 @@ std::optional<CaseFiles> load_case(const fs::path& case_dir, DiagnosticSink& sin
           const std::string name = dof.evolution_file.value;
           if (name.empty() || files.evolutions.count(name) || known.count(name)) continue;
           known.insert(name);
-          if (!fs::exists(datbox / name, ec)) {
+          bool missing = false;
+          const SourceText* source = read_source(name, &missing);
+          if (missing) {
             sink.report("L9001",
                         grammar::Location{(datbox / "DRV_DOF.DAT").string(), dof.evolution_file.span},
                         "evolution file '" + name + "' named here does not exist in DATBOX/");
             continue;
           }
-          if (const SourceText* source = read_source(name))
-            files.evolutions.emplace(name, grammar::parse_evolution(*source, sink));
+          if (source) files.evolutions.emplace(name, grammar::parse_evolution(*source, sink));
         }
+  }
+
+  // The Python driver beside DATBOX/.
+  {
+    const fs::path path = case_dir / "command.py";
+    grammar::InputFile input = grammar::read_input_file(path);
+    if (input.status == grammar::InputFileStatus::refused) {
+      sink.report("L9001", grammar::Location{path.string(), {}},
+                  "cannot read '" + path.string() + "': " + input.error);
+    } else if (input.status == grammar::InputFileStatus::read) {
+      auto [it, inserted] =
+          files.sources.emplace(path.string(), SourceText(path.string(), std::move(input.text)));
+      files.command_script = grammar::read_command_script(path.string(), it->second.text());
+    }
   }
 
   // Everything else in DATBOX/ is not read by LMGC90: say so once per file.
   std::vector<std::string> others;
-  for (const auto& entry : fs::directory_iterator(datbox, ec))
-    if (entry.is_regular_file() && !known.count(entry.path().filename().string()))
-      others.push_back(entry.path().filename().string());
+  // The error_code forms throughout: a symbolic link loop in DATBOX/ is a file to report, not an
+  // exception.
+  for (fs::directory_iterator it(datbox, ec), end; !ec && it != end; it.increment(ec)) {
+    std::error_code entry_ec;
+    if (it->is_regular_file(entry_ec) && !known.count(it->path().filename().string()))
+      others.push_back(it->path().filename().string());
+  }
   std::sort(others.begin(), others.end());
   for (const auto& name : others) {
     files.unread_files.push_back(name);
+    // LMGC90's multi-physics and PTPT2 scripts read these (check_drivers says so, L4007).
+    if (name == "MP_DEM.DAT" || name == "PTPT2_NETWORK.DAT") continue;
     const auto asked = not_asked.find(name);
     sink.report("L1021", grammar::Location{(datbox / name).string(), {}},
                 asked != not_asked.end()

@@ -11,6 +11,7 @@
 #include "grammar/bodies/ast.hpp"
 #include "grammar/bulk_behav/ast.hpp"
 #include "grammar/command/ast.hpp"
+#include "grammar/command_py/script.hpp"
 #include "grammar/common/diagnostic.hpp"
 #include "grammar/common/source.hpp"
 #include "grammar/dof/ast.hpp"
@@ -41,6 +42,8 @@ struct CaseFiles {
   std::optional<grammar::CommandFile> command;
   // Read when present; a run uses it when asked (lmgc-solve --ptpt3-network, PTPT3_LoadNetwork).
   std::optional<grammar::Ptpt3NetworkFile> ptpt3_network;
+  // CASE_DIR/command.py, the script LMGC90 runs (read, never run: its literals and chipy calls).
+  std::optional<grammar::CommandScript> command_script;
   // Evolution files named by DRV_DOF.DAT, by file name.
   std::map<std::string, grammar::EvolutionFile> evolutions;
   // DATBOX files LMGC90 does not read (legacy or pre-processor files).

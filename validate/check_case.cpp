@@ -16,7 +16,7 @@ std::string place(const grammar::Location& where) {
 
 }  // namespace
 
-void check_case(const CaseFiles& files, grammar::DiagnosticSink& sink) {
+void check_case(const CaseFiles& files, grammar::DiagnosticSink& sink, const CheckOptions& options) {
   std::unordered_set<std::string> reader_errors;
   for (const auto& d : sink.items())
     if (d.severity == grammar::Severity::error && d.where.span.line > 0) reader_errors.insert(place(d.where));
@@ -32,6 +32,7 @@ void check_case(const CaseFiles& files, grammar::DiagnosticSink& sink) {
   check_visibility(files, checks);
   check_interpenetration(files, checks);
   check_time_step(files, checks);
+  check_drivers(files, checks, options);
 
   for (const auto& d : checks.items())
     if (!reader_errors.count(place(d.where))) sink.report(d);

@@ -170,9 +170,9 @@ void check_geometry(const CaseFiles& files, grammar::DiagnosticSink& sink) {
     for (const Contactor& c : body.contactors) {
       const std::string& type = c.type.value;
       // Sizes: radius, half lengths and heights must be positive.
-      const bool sized = type == "DISKx" || type == "DISKb" || type == "xKSID" || type == "DISPx" ||
-                         type == "xPSID" || type == "SPHER" || type == "SPHEb" || type == "JONCx" ||
-                         type == "CYLND" || type == "DNLYC" || type == "PLANx";
+      const bool sized = type == "DISKx" || type == "DISKb" || type == "xKSID" || type == "SPHER" ||
+                         type == "SPHEb" || type == "JONCx" || type == "CYLND" || type == "DNLYC" ||
+                         type == "PLANx";
       if (sized) {
         const std::size_t count = type == "JONCx" || type == "CYLND" || type == "DNLYC" ? 2
                                   : type == "PLANx"                                     ? 3

@@ -7,8 +7,15 @@
 
 namespace lmgc::validate {
 
+// What the checks are told about the run.
+struct CheckOptions {
+  // COMMAND.DAT drives the run (lmgc-solve --no-command-dat says it does not): its commands and
+  // parameters are checked.
+  bool command_dat = true;
+};
+
 // Every check below, in this order.
-void check_case(const CaseFiles& files, grammar::DiagnosticSink& sink);
+void check_case(const CaseFiles& files, grammar::DiagnosticSink& sink, const CheckOptions& options = {});
 
 // The families, callable one by one (tests).
 // L2001-L2006, L2008, L2012, L2017: names a file gives to bodies, behaviours, models, laws, nodes.
@@ -32,6 +39,10 @@ void check_visibility(const CaseFiles& files, grammar::DiagnosticSink& sink);
 void check_interpenetration(const CaseFiles& files, grammar::DiagnosticSink& sink);
 // L3013: COMMAND.DAT's time step against the fastest time scales of the case.
 void check_time_step(const CaseFiles& files, grammar::DiagnosticSink& sink);
+
+// L4005-L4007, L4009, L4010, L4012: what COMMAND.DAT and command.py ask of a run, and the case's
+// multi-physics data, against what lmgc-solve runs.
+void check_drivers(const CaseFiles& files, grammar::DiagnosticSink& sink, const CheckOptions& options = {});
 
 // Path of a DATBOX file of the case, as used in diagnostics.
 std::string datbox_path(const CaseFiles& files, const std::string& name);

@@ -32,9 +32,8 @@ const InteractionFamily* find_interaction_family(std::string_view candidate, std
 }
 
 std::string see_name(const std::string& type) {
-  if (type == "DISKb" || type == "DISPx") return "DISKx";
+  if (type == "DISKb") return "DISKx";
   if (type == "SPHEb") return "SPHER";
-  if (type == "xPSID") return "xKSID";
   if (type.rfind("CSp", 0) == 0 || type.rfind("CSxx", 0) == 0) return "CSxxx";
   if (type.rfind("ASp", 0) == 0) return "ASpxx";
   if (type == "POLYF") return "POLYR";
@@ -56,7 +55,7 @@ std::string see_class(const grammar::Body& body, const grammar::Contactor& conta
 
 double characteristic_size(const grammar::Contactor& c) {
   const std::string& t = c.type.value;
-  if (t == "DISKx" || t == "DISKb" || t == "SPHER" || t == "SPHEb" || t == "xKSID" || t == "DISPx")
+  if (t == "DISKx" || t == "DISKb" || t == "SPHER" || t == "SPHEb" || t == "xKSID")
     return c.values.empty() ? 0.0 : c.values[0].value;
   if (t == "POLYG" || t == "POLYR") {
     double r = 0.0;

@@ -24,7 +24,8 @@ constexpr ContactorKind kContactors[] = {
      0,
      0,
      2,
-     "the user's guide lists 'DISPx' (pneumatic disk) but LMGC90's RBDY2 reader rejects it"},
+     "'DISPx' (pneumatic disk, in the 2012 user's guide) was removed from LMGC90: its RBDY2 reader stops on "
+     "it"},
     {"xPSID",
      kRigid2,
      L::values,
@@ -34,7 +35,9 @@ constexpr ContactorKind kContactors[] = {
      0,
      0,
      2,
-     "the user's guide lists 'xPSID' (hollow pneumatic disk) but LMGC90's RBDY2 reader rejects it"},
+     "'xPSID' (hollow pneumatic disk, in the 2012 user's guide) was removed from LMGC90: its RBDY2 reader "
+     "stops "
+     "on it"},
     {"JONCx", kRigid2, L::values, {"ax1 =", "ax2 ="}, 2, {}, 0, 0, 2, ""},
     {"POLYG", kRigid2, L::polygon, {}, 0, {"coo1=", "coo2="}, 2, 0, 2, ""},
     {"PT2Dx", kRigid2, L::values, {"coo1=", "coo2="}, 2, {}, 0, 0, 2, ""},

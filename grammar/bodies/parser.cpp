@@ -339,7 +339,9 @@ class BodiesParser {
                          std::string(body_type_keyword(body.type)) + " bodies");
       return;
     }
-    if (!kind->guide_only.empty()) reader_.report("L1018", line, 2, 6, std::string(kind->guide_only));
+    // The 2012 user's guide's pneumatic disks: LMGC90 2025 removed them, and its RBDY2 reader stops
+    // on them ('tacty DISPx unknown'). Read (so the file still echoes), reported as an error.
+    if (!kind->guide_only.empty()) reader_.report("L1001", line, 2, 6, std::string(kind->guide_only));
     Contactor c;
     c.type = reader_.word(line, 2, 6);
     c.number = ordinal(line, 9, 13);

@@ -2,6 +2,7 @@
 // The COMMAND.DAT keywords: one table, keyword -> module -> argument lines. Dispatch is by
 // prefix (each handler tests INDEX(line,'KEYWORD')==1); a few CHIC words are exact. The parser
 // classifies a line by the longest keyword that prefixes it. spec: state-and-outputs.md §2.1.3.
+#include <cstdint>
 #include <span>
 #include <string_view>
 
@@ -18,6 +19,20 @@ enum class CommandInline {
   text,          // free text: a label, a subroutine name, body ranges, a flag number, ...
 };
 
+// What lmgc-solve does with a command when COMMAND.DAT drives its run (docs/command-dat.md lists
+// every keyword with it).
+enum class CommandSupport : std::uint8_t {
+  run,           // done as LMGC90 does: a run parameter, a stage of every step, a file read
+  written,       // an output lmgc-solve writes as LMGC90 does
+  not_written,   // an output or display lmgc-solve does not write (noted: the run is the same)
+  warm_start,    // changes only the NLGS's initial guess, not the problem solved (noted)
+  first_only,    // honoured before the time loop only; refused when run inside it
+  not_run,       // changes the physics or the run and is not done: lmgc-solve refuses the case
+  multiphysics,  // thermal or electrical fields (MP_DEM): lmgc-solve refuses the case
+  deformable,    // acts on MAILx bodies only (lmgc-solve refuses MAILx cases); nothing otherwise
+  control,       // CHIC's own words: the program's structure
+};
+
 struct CommandKeyword {
   std::string_view keyword;
   std::string_view module;  // "chic" for the interpreter's own control words
@@ -25,7 +40,10 @@ struct CommandKeyword {
   CommandInline inline_part;
   std::span<const CommandArgumentKind> arguments;  // lines read after the keyword line
   bool control = false;                            // handled by CHIC itself (never emitted as a command)
+  CommandSupport support = CommandSupport::run;
 };
+
+std::string_view support_name(CommandSupport support);
 
 std::span<const CommandKeyword> command_catalogue();
 // The longest catalogue keyword that `text` (leading blanks stripped) starts with (or equals,

@@ -306,8 +306,11 @@ CommandRunParameters command_run_parameters(const CommandFile& file, DiagnosticS
     int found = 0;
     for (std::size_t j = i + 1; j < file.lines.size() && found < 2; ++j) {
       if (file.lines[j].keyword != "REPETE") continue;
-      const int passes = static_cast<int>(chic::repete_count(file.lines[j].text.value).value_or(0) + 1);
-      (found++ == 0 ? p.gs_it1 : p.gs_it2) = passes;
+      const std::int64_t passes = chic::repete_count(file.lines[j].text.value).value_or(0) + 1;
+      const int clamped = static_cast<int>(std::clamp<std::int64_t>(passes, -1, 1'000'000'000));
+      (found == 0 ? p.gs_it1 : p.gs_it2) = clamped;
+      p.lines[found == 0 ? "gs_it1" : "gs_it2"] = file.lines[j].text.span.line;
+      ++found;
     }
     break;
   }
@@ -316,10 +319,18 @@ CommandRunParameters command_run_parameters(const CommandFile& file, DiagnosticS
   auto first_real = [](const ExecutedCommand& c, std::size_t k, double& value) {
     if (k < c.arguments.size() && !c.arguments[k].reals.empty()) value = c.arguments[k].reals[0].value;
   };
-  bool dt_set = false;
+  // The line holding argument k of a command (its own line when it has none).
+  auto argument_line = [](const ExecutedCommand& c, std::size_t k) {
+    if (k < c.arguments.size() && !c.arguments[k].reals.empty()) return c.arguments[k].reals[0].span.line;
+    return c.line;
+  };
+  const auto set = [&](std::string_view name, std::uint32_t line) {
+    p.lines.emplace(std::string(name), line);
+  };
   // A line met again (a loop) changes nothing but the step count: remember which lines count steps.
   enum class Seen : std::uint8_t { not_yet, step, done };
   std::vector<Seen> seen;
+  p.lines["nb_steps"] = 0;
   run_command_program(file, 10'000'000, sink, {}, [&](const ExecutedCommand& c) {
     if (c.deployed >= seen.size()) seen.resize(c.deployed + 1, Seen::not_yet);
     if (seen[c.deployed] == Seen::step) {
@@ -330,41 +341,71 @@ CommandRunParameters command_run_parameters(const CommandFile& file, DiagnosticS
     const std::string& k = c.keyword;
     seen[c.deployed] = k == "INCREMENT STEP" ? Seen::step : Seen::done;
     if (k == "INCREMENT STEP") {
+      if (p.steps == 0) p.lines["nb_steps"] = c.line;
       ++p.steps;
-    } else if (k == "TIME STEP" && !dt_set) {
+    } else if (k == "TIME STEP" && !p.lines.count("dt")) {
       first_real(c, 0, p.dt);
-      dt_set = true;
+      set("dt", argument_line(c, 0));
     } else if (k == "THETA") {
       first_real(c, 0, p.theta);
+      p.lines["theta"] = argument_line(c, 0);
     } else if (k == "NLGS CHECK TYPE" && p.norm.empty() && c.arguments.size() >= 2) {
       p.norm = c.arguments[0].word.value;
       first_real(c, 0, p.tolerance);
       first_real(c, 1, p.relax);
+      set("norm", argument_line(c, 0));
+      set("tol", argument_line(c, 0));
+      set("relax", argument_line(c, 1));
     } else if (k == "EX PREP NLGS" && p.storage.empty() && !c.arguments.empty()) {
       p.storage = c.arguments[0].word.value;
+      set("solver_type", c.arguments[0].word.span.line);
     } else if (k == "WRITE OUT DOF" && p.write_every == 0 && starts_with(c.parameter, "STEP")) {
       p.write_every = chic::list_integer(from(c.parameter, 4)).value_or(0);
+      set("freq_write", c.line);
     } else if (k == "WRITE OUTPUT GMV" && p.display_every == 0 && starts_with(c.parameter, "STEP")) {
       p.display_every = chic::list_integer(from(c.parameter, 4)).value_or(0);
+      set("freq_display", c.line);
     } else if (k == "quickSCRAMBLE") {
       p.quick_scramble = true;
+      set("quick_scramble", c.line);
     } else if (k == "INIT YMIN BOUNDARY") {
       first_real(c, 0, p.y_min);
       p.has_y_min = true;
+      set("ymin_boundary", argument_line(c, 0));
+    } else if (k == "INIT YMAX BOUNDARY") {
+      first_real(c, 0, p.y_max);
+      set("ymax_boundary", argument_line(c, 0));
+    } else if (k == "INIT XMIN BOUNDARY") {
+      first_real(c, 0, p.x_min);
+      set("xmin_boundary", argument_line(c, 0));
+    } else if (k == "INIT XMAX BOUNDARY") {
+      first_real(c, 0, p.x_max);
+      set("xmax_boundary", argument_line(c, 0));
     } else if (k == "PERIODIC CONDITION" || k == "XPERIODIC CONDITION") {
       first_real(c, 0, p.x_period);
+      set("xperiod", argument_line(c, 0));
     } else if (k == "YPERIODIC CONDITION") {
       first_real(c, 0, p.y_period);
+      set("yperiod", argument_line(c, 0));
     } else if (k == "NEW ROTATION SCHEME") {
       p.new_rotation_scheme = true;
+      set("new_rotation_scheme", c.line);
     } else if (k == "DIAGONAL RESOLUTION") {
       p.diagonal_resolution = true;
+      set("diagonal_resolution", c.line);
+    } else if ((k == "FATAL DAMPING" || k == "INI V DOF NULL") && p.steps == 0) {
+      p.zero_initial_velocity = true;
+      set("zero_initial_velocity", c.line);
+    } else if (k == "CUNDALL ITERATION" && !c.arguments.empty()) {
+      p.cundall_iterations = static_cast<long>(c.arguments[0].integer.value);
+      set("cundall_iterations", c.arguments[0].integer.span.line);
     } else if ((k == "FD INIT SOURCE POINT" || k == "INIT SOURCE POINT") && c.arguments.size() >= 3 &&
                c.arguments[2].reals.size() >= 3) {
       p.has_source_point = true;
       p.source_first = c.arguments[0].integer.value;
       first_real(c, 1, p.source_radius);
       for (int d = 0; d < 3; ++d) p.source_point[d] = c.arguments[2].reals[static_cast<std::size_t>(d)].value;
+      set("source_point", c.arguments[0].integer.span.line);
     }
   });
   return p;

@@ -3,6 +3,8 @@
 // and its execution into the flat list of module commands a bounded run executes.
 // spec: state-and-outputs.md §2.1.2.
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -59,8 +61,18 @@ std::vector<ExecutedCommand> expand_command_program(const CommandFile& file, std
                                                     DiagnosticSink& sink,
                                                     std::span<const CommandFlagRule> rules = {});
 
-// Run parameters a COMMAND.DAT sets, read off its bounded run (every flag 0) and its loops.
+// As expand_command_program, handing each executed command to `visit` instead of keeping it;
+// returns how many ran.
+std::size_t run_command_program(const CommandFile& file, std::size_t max_commands, DiagnosticSink& sink,
+                                std::span<const CommandFlagRule> rules,
+                                const std::function<void(const ExecutedCommand&)>& visit);
+
+// Run parameters a COMMAND.DAT sets, read off its bounded run (every flag 0) and its loops. `lines`
+// holds, for each parameter the file sets (named as in lmgc-solve's run-parameter table: "dt",
+// "theta", "nb_steps", "tol", ...), the line that sets it (0 for the step count of a file that runs
+// no INCREMENT STEP); a parameter absent from `lines` keeps lmgc-solve's default.
 struct CommandRunParameters {
+  std::map<std::string, std::uint32_t, std::less<>> lines;
   double dt = 0.0;
   double theta = 0.5;
   long steps = 0;    // INCREMENT STEP executed (run bounded to 10^7 commands)
@@ -72,12 +84,14 @@ struct CommandRunParameters {
   long write_every = 0;        // WRITE OUT DOF STEP p
   long display_every = 0;      // WRITE OUTPUT GMV STEP n
   bool quick_scramble = false;
-  double y_min = 0.0;
+  double y_min = 0.0, y_max = 0.0, x_min = 0.0, x_max = 0.0;  // INIT YMIN/YMAX/XMIN/XMAX BOUNDARY (2D)
   bool has_y_min = false;
-  double x_period = 0.0;             // PERIODIC CONDITION (2D) / XPERIODIC CONDITION (3D); 0 = none
-  double y_period = 0.0;             // YPERIODIC CONDITION (3D)
-  bool new_rotation_scheme = false;  // NEW ROTATION SCHEME (RBDY3: Cayley update of the frame)
-  bool diagonal_resolution = false;  // DIAGONAL RESOLUTION (3D NLGS)
+  long cundall_iterations = 0;         // CUNDALL ITERATION
+  bool zero_initial_velocity = false;  // FATAL DAMPING or INI V DOF NULL before the first step
+  double x_period = 0.0;               // PERIODIC CONDITION (2D) / XPERIODIC CONDITION (3D); 0 = none
+  double y_period = 0.0;               // YPERIODIC CONDITION (3D)
+  bool new_rotation_scheme = false;    // NEW ROTATION SCHEME (RBDY3: Cayley update of the frame)
+  bool diagonal_resolution = false;    // DIAGONAL RESOLUTION (3D NLGS)
   // (FD) INIT SOURCE POINT: first body (1-based), radius, point.
   bool has_source_point = false;
   long source_first = 0;

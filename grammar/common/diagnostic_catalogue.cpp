@@ -79,6 +79,10 @@ constexpr std::array kCatalogue = {
     DiagnosticKind{"L1021", note, "file not read by LMGC90",
                    "DATBOX/ holds a file that LMGC90's current reader never opens (a legacy or "
                    "pre-processor file such as SAMPLE.DAT or BEHAVIOURS.DAT). It is not checked."},
+    DiagnosticKind{"L1022", warning, "damaged field label",
+                   "A label of a DOF.INI node line ('X(1)=', 'V(2)=', ...) is not the one LMGC90 writes "
+                   "there. LMGC90 reads the values by their columns and never reads the labels, so the "
+                   "value is taken; a damaged label often means a damaged line: check its columns."},
     // L2xxx — cross references between files.
     DiagnosticKind{"L2001", error, "unknown bulk behaviour",
                    "A body names a bulk behaviour ('behav' of its PLAIN or model line) that "
@@ -237,20 +241,66 @@ constexpr std::array kCatalogue = {
     DiagnosticKind{"L3016", warning, "dynamic friction above static friction",
                    "A law's dynamic friction coefficient is larger than its static one; usually the two are "
                    "swapped."},
-    // L4xxx — run setup: what lmgc-solve needs to run the case.
-    DiagnosticKind{"L4001", error, "contactor not handled by the solver",
-                   "The case uses a contactor kind that the solver for this dimension does not provide "
-                   "yet; lmgc-solve stops before running."},
-    DiagnosticKind{"L4002", error, "contact law not handled by the solver",
-                   "A '$seety' row uses a contact law that the solver does not solve yet; lmgc-solve "
-                   "stops before running rather than silently using another law."},
-    DiagnosticKind{"L4003", error, "case kind not handled by the solver",
+    // L4xxx — run setup: what lmgc-solve does with the case. The codes that refuse a run are
+    // warnings here (the case is valid for LMGC90) and make lmgc-solve stop with exit code 5.
+    DiagnosticKind{"L4001", warning, "contactor not run by lmgc-solve yet",
+                   "The case uses a contactor kind that lmgc-solve does not provide yet for this "
+                   "dimension. The case is valid for LMGC90; lmgc-solve refuses it (exit 5) rather than "
+                   "run it without those contactors.",
+                   false, true},
+    DiagnosticKind{"L4002", warning, "contact law not run by lmgc-solve yet",
+                   "A '$seety' row uses a contact law that lmgc-solve does not solve yet. lmgc-solve "
+                   "refuses the case (exit 5) rather than silently use another law.",
+                   false, true},
+    DiagnosticKind{"L4003", warning, "case kind not run by lmgc-solve yet",
                    "lmgc-solve runs cases of RBDY2 bodies only or of RBDY3 bodies only for now; a case with "
-                   "MAILx bodies, or mixing body types, is checked by lmgc-check but not run."},
+                   "MAILx bodies, or mixing body types, is checked by lmgc-check and refused by "
+                   "lmgc-solve (exit 5).",
+                   false, true},
     DiagnosticKind{
         "L4004", warning, "post-processing command not computed",
-        "A POSTPRO.DAT command that lmgc-solve does not compute yet for this kind of case; the run "
-        "goes on without that file."},
+        "A POSTPRO.DAT command that lmgc-solve does not compute yet for this kind of case: its file is "
+        "not written. The run itself is the same."},
+    DiagnosticKind{"L4005", warning, "command not run by lmgc-solve yet",
+                   "A command of the case's driver (COMMAND.DAT, or a chipy call of command.py) changes "
+                   "the physics or the course of the run, and lmgc-solve does not do it yet (damping, "
+                   "wall drivers, another integrator or detection method, bodies driven from Python, "
+                   "...). lmgc-solve refuses the case (exit 5) rather than run another problem. For a "
+                   "COMMAND.DAT, which LMGC90 2025 no longer reads, `lmgc-solve --no-command-dat` runs "
+                   "the case from its defaults and flags instead.",
+                   false, true},
+    DiagnosticKind{"L4006", note, "output or warm start not reproduced",
+                   "A command asks for an output lmgc-solve does not write (a display option, a binary or "
+                   "timer file) or for a warm start by position, which lmgc-solve does by contactor: the "
+                   "problem solved is the same; the files written, or the NLGS's first iterate, differ."},
+    DiagnosticKind{"L4007", warning, "multi-physics not run by lmgc-solve yet",
+                   "The case asks for LMGC90's thermal or electrical fields on rigid bodies (MP_DEM: "
+                   "MP_DEM.DAT, ReadMpBehaviours, READ MP BEHAVIOURS) or for PTPT2 links "
+                   "(PTPT2_NETWORK.DAT). lmgc-solve refuses it (exit 5). THERMO_RIGID, ELECTRO_RIGID and "
+                   "THERMO_ELECTRO_RIGID bulk laws alone are run as RIGID, as LMGC90 runs them when the "
+                   "script loads no multi-physics behaviour (a note says so).",
+                   false, true},
+    DiagnosticKind{"L4008", warning, "run parameter differs from command.py",
+                   "The case has a command.py, the script LMGC90 runs, and lmgc-solve took this run "
+                   "parameter from COMMAND.DAT, its default or a flag, with a value other than the "
+                   "script's. Give the flag named in the message to run as the script does."},
+    DiagnosticKind{"L4009", note, "chipy call not known to lmgc",
+                   "command.py calls a chipy function that lmgc does not know: its effect on the run "
+                   "is not checked."},
+    DiagnosticKind{"L4010", error, "run parameter out of range",
+                   "A run parameter of COMMAND.DAT is outside the values a run can take: a time step, "
+                   "tolerance or iteration count not positive, a theta outside [0.5, 1], a relaxation "
+                   "outside (0, 2], a non-positive period or output frequency, an unknown NLGS norm or "
+                   "storage."},
+    DiagnosticKind{"L4011", warning, "command.py present",
+                   "The case has a command.py: LMGC90 2025 runs it and no longer reads COMMAND.DAT. "
+                   "lmgc-solve does not run Python scripts yet: it takes its parameters from COMMAND.DAT "
+                   "(unless --no-command-dat), its defaults and its flags, and names every parameter "
+                   "whose value differs from the script's (L4008)."},
+    DiagnosticKind{"L4012", note, "multi-physics bulk parameters not used",
+                   "A THERMO_RIGID, ELECTRO_RIGID or THERMO_ELECTRO_RIGID bulk law gives thermal or "
+                   "electrical parameters that only LMGC90's multi-physics solver uses (when the script "
+                   "loads MP_DEM.DAT). Without it LMGC90 runs the body as RIGID, and so does lmgc-solve."},
     // L9xxx — input/output.
     DiagnosticKind{"L9001", error, "cannot read file",
                    "A file that the case needs does not exist or cannot be read."},
@@ -259,12 +309,21 @@ constexpr std::array kCatalogue = {
     DiagnosticKind{"L9003", error, "cannot write output",
                    "An output file could not be written (folder not writable, disk full, ...). "
                    "Existing outputs are left as they were."},
+    DiagnosticKind{"L9004", error, "diagnostics not shown",
+                   "More diagnostics arrived than are kept (5000): the count of those not shown is given "
+                   "by severity. Errors are kept before warnings and notes, so an error is dropped only "
+                   "when 5000 errors are already shown. Fix those and check again."},
 };
 
 }  // namespace
 
 std::span<const DiagnosticKind> diagnostic_catalogue() {
   return kCatalogue;
+}
+
+bool refuses_run(std::string_view code) {
+  const DiagnosticKind* kind = find_diagnostic_kind(code);
+  return kind && kind->refuses_run;
 }
 
 const DiagnosticKind* find_diagnostic_kind(std::string_view code) {

@@ -16,7 +16,13 @@ struct DiagnosticKind {
   std::string_view summary;      // one line, used by --explain and docs/diagnostics.md
   std::string_view explanation;  // longer text for --explain
   bool removed = false;
+  // A feature of LMGC90 that lmgc-solve does not run yet: a warning for lmgc-check (the case is
+  // valid for LMGC90), and lmgc-solve refuses the case (exit 5) rather than run another problem.
+  bool refuses_run = false;
 };
+
+// True when a diagnostic of this code makes lmgc-solve refuse the case.
+bool refuses_run(std::string_view code);
 
 std::span<const DiagnosticKind> diagnostic_catalogue();
 const DiagnosticKind* find_diagnostic_kind(std::string_view code);

@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <system_error>
+#include <vector>
 
 namespace lmgc::grammar {
 
@@ -31,6 +32,21 @@ bool write_file_whole(const std::filesystem::path& path, const std::string& cont
     return false;
   }
   return true;
+}
+
+std::size_t remove_stale_temporaries(const std::filesystem::path& folder) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  std::size_t removed = 0;
+  std::vector<fs::path> stale;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    std::error_code type_ec;
+    if (name.size() > 5 && name.front() == '.' && name.ends_with(".tmp") && it->is_regular_file(type_ec))
+      stale.push_back(it->path());
+  }
+  for (const fs::path& path : stale) removed += fs::remove(path, ec) ? 1 : 0;
+  return removed;
 }
 
 }  // namespace lmgc::grammar

@@ -17,13 +17,13 @@ double value_at(const std::vector<Real>& values, std::size_t i) {
 ContactorInertia2D contactor_inertia_2d(const grammar::Contactor& c) {
   ContactorInertia2D k;
   const std::string& type = c.type.value;
-  if (type == "DISKx" || type == "DISKb" || type == "DISPx") {
+  if (type == "DISKx" || type == "DISKb") {
     const double r = value_at(c.values, 0);
     k.area = M_PI * r * r;
     k.radius = r;
     k.gyration_radius = r / std::sqrt(2.0);
     if (type == "DISKb") k.shift = Vector2d(value_at(c.values, 1), value_at(c.values, 2));
-  } else if (type == "xKSID" || type == "xPSID") {
+  } else if (type == "xKSID") {
     const double r = value_at(c.values, 0);
     k.area = -M_PI * r * r;  // a hole: no mass
   } else if (type == "JONCx") {

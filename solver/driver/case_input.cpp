@@ -73,9 +73,12 @@ bool prepare_run_2d(const validate::CaseFiles& files, Scene2D& scene, RunOutputs
   if (!files.bodies || !files.bulk_behav) return false;
   for (const grammar::Body& body : files.bodies->bodies)
     if (body.type != grammar::BodyType::rbdy2) {
-      sink.report("L4003", grammar::Location{datbox_path(files, "BODIES.DAT"), body.type_span},
-                  "lmgc-solve runs cases of RBDY2 bodies only or of RBDY3 bodies only for now; this body is "
-                  "not RBDY2");
+      sink.report(
+          "L4003", grammar::Location{datbox_path(files, "BODIES.DAT"), body.type_span},
+          body.type == grammar::BodyType::mailx
+              ? "lmgc-solve does not run MAILx (deformable) bodies yet"
+              : "lmgc-solve runs cases of RBDY2 bodies only or of RBDY3 bodies only for now; this body "
+                "is not RBDY2");
       return false;
     }
   SceneInput2D input;
@@ -86,9 +89,6 @@ bool prepare_run_2d(const validate::CaseFiles& files, Scene2D& scene, RunOutputs
 
   outputs.case_dir = files.case_dir;
   outputs.postpro = postpro_commands_2d(files, sink);
-  outputs.vloc_rloc_text = [](const Scene2D& s, const RunState2D& state) {
-    return grammar::write_vloc_rloc(vloc_rloc_file_2d(s, state));
-  };
   if (files.vloc_rloc_ini) outputs.warm_start = &*files.vloc_rloc_ini;
   return true;
 }
@@ -117,32 +117,60 @@ bool prepare_run_3d(const validate::CaseFiles& files, Scene3D& scene, RunOutputs
   return true;
 }
 
+void report_solver_support(const validate::CaseFiles& files, grammar::DiagnosticSink& sink) {
+  if (!files.bodies || !files.bulk_behav) return;
+  grammar::DiagnosticSink scratch(static_cast<std::size_t>(-1));
+  if (is_rigid_3d_case(files)) {
+    Scene3D scene;
+    RunOutputs3D outputs;
+    prepare_run_3d(files, scene, outputs, scratch);
+  } else {
+    Scene2D scene;
+    RunOutputs2D outputs;
+    prepare_run_2d(files, scene, outputs, scratch);
+  }
+  for (const grammar::Diagnostic& d : scratch.items())
+    if (d.code == "L4001" || d.code == "L4002" || d.code == "L4003" || d.code == "L4004") sink.report(d);
+}
+
 void apply_command_parameters(const validate::CaseFiles& files, RunOptions& options,
-                              grammar::DiagnosticSink& sink) {
+                              grammar::DiagnosticSink& sink, ParameterSources* sources) {
   if (!files.command) return;
   const grammar::CommandRunParameters p = grammar::command_run_parameters(*files.command, sink);
-  if (p.dt > 0.0) options.dt = p.dt;
-  options.theta = p.theta;
-  if (p.steps > 0) options.steps = p.steps;
-  if (!p.norm.empty()) parse_norm(p.norm, options.nlgs.norm);
-  if (p.tolerance > 0.0) options.nlgs.tolerance = p.tolerance;
-  options.nlgs.relax = p.relax;
-  if (!p.storage.empty()) parse_storage(p.storage, options.nlgs.storage);
-  if (p.gs_it1 > 0) options.nlgs.gs_it1 = p.gs_it1;
-  if (p.gs_it2 > 0) options.nlgs.gs_it2 = p.gs_it2;
-  options.write_every = p.write_every;
-  options.display_every = p.display_every;
-  options.nlgs.quick_scramble = p.quick_scramble;
-  options.nlgs.diagonal_resolution = p.diagonal_resolution;
-  if (p.has_y_min) options.y_min = p.y_min;
-  if (p.x_period > 0.0) options.x_period = p.x_period;
-  if (p.y_period > 0.0) options.y_period = p.y_period;
-  if (p.has_source_point) {
+  // Only what the file sets; lmgc-check reports a value out of range (L4010), so here every value
+  // the file sets is taken as it is.
+  const auto has = [&](std::string_view name) {
+    if (!p.lines.count(name)) return false;
+    if (sources) (*sources)[std::string(name)] = ParameterSource::command_dat;
+    return true;
+  };
+  if (has("dt")) options.dt = p.dt;
+  if (has("theta")) options.theta = p.theta;
+  if (has("nb_steps")) options.steps = p.steps;
+  if (has("norm")) parse_norm(p.norm, options.nlgs.norm);
+  if (has("tol")) options.nlgs.tolerance = p.tolerance;
+  if (has("relax")) options.nlgs.relax = p.relax;
+  if (has("solver_type")) parse_storage(p.storage, options.nlgs.storage);
+  if (has("gs_it1")) options.nlgs.gs_it1 = p.gs_it1;
+  if (has("gs_it2")) options.nlgs.gs_it2 = p.gs_it2;
+  if (has("freq_write")) options.write_every = p.write_every;
+  if (has("freq_display")) options.display_every = p.display_every;
+  if (has("quick_scramble")) options.nlgs.quick_scramble = p.quick_scramble;
+  if (has("diagonal_resolution")) options.nlgs.diagonal_resolution = p.diagonal_resolution;
+  if (has("ymin_boundary")) options.y_min = p.y_min;
+  if (has("ymax_boundary")) options.y_max = p.y_max;
+  if (has("xmin_boundary")) options.x_min = p.x_min;
+  if (has("xmax_boundary")) options.x_max = p.x_max;
+  if (has("xperiod")) options.x_period = p.x_period;
+  if (has("yperiod")) options.y_period = p.y_period;
+  if (has("new_rotation_scheme")) options.new_rotation_scheme = p.new_rotation_scheme;
+  if (has("zero_initial_velocity")) options.zero_initial_velocity = p.zero_initial_velocity;
+  if (has("cundall_iterations")) options.cundall_iterations = static_cast<int>(p.cundall_iterations);
+  if (has("source_point")) {
     options.source_first = p.source_first;
     options.source_radius = p.source_radius;
     for (int d = 0; d < 3; ++d) options.source_point[d] = p.source_point[d];
   }
-  options.new_rotation_scheme = p.new_rotation_scheme;
 }
 
 std::vector<validate::OutputFile> echo_files_2d(const validate::CaseFiles& files) {

@@ -8,6 +8,7 @@
 #include "solver/driver/run_2d.hpp"
 #include "solver/driver/run_3d.hpp"
 #include "solver/driver/run_options.hpp"
+#include "solver/driver/run_parameters.hpp"
 #include "validate/case_files.hpp"
 
 namespace lmgc::solver {
@@ -25,10 +26,14 @@ bool is_rigid_3d_case(const validate::CaseFiles& files);
 bool prepare_run_3d(const validate::CaseFiles& files, Scene3D& scene, RunOutputs3D& outputs,
                     grammar::DiagnosticSink& sink);
 
+// What lmgc-solve would refuse (L4001-L4003) or leave out (L4004) in this case, for lmgc-check:
+// prepares the run into a scratch sink and passes those diagnostics on.
+void report_solver_support(const validate::CaseFiles& files, grammar::DiagnosticSink& sink);
+
 // The run parameters COMMAND.DAT sets, laid over `options` (flags given on the command line are
-// applied afterwards by the caller, so they win).
+// applied afterwards by the caller, so they win); each one set is recorded in `sources`.
 void apply_command_parameters(const validate::CaseFiles& files, RunOptions& options,
-                              grammar::DiagnosticSink& sink);
+                              grammar::DiagnosticSink& sink, ParameterSources* sources = nullptr);
 
 // The echo files of a rigid 2D run: as validate::echo_files, with BODIES.OUT after LMGC90's
 // RBDY2 pre-computations (avrd, gyrd, centre of inertia), as LMGC90 writes it.

@@ -1,29 +1,29 @@
 #include "solver/driver/run_2d.hpp"
 
 #include <chrono>
-#include <csignal>
 
 #include "grammar/common/output_file.hpp"
 #include "grammar/dof/writer.hpp"
+#include "grammar/vloc_rloc/writer.hpp"
 #include "solver/io/display_2d.hpp"
 #include "solver/io/state_files_2d.hpp"
 
 namespace lmgc::solver {
 
-std::atomic<bool> g_stop_requested{false};
-
 namespace {
-extern "C" void on_interrupt(int) {
-  g_stop_requested.store(true);
+
+std::string non_finite_2d(const Scene2D& scene, const RunState2D&) {
+  const RigidBodies2D& b = scene.bodies;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    if (!b.displacement[i].allFinite()) return "body " + std::to_string(i + 1) + ": displacement X";
+    if (!b.velocity[i].allFinite()) return "body " + std::to_string(i + 1) + ": velocity V";
+  }
+  return {};
 }
+
 }  // namespace
 
-void install_interrupt_handler() {
-  std::signal(SIGINT, on_interrupt);
-}
-
 RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D& outputs) {
-  RunSummary summary;
   namespace fs = std::filesystem;
   const fs::path outbox = outputs.case_dir / "OUTBOX";
   std::error_code ec;
@@ -35,6 +35,12 @@ RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D&
   scene.x_max = options.x_max;
   scene.x_period = options.x_period;
 
+  if (options.zero_initial_velocity)
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+      scene.bodies.velocity_begin[i].setZero();
+      scene.bodies.velocity[i].setZero();
+    }
+
   RunState2D state;
   state.h = options.dt;
   state.theta = options.theta;
@@ -45,49 +51,25 @@ RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D&
     store_interactions(state, warm.interactions, warm.law_states);
   }
 
+  RunSummary summary;
   Postpro2D postpro;
-  if (!outputs.postpro.empty() && !postpro.open(outputs.case_dir / "POSTPRO", outputs.postpro, summary.error))
+  if (!outputs.postpro.empty() &&
+      !postpro.open(outputs.case_dir / "POSTPRO", outputs.postpro, summary.error)) {
+    summary.failure = RunFailure::output;
     return summary;
-  DisplayWriter2D display(outputs.case_dir / "DISPLAY");
-
-  // The run report: one line per step, flushed, so an interrupted run keeps what it did.
-  StepLog log(outbox, options);
-
-  long written = 0;
-  auto write_state = [&](const std::string& suffix) {
-    if (!grammar::write_file_whole(outbox / ("DOF." + suffix), grammar::write_dof(dof_file_2d(scene, state)),
-                                   summary.error))
-      return false;
-    if (outputs.vloc_rloc_text &&
-        !grammar::write_file_whole(outbox / ("Vloc_Rloc." + suffix), outputs.vloc_rloc_text(scene, state),
-                                   summary.error))
-      return false;
-    return true;
-  };
-
-  for (long k = 0; k < options.steps; ++k) {
-    const auto step_start = std::chrono::steady_clock::now();
-    const NlgsResult result = step_2d(scene, state, options.nlgs);
-    const double step_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
-    log.record(state.step, state.time, state.contacts.size(), result, kinetic_energy(scene.bodies),
-               step_seconds, summary);
-    if (!outputs.postpro.empty()) postpro.write(scene, state, result);
-    if (options.write_every > 0 && state.step % options.write_every == 0) {
-      if (!write_state("OUT." + std::to_string(++written))) break;
-    }
-    if (options.display_every > 0 && state.step % options.display_every == 0) {
-      if (!display.write(scene, state, summary.error)) break;
-    }
-    if (g_stop_requested.load()) {
-      summary.interrupted = true;
-      break;
-    }
   }
-  summary.final_time = state.time;
-  if (summary.error.empty()) write_state("LAST");
-  postpro.close();
-  return summary;
+  DisplayWriter2D display(outputs.case_dir / "DISPLAY");
+  const RunDimension<Scene2D, RunState2D> dimension{
+      [](Scene2D& s, RunState2D& st, const NlgsOptions& o) { return step_2d(s, st, o); },
+      [](const Scene2D& s) { return kinetic_energy(s.bodies); },
+      non_finite_2d,
+      [](const Scene2D& s, const RunState2D& st) { return grammar::write_dof(dof_file_2d(s, st)); },
+      [](const Scene2D& s, const RunState2D& st) {
+        return grammar::write_vloc_rloc(vloc_rloc_file_2d(s, st));
+      },
+  };
+  return run_loop(scene, state, options, outputs.case_dir, postpro, !outputs.postpro.empty(), display,
+                  dimension);
 }
 
 }  // namespace lmgc::solver

@@ -1,6 +1,7 @@
 #pragma once
 // The run loop of a rigid 2D case: steps, outputs (OUTBOX state files, DISPLAY, POSTPRO, run
-// report), progress on a terminal, clean stop on Ctrl-C. spec: state-and-outputs.md §1, §2.2.
+// report), progress on a terminal, clean stop on a signal (solver/driver/run_loop.hpp). spec:
+// state-and-outputs.md §1, §2.2.
 #include <atomic>
 #include <filesystem>
 #include <functional>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "grammar/vloc_rloc/ast.hpp"
+#include "solver/driver/run_loop.hpp"
 #include "solver/driver/run_options.hpp"
 #include "solver/driver/step_log.hpp"
 #include "solver/integrator/step_2d.hpp"
@@ -18,15 +20,9 @@ namespace lmgc::solver {
 struct RunOutputs2D {
   std::filesystem::path case_dir;         // OUTBOX/, DISPLAY/, POSTPRO/ are created here
   std::vector<PostproCommand2D> postpro;  // from POSTPRO.DAT
-  // Extra state writer (Vloc_Rloc.OUT.n / .LAST) when the grammar provides it: (path, content).
-  std::function<std::string(const Scene2D&, const RunState2D&)> vloc_rloc_text;
   // Vloc_Rloc.INI: the interactions of the step before the first one (warm start), if any.
   const grammar::VlocRlocFile* warm_start = nullptr;
 };
-
-// Set by the SIGINT handler; the loop stops after the current step.
-extern std::atomic<bool> g_stop_requested;
-void install_interrupt_handler();
 
 RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D& outputs);
 

@@ -11,6 +11,20 @@
 
 namespace lmgc::solver {
 
+namespace {
+
+std::string non_finite_3d(const Scene3D& scene, const RunState3D&) {
+  const RigidBodies3D& b = scene.bodies;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    if (!b.displacement[i].allFinite()) return "body " + std::to_string(i + 1) + ": displacement X";
+    if (!b.velocity[i].allFinite()) return "body " + std::to_string(i + 1) + ": velocity V";
+    if (!b.frame[i].allFinite()) return "body " + std::to_string(i + 1) + ": principal frame";
+  }
+  return {};
+}
+
+}  // namespace
+
 RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D& outputs) {
   RunSummary summary;
   namespace fs = std::filesystem;
@@ -20,18 +34,22 @@ RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D&
 
   scene.x_period = options.x_period;
   scene.y_period = options.y_period;
+  scene.cundall_iterations = options.cundall_iterations;
   // PTPT3 links: the network file's when asked for, else detected (again when periods or current
   // lengths change what the scene's build found).
   const LinkLength length =
       options.ptpt3_current_nonuc0 ? LinkLength::current : LinkLength::reference_configuration;
   if (options.ptpt3_network) {
     if (!outputs.ptpt3_network) {
-      summary.error = "--ptpt3-network: " + (outputs.case_dir / "DATBOX" / "PTPT3_NETWORK.DAT").string() +
-                      " does not exist";
+      summary.fail(RunFailure::data,
+                   "--ptpt3-network: " + (outputs.case_dir / "DATBOX" / "PTPT3_NETWORK.DAT").string() +
+                       " does not exist");
       return summary;
     }
-    if (!network_links_3d(scene, *outputs.ptpt3_network, length, scene.point_links, summary.error))
+    if (!network_links_3d(scene, *outputs.ptpt3_network, length, scene.point_links, summary.error)) {
+      summary.failure = RunFailure::data;
       return summary;
+    }
   } else if (scene.x_period > 0.0 || scene.y_period > 0.0 || length == LinkLength::current) {
     scene.point_links = link_points_3d(scene, length);
   }
@@ -39,6 +57,12 @@ RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D&
     init_source_point(
         scene, static_cast<std::size_t>(options.source_first - 1), options.source_radius,
         Eigen::Vector3d(options.source_point[0], options.source_point[1], options.source_point[2]));
+
+  if (options.zero_initial_velocity)
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+      scene.bodies.velocity_begin[i].setZero();
+      scene.bodies.velocity[i].setZero();
+    }
 
   RunState3D state;
   state.h = options.dt;
@@ -50,40 +74,23 @@ RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D&
   }
 
   Postpro3D postpro;
-  if (!outputs.postpro.empty() && !postpro.open(outputs.case_dir / "POSTPRO", outputs.postpro, summary.error))
+  if (!outputs.postpro.empty() &&
+      !postpro.open(outputs.case_dir / "POSTPRO", outputs.postpro, summary.error)) {
+    summary.failure = RunFailure::output;
     return summary;
-  DisplayWriter3D display(outputs.case_dir / "DISPLAY");
-
-  StepLog log(outbox, options);
-  long written = 0;
-  const auto write_state = [&](const std::string& suffix) {
-    return grammar::write_file_whole(outbox / ("DOF." + suffix),
-                                     grammar::write_dof(dof_file_3d(scene, state)), summary.error) &&
-           grammar::write_file_whole(outbox / ("Vloc_Rloc." + suffix),
-                                     grammar::write_vloc_rloc(vloc_rloc_file_3d(scene, state)),
-                                     summary.error);
-  };
-  for (long k = 0; k < options.steps; ++k) {
-    const auto step_start = std::chrono::steady_clock::now();
-    const NlgsResult result = step_3d(scene, state, options.nlgs);
-    const double step_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
-    log.record(state.step, state.time, state.contacts.size(), result, kinetic_energy(scene.bodies),
-               step_seconds, summary);
-    if (!outputs.postpro.empty()) postpro.write(scene, state, result);
-    if (options.write_every > 0 && state.step % options.write_every == 0)
-      if (!write_state("OUT." + std::to_string(++written))) break;
-    if (options.display_every > 0 && state.step % options.display_every == 0)
-      if (!display.write(scene, state, summary.error)) break;
-    if (g_stop_requested.load()) {
-      summary.interrupted = true;
-      break;
-    }
   }
-  summary.final_time = state.time;
-  if (summary.error.empty()) write_state("LAST");
-  postpro.close();
-  return summary;
+  DisplayWriter3D display(outputs.case_dir / "DISPLAY");
+  const RunDimension<Scene3D, RunState3D> dimension{
+      [](Scene3D& s, RunState3D& st, const NlgsOptions& o) { return step_3d(s, st, o); },
+      [](const Scene3D& s) { return kinetic_energy(s.bodies); },
+      non_finite_3d,
+      [](const Scene3D& s, const RunState3D& st) { return grammar::write_dof(dof_file_3d(s, st)); },
+      [](const Scene3D& s, const RunState3D& st) {
+        return grammar::write_vloc_rloc(vloc_rloc_file_3d(s, st));
+      },
+  };
+  return run_loop(scene, state, options, outputs.case_dir, postpro, !outputs.postpro.empty(), display,
+                  dimension);
 }
 
 }  // namespace lmgc::solver

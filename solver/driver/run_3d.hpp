@@ -6,7 +6,7 @@
 
 #include "grammar/ptpt3_network/ast.hpp"
 #include "grammar/vloc_rloc/ast.hpp"
-#include "solver/driver/run_2d.hpp"  // RunSummary, g_stop_requested
+#include "solver/driver/run_loop.hpp"
 #include "solver/driver/run_options.hpp"
 #include "solver/integrator/step_3d.hpp"
 #include "solver/io/postpro_3d.hpp"

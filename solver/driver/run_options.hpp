@@ -19,6 +19,9 @@ struct RunOptions {
   bool quiet = false;                // no progress line
   bool strict = false;               // exit 3 when a step did not converge within gs_it1 × gs_it2
   bool new_rotation_scheme = false;  // RBDY3: Cayley frame update (RBDY3_NewRotationScheme)
+  int cundall_iterations = 100;      // PRPRx: cap of Cundall's common-plane search (CUNDALL ITERATION)
+  // FATAL DAMPING (or INI V DOF NULL) before the first step: every body starts at rest.
+  bool zero_initial_velocity = false;
   // Bounds of LMGC90's RBDY2 "out of bounds" (SetYminBoundary, ...).
   double y_min = -std::numeric_limits<double>::infinity();
   double y_max = std::numeric_limits<double>::infinity();

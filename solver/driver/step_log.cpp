@@ -40,7 +40,8 @@ double seconds_between(std::chrono::steady_clock::time_point a, std::chrono::ste
 }  // namespace
 
 StepLog::StepLog(const std::filesystem::path& outbox, const RunOptions& options)
-    : report_(outbox / "run_report.csv", std::ios::trunc),
+    : path_(outbox / "run_report.csv"),
+      report_(path_, std::ios::trunc),
       total_steps_(options.steps),
       progress_(!options.quiet && isatty(STDERR_FILENO)),
       start_(std::chrono::steady_clock::now()),
@@ -49,6 +50,18 @@ StepLog::StepLog(const std::filesystem::path& outbox, const RunOptions& options)
   report_ << "step,time,contacts,active,iterations,converged,mean_dvor,quad_dv,quad_dvr,"
              "residual_natural_map_over_q,kinetic_energy,step_seconds,nlgs_seconds,sweep_seconds,"
              "sweeps_skipped\n";
+}
+
+std::string StepLog::error() const {
+  return "cannot write '" + path_.string() + "' (disk full?)";
+}
+
+bool StepLog::close() {
+  if (!report_.is_open()) return true;
+  report_.flush();
+  const bool ok = static_cast<bool>(report_);
+  report_.close();
+  return ok;
 }
 
 StepLog::~StepLog() {

@@ -29,10 +29,6 @@ namespace {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-// Cap of Cundall's common-plane search (mod_PRPRx's default `cundall_iter`; the search usually
-// ends earlier, when its tilt angle falls below 0.0017 rad).
-constexpr int kCundallIterations = 100;
-
 // recup_rloc_PRPRx: a PRPRx point takes the previous step's reaction of the point of the same pair
 // closer than 1e-3 (squared 1e-6, `tol_recup_rloc`), both seen from the candidate body.
 constexpr double kRecupSquaredDistance = 1e-6;
@@ -401,7 +397,7 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
         v.family == PairFamily3D::PRPLx
             ? detect_polyhedron_plane(placed_polyhedron[i], centre[j], plane_axes(), an.half_axes, v.alert, g)
             : detect_polyhedron_polyhedron(placed_polyhedron[i], antagonist, v.alert, smallest_polyhedron,
-                                           kCundallIterations, g);
+                                           scene.cundall_iterations, g);
     if (hit)
       for (int k = 0; k < g.count; ++k) {
         const auto m = static_cast<std::size_t>(k);

@@ -59,7 +59,7 @@ bool Postpro2D::open(const std::filesystem::path& dir, std::vector<PostproComman
       error = "cannot write '" + (dir / name).string() + "'";
       return false;
     }
-    streams_.push_back({command, body, std::move(file)});
+    streams_.push_back({command, body, std::move(file), dir / name});
     return true;
   };
   // POSTPRO.OUT is created empty (datbox-inputs.md §8).
@@ -98,7 +98,8 @@ bool Postpro2D::open(const std::filesystem::path& dir, std::vector<PostproComman
   return true;
 }
 
-void Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsResult& solver) {
+bool Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsResult& solver,
+                      std::string& error) {
   const RigidBodies2D& b = scene.bodies;
   const double t = state.time, h = state.h;
   if (!state.contacts.empty()) last_norms_ = solver.norms;
@@ -234,10 +235,23 @@ void Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsR
   }
   if (flush_clock_.due())
     for (Stream& s : streams_) s.file->flush();
+  return streams_good(error);
 }
 
-void Postpro2D::close() {
+bool Postpro2D::close(std::string& error) {
+  for (Stream& s : streams_) s.file->flush();
+  const bool ok = streams_good(error);
   streams_.clear();
+  return ok;
+}
+
+bool Postpro2D::streams_good(std::string& error) const {
+  for (const Stream& s : streams_)
+    if (!*s.file) {
+      error = "cannot write '" + s.path.string() + "' (disk full?)";
+      return false;
+    }
+  return true;
 }
 
 std::string solver_informations_line(double time, int iterations, const NlgsNorms& norms,

@@ -56,15 +56,19 @@ class Postpro2D {
   bool open(const std::filesystem::path& postpro_dir, std::vector<PostproCommand2D> commands,
             std::string& error);
   // One line per active command, after the step (end-of-step state and the step's solver result).
-  void write(const Scene2D& scene, const RunState2D& state, const NlgsResult& solver);
-  void close();
+  // False, with `error`, when a file could not be written (disk full, ...): the run stops then.
+  bool write(const Scene2D& scene, const RunState2D& state, const NlgsResult& solver, std::string& error);
+  // Flushes and closes every file; false, with `error`, when the last lines could not be written.
+  bool close(std::string& error);
 
  private:
   struct Stream {
     std::size_t command;
     std::int64_t body = 0;
     std::unique_ptr<std::ofstream> file;
+    std::filesystem::path path;
   };
+  bool streams_good(std::string& error) const;
   std::vector<PostproCommand2D> commands_;
   std::vector<Stream> streams_;
   double dissipated_ = 0.0;     // cumulated dissipated energy

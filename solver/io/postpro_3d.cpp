@@ -37,7 +37,7 @@ bool Postpro3D::open(const std::filesystem::path& dir, std::vector<PostproComman
       error = "cannot write '" + (dir / name).string() + "'";
       return false;
     }
-    streams_.push_back({command, body, std::move(file)});
+    streams_.push_back({command, body, std::move(file), dir / name});
     return true;
   };
   // POSTPRO.OUT is created empty (datbox-inputs.md §8).
@@ -55,7 +55,8 @@ bool Postpro3D::open(const std::filesystem::path& dir, std::vector<PostproComman
   return true;
 }
 
-void Postpro3D::write(const Scene3D& scene, const RunState3D& state, const NlgsResult& solver) {
+bool Postpro3D::write(const Scene3D& scene, const RunState3D& state, const NlgsResult& solver,
+                      std::string& error) {
   const RigidBodies3D& b = scene.bodies;
   const double t = state.time;
   if (!state.contacts.empty()) last_norms_ = solver.norms;
@@ -86,10 +87,23 @@ void Postpro3D::write(const Scene3D& scene, const RunState3D& state, const NlgsR
   }
   if (flush_clock_.due())
     for (Stream& s : streams_) s.file->flush();
+  return streams_good(error);
 }
 
-void Postpro3D::close() {
+bool Postpro3D::close(std::string& error) {
+  for (Stream& s : streams_) s.file->flush();
+  const bool ok = streams_good(error);
   streams_.clear();
+  return ok;
+}
+
+bool Postpro3D::streams_good(std::string& error) const {
+  for (const Stream& s : streams_)
+    if (!*s.file) {
+      error = "cannot write '" + s.path.string() + "' (disk full?)";
+      return false;
+    }
+  return true;
 }
 
 }  // namespace lmgc::solver

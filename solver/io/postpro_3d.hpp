@@ -20,8 +20,10 @@ class Postpro3D {
   bool open(const std::filesystem::path& postpro_dir, std::vector<PostproCommand2D> commands,
             std::string& error);
   // One line per active command, after the step (end-of-step state and the step's solver result).
-  void write(const Scene3D& scene, const RunState3D& state, const NlgsResult& solver);
-  void close();
+  // False, with `error`, when a file could not be written (disk full, ...): the run stops then.
+  bool write(const Scene3D& scene, const RunState3D& state, const NlgsResult& solver, std::string& error);
+  // Flushes and closes every file; false, with `error`, when the last lines could not be written.
+  bool close(std::string& error);
 
   // True when the 3D post-processor writes this command (the others are skipped).
   static bool provides(PostproKind2D kind);
@@ -31,7 +33,9 @@ class Postpro3D {
     std::size_t command;
     std::int64_t body = 0;
     std::unique_ptr<std::ofstream> file;
+    std::filesystem::path path;
   };
+  bool streams_good(std::string& error) const;
   std::vector<PostproCommand2D> commands_;
   std::vector<Stream> streams_;
   NlgsNorms last_norms_;  // kept when a step has no contact (as LMGC90 does)

@@ -73,7 +73,7 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
       c.type = t.type.value;
       c.color = t.color.value;
       const auto value = [&](std::size_t i) { return i < t.values.size() ? t.values[i].value : 0.0; };
-      if (c.type == "DISKx" || c.type == "DISPx") {
+      if (c.type == "DISKx") {
         c.shape = ContactorShape2D::disk;
         c.type = "DISKx";
         c.radius = value(0);
@@ -83,7 +83,7 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
         c.type = "DISKx";
         c.radius = value(0);
         c.shift = Vector2d(value(1), value(2));
-      } else if (c.type == "xKSID" || c.type == "xPSID") {
+      } else if (c.type == "xKSID") {
         c.shape = ContactorShape2D::hollow_disk;
         c.type = "xKSID";
         c.radius = value(0);

@@ -82,6 +82,10 @@ struct Scene3D {
   // SetPeriodicCondition: detection sees centres wrapped into [0, period) and the images of the
   // bodies near the sides; positions themselves are never wrapped (0 = not periodic).
   double x_period = 0.0, y_period = 0.0;
+  // Cap of Cundall's common-plane search between polyhedra (PRPRx_UseCpCundallDetection(nb_iter),
+  // COMMAND.DAT's CUNDALL ITERATION; 100 is mod_PRPRx's default `cundall_iter`). The search usually
+  // ends earlier, when its tilt angle falls below 0.0017 rad.
+  int cundall_iterations = 100;
   SourcePoint3D source;
   std::vector<PointLink3D> point_links;  // PTPT3, fixed for the run
   ScenePlan3D plan;

@@ -31,6 +31,22 @@ inline ToolRun run_tool(const std::string& name, const std::string& arguments) {
   return run;
 }
 
+// As run_tool, with standard error in `output` too (after standard output), and `prefix` before
+// the tool's path (a `cd` to run it from another folder, a `ulimit`, ...).
+inline ToolRun run_tool_both_streams(const std::string& name, const std::string& arguments,
+                                     const std::string& prefix = "") {
+  ToolRun run;
+  const std::string command = prefix + "'" + tool_path(name).string() + "' " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return run;
+  std::array<char, 4096> buffer;
+  std::size_t n;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) run.output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
 // A fresh empty folder under the build tree, removed first if it exists.
 inline std::filesystem::path scratch_dir(const std::string& name) {
   const auto dir = std::filesystem::path(LMGC_BINARY_DIR) / "test_scratch" / name;

@@ -103,6 +103,99 @@ TEST(LmgcSolve, UsageErrorsExitTwo) {
   EXPECT_EQ(run_tool("lmgc-solve", "'" + dir.string() + "' --norm Nope").exit_code, 2);
 }
 
+// Every real flag refuses NaN and infinities, every count its range (exit 2, nothing written).
+TEST(LmgcSolve, NonFiniteOrOutOfRangeFlagsAreUsageErrors) {
+  const fs::path dir = default_case_copy("solve_bad_flags");
+  const std::string c = "'" + dir.string() + "' --quiet --steps 2 ";
+  for (const char* flag :
+       {"--dt nan", "--dt inf", "--theta nan", "--tol nan", "--relax nan", "--relax 5", "--relax 0",
+        "--xperiod nan", "--xperiod -1", "--ymin-boundary nan", "--residual-target nan", "--steps -1",
+        "--steps 99999999999999999999", "--write-every -1", "--display-every -2", "--gs-it1 0",
+        "--cundall-iterations 0", "--source-point 1,nan,0,0,0", "--rloc-tol 0.01"}) {
+    EXPECT_EQ(run_tool("lmgc-solve", c + flag).exit_code, 2) << flag;
+  }
+  EXPECT_FALSE(fs::exists(dir / "OUTBOX"));
+}
+
+// A case folder whose name starts with '-' is given after '--'.
+TEST(LmgcSolve, ACasePathStartingWithADashIsGivenAfterTwoDashes) {
+  const fs::path parent = scratch_dir("solve_dash");
+  fs::create_directories(parent / "-case");
+  fs::copy(default_case_copy("solve_dash_source") / "DATBOX", parent / "-case" / "DATBOX",
+           fs::copy_options::recursive);
+  const ToolRun run =
+      run_tool_both_streams("lmgc-solve", "--quiet --steps 2 -- -case", "cd '" + parent.string() + "' && ");
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(fs::exists(parent / "-case" / "OUTBOX" / "DOF.LAST"));
+}
+
+// A COMMAND.DAT command that changes the run and that lmgc-solve does not do: the case is refused
+// (exit 5, L4005, nothing written); without COMMAND.DAT it runs.
+TEST(LmgcSolve, ACommandItDoesNotRunRefusesTheCaseUnlessCommandDatIsLeftOut) {
+  const fs::path dir = default_case_copy("solve_refused");
+  std::string command = read_file(dir / "DATBOX" / "COMMAND.DAT");
+  command.replace(command.find("COMPUTE MASS"), 12, "COMPUTE MASS                  :\nGHOST TO INVISIBLE");
+  std::ofstream(dir / "DATBOX" / "COMMAND.DAT", std::ios::binary) << command;
+  const ToolRun refused = run_tool_both_streams("lmgc-solve", "'" + dir.string() + "' --quiet --steps 2");
+  EXPECT_EQ(refused.exit_code, 5);
+  EXPECT_NE(refused.output.find("warning[L4005]"), std::string::npos) << refused.output;
+  EXPECT_FALSE(fs::exists(dir / "OUTBOX"));
+  EXPECT_EQ(run_tool("lmgc-solve", "'" + dir.string() + "' --quiet --steps 2 --no-command-dat").exit_code, 0);
+  EXPECT_TRUE(fs::exists(dir / "OUTBOX" / "DOF.LAST"));
+}
+
+// OUTBOX/run_parameters.csv: each parameter's value and the layer it came from.
+TEST(LmgcSolve, RunParametersRecordWhereEachValueCameFrom) {
+  const fs::path dir = default_case_copy("solve_sources");
+  ASSERT_EQ(run_tool("lmgc-solve", "'" + dir.string() + "' --quiet --steps 4 --tol 1e-5").exit_code, 0);
+  const std::string csv = read_file(dir / "OUTBOX" / "run_parameters.csv");
+  EXPECT_NE(csv.find("\ndt,\"0.001\",COMMAND.DAT,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\nnb_steps,\"4\",flag,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\ntol,\"1e-05\",flag,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\nscramble_seed,\"1\",default,"), std::string::npos) << csv;
+}
+
+// A case with a command.py: lmgc-solve says that it does not run it, and names each parameter whose
+// value differs from the script's literal, with the script's line and the flag that would match it.
+TEST(LmgcSolve, NamesEachParameterThatDiffersFromTheScript) {
+  const fs::path dir = default_case_copy("solve_script");
+  std::ofstream(dir / "command.py") << "from pylmgc90 import chipy\n"
+                                       "dt = 5e-4\n"
+                                       "theta = 0.5\n"
+                                       "chipy.TimeEvolution_SetTimeStep(dt)\n"
+                                       "chipy.Integrator_InitTheta(theta)\n"
+                                       "for k in range(3000):\n"
+                                       "  chipy.IncrementStep()\n"
+                                       "  chipy.WriteOut(100)\n";
+  const ToolRun run = run_tool_both_streams("lmgc-solve", "'" + dir.string() + "' --steps 3000");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_NE(run.output.find("warning[L4011]"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find(
+                "command.py:4:7: warning[L4008]: dt is 0.001 (COMMAND.DAT); command.py passes 0.0005 (--dt)"),
+            std::string::npos)
+      << run.output;
+  EXPECT_EQ(run.output.find("theta is"), std::string::npos);
+  EXPECT_EQ(run.output.find("nb_steps is"), std::string::npos);
+  EXPECT_EQ(run.output.find("freq_write is"), std::string::npos);
+}
+
+// An output that cannot be written (a POSTPRO file on a full device) stops the run with exit 4,
+// not 1 ("invalid data"); a stale temporary of a killed run is removed, never left or renamed.
+TEST(LmgcSolve, AnOutputThatCannotBeWrittenExitsFour) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  const fs::path dir = default_case_copy("solve_full");
+  std::ofstream(dir / "DATBOX" / "POSTPRO.DAT")
+      << "KINETIC ENERGY                :\nSTEP 1                        :\nEND\n";
+  fs::create_directories(dir / "POSTPRO");
+  fs::create_directories(dir / "OUTBOX");
+  fs::create_symlink("/dev/full", dir / "POSTPRO" / "KINETIC_ENERGY.DAT");
+  std::ofstream(dir / "OUTBOX" / ".DOF.LAST.tmp") << "half";
+  const ToolRun run = run_tool_both_streams("lmgc-solve", "'" + dir.string() + "' --quiet --steps 20");
+  EXPECT_EQ(run.exit_code, 4) << run.output;
+  EXPECT_NE(run.output.find("KINETIC_ENERGY.DAT"), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(dir / "OUTBOX" / ".DOF.LAST.tmp"));
+}
+
 TEST(LmgcSolve, StrictExitsThreeWhenAStepHitsTheIterationCap) {
   LMGC_REQUIRE_SHARED();
   // 1024 disks with one sweep per step cannot reach 1e-12: every step with contacts hits the cap.

@@ -381,6 +381,21 @@ std::vector<Row> rows() {
     {"NothingMoves", disk, {{"BULK_BEHAV.DAT", "grv2=-0.9810000D+01", "grv2= 0.0000000D+00"}}, "BULK_BEHAV.DAT", "L3014", warning, 2, 46},
     {"DynamicAboveStaticFriction", disk, {{"TACT_BEHAV.DAT", kRst08, " rst08  IQS_DS_CLB                      dyfr= 0.5000000D+00  stfr= 0.3000000D+00\n"}}, "TACT_BEHAV.DAT", "L3016", warning, 3, 9},
 
+    // ---- L4xxx: what the drivers ask of a run, against what lmgc-solve runs
+    {"CommandNotRun", disk, {{"COMMAND.DAT", "COMPUTE MASS                  :\n", "COMPUTE MASS                  :\nGHOST TO INVISIBLE            :\n"}}, "COMMAND.DAT", "L4005", warning, 11, 1},
+    {"DampingInsideTheTimeLoop", disk, {{"COMMAND.DAT", "COMPUTE Fext                  :\n", "COMPUTE Fext                  :\nFATAL DAMPING                 :\n"}}, "COMMAND.DAT", "L4005", warning, 15, 1},
+    {"ScriptAsksForAnotherDetection", spheres, {{"../command.py", "", "from pylmgc90 import chipy\nchipy.PRPRx_UseNcDetection(1e-3)\n"}}, "command.py", "L4005", warning, 2, 7},
+    {"ScriptShrinksCundallFaces", spheres, {{"../command.py", "", "from pylmgc90 import chipy\nchipy.PRPRx_UseCpCundallDetection(100, 0.1)\n"}}, "command.py", "L4005", warning, 2, 7},
+    {"ScriptDrivesBodies", disk, {{"../command.py", "", "from pylmgc90 import chipy\nfor k in range(10):\n  chipy.RBDY2_PutBodyVector('Vbeg_', 1, v)\n"}}, "command.py", "L4005", warning, 3, 9},
+    {"DisplayNotWritten", disk, {{"COMMAND.DAT", "COMPUTE MASS                  :\n", "COMPUTE MASS                  :\nDISPLAY TIMES                 :\n"}}, "COMMAND.DAT", "L4006", note, 11, 1},
+    {"MultiPhysicsData", disk, {{"MP_DEM.DAT", "", "$model therm\n"}}, "MP_DEM.DAT", "L4007", warning, 0, 0},
+    {"ScriptLoadsMultiPhysics", disk, {{"../command.py", "", "from pylmgc90.chipy import *\nReadMpBehaviours(0.)\n"}}, "command.py", "L4007", warning, 2, 1},
+    {"UnknownChipyCall", disk, {{"../command.py", "", "from pylmgc90 import chipy\nchipy.RBDY2_Frobnicate(1)\n"}}, "command.py", "L4009", note, 2, 7},
+    {"NonPositiveTimeStep", disk, {{"COMMAND.DAT", "1.D-3   ", "0.D0    "}}, "COMMAND.DAT", "L4010", error, 5, 1},
+    {"ThetaBelowOneHalf", disk, {{"COMMAND.DAT", "0.5D0 ", "0.3D0 "}}, "COMMAND.DAT", "L4010", error, 7, 1},
+    {"RelaxationAboveTwo", disk, {{"COMMAND.DAT", "    1.0D0                     : RELAX", "    5.0D0                     : RELAX"}}, "COMMAND.DAT", "L4010", error, 44, 1},
+    {"ThermalBulkLawRunAsRigid", disk, {}, "BULK_BEHAV.DAT", "L4012", note, 5, 9, [](validate::CaseFiles& files) { files.bulk_behav->laws.front().law_type.value = "THERMO_RIGID"; }},
+
     // ---- case loading (validate/case_files.cpp)
     {"FileNotReadByLmgc90", disk, {{"NOTES.TXT", "", "a note\n"}}, "NOTES.TXT", "L1021", note, 0, 0},
     {"EvolutionFileMissing", disk, {{"DRV_DOF.DAT", fixed_dof(2), evolution}}, "DRV_DOF.DAT", "L9001", error, 8, 25},

@@ -137,13 +137,19 @@ TEST(BodiesParser, BodiesAreGroupedAsLmgc90NumbersThem) {
   EXPECT_EQ(p.file.bodies[1].type, BodyType::rbdy2);
 }
 
-TEST(BodiesParser, GuideOnlyContactorIsReadWithANote) {
-  std::string text = kDisk;
-  text.replace(text.find("DISKx"), 5, "DISPx");
-  const Parsed p = parse(text);
-  EXPECT_FALSE(p.sink.has_errors());
-  ASSERT_FALSE(p.sink.items().empty());
-  EXPECT_EQ(p.sink.items()[0].code, "L1018");
+// DISPx and xPSID, in the 2012 user's guide, were removed from LMGC90, whose reader stops on them:
+// an error, with the body still read so that the file echoes.
+TEST(BodiesParser, RemovedPneumaticDisksAreErrors) {
+  for (const char* removed : {"DISPx", "xPSID"}) {
+    std::string text = kDisk;
+    text.replace(text.find("DISKx"), 5, removed);
+    const Parsed p = parse(text);
+    EXPECT_TRUE(p.sink.has_errors()) << removed;
+    ASSERT_FALSE(p.sink.items().empty());
+    EXPECT_EQ(p.sink.items()[0].code, "L1001");
+    EXPECT_NE(p.sink.items()[0].message.find("removed from LMGC90"), std::string::npos);
+    ASSERT_EQ(p.file.bodies.size(), 1u);
+  }
 }
 
 TEST(BodiesWriter, WritesLmgc90EchoLayout) {

@@ -1,0 +1,62 @@
+#pragma once
+// The run parameters of lmgc-solve in one table: name (as LMGC90's command.py scripts name them),
+// flag, the COMMAND.DAT keyword and the chipy call that set them, and how a value is compared and
+// written. The layers apply in order (defaults, then COMMAND.DAT, then flags); each parameter
+// remembers which layer gave its value, and OUTBOX/run_parameters.csv records it with the run.
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "grammar/command_py/script.hpp"
+#include "solver/driver/run_options.hpp"
+
+namespace lmgc::solver {
+
+enum class ParameterSource { default_value, command_dat, flag };
+std::string_view source_name(ParameterSource source);  // "default", "COMMAND.DAT", "flag"
+
+struct RunParameter {
+  std::string_view name;         // "dt"
+  std::string_view flag;         // "--dt"
+  std::string_view command_dat;  // the COMMAND.DAT keyword that sets it ("" when none does)
+  std::string_view chipy;        // the chipy call of a command.py that sets it ("" when none does)
+  // Which argument of that call (position, or keyword), or -1 when the call's presence sets it.
+  int argument = -1;
+  std::string_view keyword;
+  // The value of the run, as written in the report and compared with a script's literal.
+  std::string (*text)(const RunOptions&);
+  std::optional<double> (*number)(const RunOptions&);
+  // The value of the chipy call's argument when the call is made without it (write and display
+  // frequencies: every step), if any.
+  std::optional<double> call_default = std::nullopt;
+};
+
+std::span<const RunParameter> run_parameters();
+const RunParameter* find_run_parameter(std::string_view name);
+
+// Which layer gave each parameter (by name): the default unless COMMAND.DAT or a flag set it.
+using ParameterSources = std::map<std::string, ParameterSource, std::less<>>;
+
+// A run parameter whose value differs from what the case's command.py assigns.
+struct ScriptDifference {
+  const RunParameter* parameter = nullptr;
+  std::string run_value;
+  std::string script_value;  // the literal the script passes
+  std::uint32_t line = 0;    // of the call in command.py
+  std::uint16_t column = 0;
+};
+
+// The parameters the script sets by a literal (or a name bound to one) that differ from the run's.
+// A parameter the script sets by a computed value, or under a condition, is compared only when its
+// literal resolves (the condition is that of LMGC90's default run: 'if "--norand" not in sys.argv'
+// holds); the step count comes from the time loop's range().
+std::vector<ScriptDifference> script_differences(const RunOptions& options,
+                                                 const grammar::CommandScript& script);
+
+// OUTBOX/run_parameters.csv: name,value,source,flag,command_dat,chipy.
+std::string run_parameters_csv(const RunOptions& options, const ParameterSources& sources);
+
+}  // namespace lmgc::solver
