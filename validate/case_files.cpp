@@ -33,9 +33,11 @@ using grammar::DiagnosticSink;
 using grammar::SourceText;
 
 // Which files a case must have. The thermal examples of LMGC90 run without TACT_BEHAV.DAT and
-// Vloc_Rloc.INI (no contactor, so no interaction to read), so those two are needed only when a
-// body carries contactors; Vloc_Rloc.INI is then still optional (no interaction at start).
-enum class Requirement { always, with_mailx, with_contactors, optional };
+// Vloc_Rloc.INI (no contactor, so no interaction to read), so TACT_BEHAV.DAT is needed only when a
+// body carries contactors. ReadDatbox reads Vloc_Rloc.INI whenever TACT_BEHAV.DAT defines a law
+// (macro.py, tact_behav_GetNbTactBehav() > 0), and LMGC90 stops when it is missing ('keyword
+// steps not found': Fortran creates the file empty): required then, even with no interaction.
+enum class Requirement { always, with_mailx, with_contactors, with_laws, optional };
 
 // The DATBOX files LMGC90 reads (ChiPy ReadDatbox, the legacy COMMAND.DAT driver, and
 // PTPT3_LoadNetwork's PTPT3_NETWORK.DAT).
@@ -65,7 +67,7 @@ constexpr DatboxFileKind kDatboxFiles[] = {
      [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.drv_dof = grammar::parse_drv_dof(s, d); }},
     {"DOF.INI", Requirement::always,
      [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) { c.dof_ini = grammar::parse_dof(s, d); }},
-    {"Vloc_Rloc.INI", Requirement::optional,
+    {"Vloc_Rloc.INI", Requirement::with_laws,
      [](CaseFiles& c, const SourceText& s, DiagnosticSink& d) {
        c.vloc_rloc_ini = grammar::parse_vloc_rloc(s, d);
      }},
@@ -87,6 +89,10 @@ bool has_contactors(const CaseFiles& c) {
   for (const auto& b : c.bodies->bodies)
     if (!b.contactors.empty()) return true;
   return false;
+}
+
+bool has_laws(const CaseFiles& c) {
+  return c.tact_behav && !c.tact_behav->laws.empty();
 }
 
 bool has_mailx(const CaseFiles& c) {
@@ -143,10 +149,14 @@ std::optional<CaseFiles> load_case(const fs::path& case_dir, DiagnosticSink& sin
     if (missing) {
       const bool required = kind.requirement == Requirement::always ||
                             (kind.requirement == Requirement::with_mailx && has_mailx(files)) ||
-                            (kind.requirement == Requirement::with_contactors && has_contactors(files));
+                            (kind.requirement == Requirement::with_contactors && has_contactors(files)) ||
+                            (kind.requirement == Requirement::with_laws && has_laws(files));
       const char* which = kind.requirement == Requirement::with_mailx        ? " with MAILx bodies"
                           : kind.requirement == Requirement::with_contactors ? " with contactors"
-                                                                             : "";
+                          : kind.requirement == Requirement::with_laws
+                              ? " whose TACT_BEHAV.DAT defines a law, and stops without it (write one with "
+                                "its '$steps' header and no interaction)"
+                              : "";
       if (required)
         sink.report("L9001", grammar::Location{path.string(), {}},
                     "'" + name + "' is missing; LMGC90 reads it for every case" + which);
@@ -174,6 +184,18 @@ std::optional<CaseFiles> load_case(const fs::path& case_dir, DiagnosticSink& sin
           }
           if (source) files.evolutions.emplace(name, grammar::parse_evolution(*source, sink));
         }
+  }
+
+  // lmgc's exact restart state (known: never "not read by LMGC90").
+  {
+    const fs::path path = datbox / "EXACT_STATE.INI";
+    grammar::InputFile input = grammar::read_input_file(path);
+    known.insert("EXACT_STATE.INI");
+    if (input.status == grammar::InputFileStatus::refused)
+      sink.report("L9001", grammar::Location{path.string(), {}},
+                  "cannot read '" + path.string() + "': " + input.error);
+    else if (input.status == grammar::InputFileStatus::read)
+      files.exact_state = std::move(input.text);
   }
 
   // The Python driver beside DATBOX/.

@@ -42,6 +42,9 @@ struct CaseFiles {
   std::optional<grammar::CommandFile> command;
   // Read when present; a run uses it when asked (lmgc-solve --ptpt3-network, PTPT3_LoadNetwork).
   std::optional<grammar::Ptpt3NetworkFile> ptpt3_network;
+  // DATBOX/EXACT_STATE.INI: lmgc's full-precision restart state (a copy of a run's
+  // OUTBOX/EXACT_STATE.LAST), not an LMGC90 file; its bytes.
+  std::optional<std::string> exact_state;
   // CASE_DIR/command.py, the script LMGC90 runs (read, never run: its literals and chipy calls).
   std::optional<grammar::CommandScript> command_script;
   // Evolution files named by DRV_DOF.DAT, by file name.

@@ -4,8 +4,11 @@
 // (Vloc_Rloc.INI, GPV.INI), §8 (POSTPRO.DAT); PTPT3_NETWORK.DAT: grammar/ptpt3_network/ast.hpp.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <optional>
 
+#include "grammar/command/expand.hpp"
+#include "grammar/common/exact_state_header.hpp"
 #include "grammar/vloc_rloc/interaction_catalogue.hpp"
 #include "validate/case_index.hpp"
 #include "validate/checks.hpp"
@@ -75,7 +78,77 @@ class ArgumentCursor {
 
 }  // namespace
 
+namespace {
+
+// The run's time step as lmgc-check can know it: COMMAND.DAT's, else the script's literal, else
+// lmgc-solve's default.
+double expected_time_step(const CaseFiles& files) {
+  if (files.command) {
+    grammar::DiagnosticSink scratch(static_cast<std::size_t>(-1));
+    const grammar::CommandRunParameters p = grammar::command_run_parameters(*files.command, scratch);
+    if (p.lines.count("dt") && p.dt > 0.0) return p.dt;
+  }
+  if (files.command_script)
+    for (const grammar::ScriptCall* call : files.command_script->calls_to("TimeEvolution_SetTimeStep"))
+      if (!call->arguments.empty() && call->arguments[0].value.number &&
+          *call->arguments[0].value.number > 0.0)
+        return *call->arguments[0].value.number;
+  return 1e-3;
+}
+
+}  // namespace
+
+// A restart reads the step and time of DOF.INI; LMGC90 stops when Vloc_Rloc.INI was written at
+// another step or a time more than 1e-3 time steps away (Read_in_Vloc_Rloc), and when GPV.INI's
+// differ at all (Read_in_gpv): L1020 on the other file's '$steps' line.
+void check_state_headers(const CaseFiles& files, grammar::DiagnosticSink& sink) {
+  if (!files.dof_ini) return;
+  const grammar::DofFile& dof = *files.dof_ini;
+  const auto mismatch = [&](const char* name, const grammar::Integer& step, const grammar::Real& time,
+                            double time_tolerance) {
+    if (step.value == dof.step.value && std::abs(time.value - dof.time.value) <= time_tolerance) return;
+    grammar::Diagnostic d;
+    d.code = "L1020";
+    d.severity = grammar::Severity::error;
+    d.where = grammar::Location{datbox_path(files, name), step.span};
+    d.message = std::string(name) + " was written at step " + std::to_string(step.value) + ", time " +
+                fmt::format("{}", time.value) + "; DOF.INI at step " + std::to_string(dof.step.value) +
+                ", time " + fmt::format("{}", dof.time.value) + ": LMGC90 stops on such a restart";
+    d.related.push_back(
+        {grammar::Location{datbox_path(files, "DOF.INI"), dof.step.span}, "DOF.INI's step and time"});
+    d.hint = "copy DOF.LAST and Vloc_Rloc.LAST (and GPV.LAST) of the same run together";
+    sink.report(std::move(d));
+  };
+  if (files.vloc_rloc_ini)
+    mismatch("Vloc_Rloc.INI", files.vloc_rloc_ini->step, files.vloc_rloc_ini->time,
+             1e-3 * expected_time_step(files));
+  if (files.gpv_ini) mismatch("GPV.INI", files.gpv_ini->step, files.gpv_ini->time, 0.0);
+  // lmgc's exact state: the run it continues must be the one DOF.INI comes from (its time printed
+  // with 7 digits).
+  if (files.exact_state) {
+    const std::string path = datbox_path(files, "EXACT_STATE.INI");
+    const auto header = grammar::read_exact_state_header(*files.exact_state);
+    if (!header) {
+      sink.report(
+          "L1012", grammar::Location{path, {}},
+          "EXACT_STATE.INI does not start with lmgc's exact-state line: not a copy of EXACT_STATE.LAST");
+    } else if (header->step != dof.step.value ||
+               std::abs(header->time - dof.time.value) > 1e-6 * std::abs(header->time) + 1e-300) {
+      grammar::Diagnostic d;
+      d.code = "L1020";
+      d.severity = grammar::Severity::error;
+      d.where = grammar::Location{path, grammar::SourceSpan{1, 1, 2}};
+      d.message = "EXACT_STATE.INI was written at step " + std::to_string(header->step) + ", time " +
+                  fmt::format("{}", header->time) + "; DOF.INI at step " + std::to_string(dof.step.value) +
+                  ", time " + fmt::format("{}", dof.time.value);
+      d.hint = "copy EXACT_STATE.LAST with the DOF.LAST of the same run, or remove it";
+      sink.report(std::move(d));
+    }
+  }
+}
+
 void check_state_references(const CaseFiles& files, grammar::DiagnosticSink& sink) {
+  check_state_headers(files, sink);
   if (!files.bodies) return;
   const BodyIndex index(*files.bodies);
   const std::string bodies_path = datbox_path(files, "BODIES.DAT");

@@ -88,6 +88,11 @@ bool prepare_run_2d(const validate::CaseFiles& files, Scene2D& scene, RunOutputs
   if (!build_scene_2d(input, scene, sink)) return false;
 
   outputs.case_dir = files.case_dir;
+  if (files.dof_ini) {
+    outputs.initial_step = files.dof_ini->step.value;
+    outputs.initial_time = files.dof_ini->time.value;
+  }
+  if (files.exact_state) outputs.exact_state = &*files.exact_state;
   outputs.postpro = postpro_commands_2d(files, sink);
   if (files.vloc_rloc_ini) outputs.warm_start = &*files.vloc_rloc_ini;
   return true;
@@ -111,6 +116,11 @@ bool prepare_run_3d(const validate::CaseFiles& files, Scene3D& scene, RunOutputs
   bool ok = build_scene_3d(input, scene, sink);
   if (!ok) return false;
   outputs.case_dir = files.case_dir;
+  if (files.dof_ini) {
+    outputs.initial_step = files.dof_ini->step.value;
+    outputs.initial_time = files.dof_ini->time.value;
+  }
+  if (files.exact_state) outputs.exact_state = &*files.exact_state;
   outputs.postpro = postpro_commands_2d(files, sink, /*three_d=*/true);
   if (files.vloc_rloc_ini) outputs.warm_start = &*files.vloc_rloc_ini;
   if (files.ptpt3_network) outputs.ptpt3_network = &*files.ptpt3_network;

@@ -6,6 +6,7 @@
 #include "grammar/dof/writer.hpp"
 #include "grammar/vloc_rloc/writer.hpp"
 #include "solver/io/display_2d.hpp"
+#include "solver/io/exact_state.hpp"
 #include "solver/io/state_files_2d.hpp"
 
 namespace lmgc::solver {
@@ -42,6 +43,8 @@ RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D&
     }
 
   RunState2D state;
+  state.step = outputs.initial_step;
+  state.time = outputs.initial_time;
   state.h = options.dt;
   state.theta = options.theta;
   state.scramble = QuickScramble(options.nlgs.scramble_seed);
@@ -52,6 +55,11 @@ RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D&
   }
 
   RunSummary summary;
+  if (outputs.exact_state && !restore_exact_state(*outputs.exact_state, scene, state, summary.error)) {
+    summary.error = "DATBOX/EXACT_STATE.INI: " + summary.error;
+    summary.failure = RunFailure::data;
+    return summary;
+  }
   Postpro2D postpro;
   if (!outputs.postpro.empty() &&
       !postpro.open(outputs.case_dir / "POSTPRO", outputs.postpro, summary.error)) {
@@ -67,6 +75,7 @@ RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D&
       [](const Scene2D& s, const RunState2D& st) {
         return grammar::write_vloc_rloc(vloc_rloc_file_2d(s, st));
       },
+      [](const Scene2D& s, const RunState2D& st) { return write_exact_state(s, st); },
   };
   return run_loop(scene, state, options, outputs.case_dir, postpro, !outputs.postpro.empty(), display,
                   dimension);

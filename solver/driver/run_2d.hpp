@@ -18,6 +18,13 @@
 namespace lmgc::solver {
 
 struct RunOutputs2D {
+  // The step and time of DOF.INI's header: a run continues from them (Read_in_dof_Ol sets Nstep and
+  // TPS; drivers, write periods and headers use those absolute values).
+  long initial_step = 0;
+  double initial_time = 0.0;
+  // DATBOX/EXACT_STATE.INI, when present: the full-precision state that replaces DOF.INI's and
+  // Vloc_Rloc.INI's 7 digits (solver/io/exact_state.hpp).
+  const std::string* exact_state = nullptr;
   std::filesystem::path case_dir;         // OUTBOX/, DISPLAY/, POSTPRO/ are created here
   std::vector<PostproCommand2D> postpro;  // from POSTPRO.DAT
   // Vloc_Rloc.INI: the interactions of the step before the first one (warm start), if any.

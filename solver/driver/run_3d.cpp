@@ -7,6 +7,7 @@
 #include "grammar/vloc_rloc/writer.hpp"
 #include "solver/detection/point_contact.hpp"
 #include "solver/io/display_3d.hpp"
+#include "solver/io/exact_state.hpp"
 #include "solver/io/state_files_3d.hpp"
 
 namespace lmgc::solver {
@@ -65,6 +66,8 @@ RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D&
     }
 
   RunState3D state;
+  state.step = outputs.initial_step;
+  state.time = outputs.initial_time;
   state.h = options.dt;
   state.theta = options.theta;
   state.scramble = QuickScramble(options.nlgs.scramble_seed);
@@ -73,6 +76,11 @@ RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D&
     store_interactions(state, warm.interactions, warm.law_states);
   }
 
+  if (outputs.exact_state && !restore_exact_state(*outputs.exact_state, scene, state, summary.error)) {
+    summary.error = "DATBOX/EXACT_STATE.INI: " + summary.error;
+    summary.failure = RunFailure::data;
+    return summary;
+  }
   Postpro3D postpro;
   if (!outputs.postpro.empty() &&
       !postpro.open(outputs.case_dir / "POSTPRO", outputs.postpro, summary.error)) {
@@ -88,6 +96,7 @@ RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D&
       [](const Scene3D& s, const RunState3D& st) {
         return grammar::write_vloc_rloc(vloc_rloc_file_3d(s, st));
       },
+      [](const Scene3D& s, const RunState3D& st) { return write_exact_state(s, st); },
   };
   return run_loop(scene, state, options, outputs.case_dir, postpro, !outputs.postpro.empty(), display,
                   dimension);

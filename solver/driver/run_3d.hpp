@@ -14,6 +14,13 @@
 namespace lmgc::solver {
 
 struct RunOutputs3D {
+  // The step and time of DOF.INI's header: a run continues from them (Read_in_dof_Ol sets Nstep and
+  // TPS; drivers, write periods and headers use those absolute values).
+  long initial_step = 0;
+  double initial_time = 0.0;
+  // DATBOX/EXACT_STATE.INI, when present: the full-precision state that replaces DOF.INI's and
+  // Vloc_Rloc.INI's 7 digits (solver/io/exact_state.hpp).
+  const std::string* exact_state = nullptr;
   std::filesystem::path case_dir;                            // OUTBOX/ and POSTPRO/ are created here
   std::vector<PostproCommand2D> postpro;                     // from POSTPRO.DAT (those Postpro3D provides)
   const grammar::VlocRlocFile* warm_start = nullptr;         // Vloc_Rloc.INI

@@ -28,6 +28,7 @@ struct RunDimension {
   std::string (*non_finite)(const Scene&, const State&);
   std::string (*dof_text)(const Scene&, const State&);
   std::string (*vloc_rloc_text)(const Scene&, const State&);
+  std::string (*exact_state)(const Scene&, const State&);  // EXACT_STATE.LAST (solver/io/exact_state.hpp)
 };
 
 template <class Scene, class State, class Postpro, class Display>
@@ -48,7 +49,9 @@ RunSummary run_loop(Scene& scene, State& state, const RunOptions& options,
     const bool ok =
         grammar::write_file_whole(outbox / ("DOF." + suffix), dimension.dof_text(scene, state), error) &&
         grammar::write_file_whole(outbox / ("Vloc_Rloc." + suffix), dimension.vloc_rloc_text(scene, state),
-                                  error);
+                                  error) &&
+        (suffix != "LAST" ||
+         grammar::write_file_whole(outbox / "EXACT_STATE.LAST", dimension.exact_state(scene, state), error));
     if (!ok) summary.fail(RunFailure::output, error);
     return ok;
   };

@@ -28,7 +28,10 @@ struct alignas(64) Interaction2D {
   ContactStatus status_begin = ContactStatus::nknow;
   // Cohesive zone laws: impulse r_coh = (shift_t, 0) + diag(slope) · uu, uu the auxiliary velocity.
   bool cohesive = false;
-  bool inactive = false;       // forecast inactive ("noact"): r = 0, skipped by the sweeps
+  bool inactive = false;  // forecast inactive ("noact"): r = 0, skipped by the sweeps
+  // Zeros where the compiler would leave padding: the exact restart state copies records byte for
+  // byte, and two runs' files must compare equal.
+  std::array<std::uint8_t, 3> unused{};
   std::int32_t candidate = 0;  // contactor ids (Scene2D::contactors)
   std::int32_t antagonist = 0;
   std::int32_t candidate_vertex = 0;  // PLPLx/PLJCx: vertex of the candidate polygon (1-based, 0 none)
@@ -51,9 +54,10 @@ struct alignas(64) Interaction2D {
   Eigen::Vector2d lever_antagonist = Eigen::Vector2d::Zero();
   Eigen::Vector2d velocity_begin = Eigen::Vector2d::Zero();  // local (t, n) relative velocity at t_begin
   Eigen::Vector2d u = Eigen::Vector2d::Zero();
-  std::int32_t antagonist_segment = 0;  // PLPLx: segment of the antagonist polygon
-  std::int32_t visibility = 0;          // index into Scene2D::visibility
-  std::int32_t periodic_shift = 0;      // antagonist shifted by this many periods in x
+  std::int32_t antagonist_segment = 0;       // PLPLx: segment of the antagonist polygon
+  std::int32_t visibility = 0;               // index into Scene2D::visibility
+  std::int32_t periodic_shift = 0;           // antagonist shifted by this many periods in x
+  std::array<std::uint8_t, 4> unused_end{};  // the last of the record's 192 bytes (zeros, as above)
 
   // The tangent (n_y, -n_x): computed, not kept (16 bytes of every record of every pass).
   Eigen::Vector2d tangent() const { return Eigen::Vector2d(normal.y(), -normal.x()); }

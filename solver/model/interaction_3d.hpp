@@ -170,6 +170,9 @@ struct DetectedPoint3D {
 struct StoredInteraction3D {
   PairFamily3D family = PairFamily3D::SPSPx;
   ContactStatus status = ContactStatus::nknow;
+  // Written as zeros where the compiler would leave padding: the exact restart state copies records
+  // byte for byte, and two runs' files must compare equal.
+  std::array<std::uint8_t, 2> unused{};
   std::int32_t candidate = 0, antagonist = 0, vertex = 0;  // the key
   Eigen::Vector3d r = Eigen::Vector3d::Zero();
   Eigen::Vector3d candidate_point = Eigen::Vector3d::Zero();  // PRPRx points of a pair match by place
@@ -188,5 +191,8 @@ struct StoredInteraction3D {
     if (law_state) internal = law_state->internal;
   }
 };
+
+static_assert(sizeof(StoredInteraction3D) == 112,
+              "StoredInteraction3D has padding the exact state would copy");
 
 }  // namespace lmgc::solver

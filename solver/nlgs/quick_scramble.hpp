@@ -11,6 +11,8 @@
 // orders. Here the generator is seeded (--scramble-seed) and its stream continues from step to step:
 // a run repeats exactly, and other seeds show how much a case depends on the order.
 #include <cstdint>
+#include <istream>
+#include <ostream>
 #include <random>
 #include <stdexcept>
 #include <utility>
@@ -40,6 +42,20 @@ class QuickScramble {
 
   // quick_scramble_nlgs: swaps entry i of `order` with entry l_i, i = 0..n-1, in place. `order` must
   // have the n entries of the last prepare(n).
+  // The generator's state and the last list, as text (the exact restart state).
+  friend std::ostream& operator<<(std::ostream& out, const QuickScramble& s) {
+    out << s.random_ << ' ' << s.random_list_.size();
+    for (std::size_t l : s.random_list_) out << ' ' << l;
+    return out;
+  }
+  friend std::istream& operator>>(std::istream& in, QuickScramble& s) {
+    std::size_t n = 0;
+    in >> s.random_ >> n;
+    s.random_list_.clear();
+    for (std::size_t k = 0, l = 0; k < n && in >> l; ++k) s.random_list_.push_back(l);  // as many as written
+    return in;
+  }
+
   template <typename Index>
   void scramble(std::vector<Index>& order) const {
     if (order.size() != random_list_.size())

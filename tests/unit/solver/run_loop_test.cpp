@@ -49,6 +49,7 @@ const RunDimension<ToyScene, ToyState> kToy{
       return "step " + std::to_string(st.step) + " x " + std::to_string(s.x) + "\n";
     },
     [](const ToyScene&, const ToyState&) { return std::string("no interaction\n"); },
+    [](const ToyScene& s, const ToyState&) { return std::to_string(s.x); },
 };
 
 RunSummary run_toy(ToyScene& scene, long steps, const fs::path& dir) {

@@ -501,6 +501,10 @@ std::vector<Fixture> fixtures() {
   };
 }
 
+// Vloc_Rloc.INI at DOF.INI's step and time, with no interaction.
+const std::string kNoInteraction =
+    "! Vloc_Rloc\n$steps        0              time= 0.1000000D+01\n" + kDashes;
+
 // A scratch case folder holding the bases above, without `without` (a path in the case folder;
 // nothing when empty). Built from the bases, not copied from reference_cases/, so that the
 // fixtures do not change when the default case does.
@@ -511,7 +515,8 @@ fs::path write_case(const std::string& name, const std::string& without) {
                                                               {"BULK_BEHAV.DAT", &kBulkBehav},
                                                               {"TACT_BEHAV.DAT", &kTactBehav},
                                                               {"DRV_DOF.DAT", &kDrvDof},
-                                                              {"DOF.INI", &kDof}};
+                                                              {"DOF.INI", &kDof},
+                                                              {"Vloc_Rloc.INI", &kNoInteraction}};
   for (const auto& [file, text] : files) std::ofstream(dir / "DATBOX" / file, std::ios::binary) << *text;
   if (!without.empty()) fs::remove_all(dir / without);
   return dir;

@@ -173,6 +173,7 @@ fs::path write_base(Base base, const std::string& name) {
     put("TACT_BEHAV.DAT", kMailxTact);
     put("DRV_DOF.DAT", kMailxDrv);
     put("DOF.INI", kDofHeader);
+    put("Vloc_Rloc.INI", kVlocHeader);
     put("GPV.INI", kGpvHeader);
     put("POSTPRO.DAT", kMailxPostpro);
   }
@@ -395,6 +396,12 @@ std::vector<Row> rows() {
     {"ThetaBelowOneHalf", disk, {{"COMMAND.DAT", "0.5D0 ", "0.3D0 "}}, "COMMAND.DAT", "L4010", error, 7, 1},
     {"RelaxationAboveTwo", disk, {{"COMMAND.DAT", "    1.0D0                     : RELAX", "    5.0D0                     : RELAX"}}, "COMMAND.DAT", "L4010", error, 44, 1},
     {"ThermalBulkLawRunAsRigid", disk, {}, "BULK_BEHAV.DAT", "L4012", note, 5, 9, [](validate::CaseFiles& files) { files.bulk_behav->laws.front().law_type.value = "THERMO_RIGID"; }},
+
+    // ---- restarts: the state files of one run, at one step
+    {"VlocRlocOfAnotherStep", disk, {{"Vloc_Rloc.INI", "", edit_text(kVlocHeader, "$steps      0                time= 0.0000000D+00", "$steps     20                time= 0.2000000D-01")}}, "Vloc_Rloc.INI", "L1020", error, 2, 9},
+    {"GaussPointsOfAnotherStep", mailx, {{"GPV.INI", "", edit_text(kGpvHeader, "$steps      0", "$steps      1")}}, "GPV.INI", "L1020", error, 2, 9},
+    {"ExactStateOfAnotherStep", disk, {{"EXACT_STATE.INI", "", "lmgc exact state 1 dimension 2 step 20 time 0x1.47ae147ae147bp-6 bodies 2\n"}}, "EXACT_STATE.INI", "L1020", error, 1, 1},
+    {"ExactStateNotWrittenByLmgc", disk, {{"EXACT_STATE.INI", "", "a note\n"}}, "EXACT_STATE.INI", "L1012", error, 0, 0},
 
     // ---- case loading (validate/case_files.cpp)
     {"FileNotReadByLmgc90", disk, {{"NOTES.TXT", "", "a note\n"}}, "NOTES.TXT", "L1021", note, 0, 0},
