@@ -74,7 +74,11 @@ int main(int argc, char** argv) {
 
   // Echo files are written only from a case that read without error, and never into DATBOX/.
   if (files && echo && !sink.has_errors()) {
-    for (const auto& output : lmgc::validate::echo_files(*files)) {
+    // As lmgc-solve writes them: BODIES.OUT after LMGC90's rigid pre-computations (avrd, gyrd,
+    // centre and frame of inertia).
+    const bool three_d = lmgc::solver::is_rigid_3d_case(*files);
+    for (const auto& output :
+         three_d ? lmgc::solver::echo_files_3d(*files) : lmgc::solver::echo_files_2d(*files)) {
       std::string error;
       if (!lmgc::grammar::write_file_whole(std::filesystem::path(case_dir) / output.relative_path,
                                            output.content, error))

@@ -236,13 +236,43 @@ std::optional<CaseFiles> load_case(const fs::path& case_dir, DiagnosticSink& sin
   return files;
 }
 
+namespace {
+
+// What the run's modules are, from BODIES.DAT and MODELS.DAT: LMGC90 writes each module's part of
+// DRV_DOF.OUT (its closing dashed line too) when the module has bodies, driven or not, and a MAILx
+// node's type from the mesh's dimension.
+grammar::DrvDofEchoSetup drv_dof_echo_setup(const CaseFiles& c) {
+  grammar::DrvDofEchoSetup setup = grammar::drv_dof_echo_setup_of(*c.drv_dof);
+  if (!c.bodies) return setup;
+  setup.dimension = grammar::bodies_dimension(*c.bodies);
+  for (const grammar::Body& body : c.bodies->bodies) {
+    if (body.type != grammar::BodyType::mailx) continue;
+    setup.node_type_from_mesh = true;
+    if (!c.models) continue;
+    for (const grammar::Element& element : body.elements)
+      for (const grammar::ModelReference& reference : element.models)
+        for (const grammar::Model& model : c.models->models)
+          if (model.nickname.value == reference.model.value) {
+            setup.meca_mailx |= model.kind.value == "MECAx";
+            setup.ther_mailx |= model.kind.value == "THERM";
+            setup.poro_mailx |= model.kind.value == "POROx";
+          }
+  }
+  return setup;
+}
+
+}  // namespace
+
 std::vector<OutputFile> echo_files(const CaseFiles& c) {
   std::vector<OutputFile> out;
   if (c.bodies) out.push_back({"OUTBOX/BODIES.OUT", grammar::write_bodies(*c.bodies)});
   if (c.bulk_behav) out.push_back({"OUTBOX/BULK_BEHAV.OUT", grammar::write_bulk_behav(*c.bulk_behav)});
-  if (c.tact_behav) out.push_back({"OUTBOX/TACT_BEHAV.OUT", grammar::write_tact_behav(*c.tact_behav)});
+  // LMGC90 writes TACT_BEHAV.OUT even without TACT_BEHAV.DAT (its comment block, no law).
+  out.push_back({"OUTBOX/TACT_BEHAV.OUT",
+                 grammar::write_tact_behav(c.tact_behav ? *c.tact_behav : grammar::TactBehavFile{})});
   if (c.models) out.push_back({"OUTBOX/MODELS.OUT", grammar::write_models(*c.models)});
-  if (c.drv_dof) out.push_back({"OUTBOX/DRV_DOF.OUT", grammar::write_drv_dof(*c.drv_dof)});
+  if (c.drv_dof)
+    out.push_back({"OUTBOX/DRV_DOF.OUT", grammar::write_drv_dof(*c.drv_dof, drv_dof_echo_setup(c))});
   // LMGC90 rewrites each evolution file into OUTBOX/ (datbox-inputs.md §5).
   for (const auto& [name, evolution] : c.evolutions)
     out.push_back({fs::path("OUTBOX") / name, grammar::write_evolution(evolution)});

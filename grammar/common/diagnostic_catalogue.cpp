@@ -83,6 +83,10 @@ constexpr std::array kCatalogue = {
                    "A label of a DOF.INI node line ('X(1)=', 'V(2)=', ...) is not the one LMGC90 writes "
                    "there. LMGC90 reads the values by their columns and never reads the labels, so the "
                    "value is taken; a damaged label often means a damaged line: check its columns."},
+    DiagnosticKind{"L1023", warning, "node type ignored by LMGC90",
+                   "The node line of a rigid body's block in DRV_DOF.DAT names another node type than the "
+                   "body's (NO3xx for RBDY2, NO6xx for RBDY3). LMGC90 checks only that it is a node type and "
+                   "drives the dofs of the body's own node; lmgc does the same and echoes the body's type."},
     // L2xxx — cross references between files.
     DiagnosticKind{"L2001", error, "unknown bulk behaviour",
                    "A body names a bulk behaviour ('behav' of its PLAIN or model line) that "

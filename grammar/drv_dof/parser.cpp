@@ -191,10 +191,15 @@ class DrvDofParser {
       reader_.report("L1001", node_line, 2, 6, "unknown node type '" + node.node_type.value + "'",
                      "node types are NO1xx ... NO6xx in columns 2-6");
     } else if (rigid) {
+      // LMGC90 checks only that the name is a node type, keeps it nowhere, and bounds the dofs by the
+      // body's own node (read_driven_dof of mod_RBDY2 / mod_RBDY3): NO3xx for RBDY2, NO6xx for RBDY3.
       const std::string expected = body.body_type.value == "RBDY2" ? "NO3xx" : "NO6xx";
       if (node.node_type.value != expected)
-        reader_.report("L1017", node_line, 2, 6,
-                       body.body_type.value + " node must be " + expected + ", not " + node.node_type.value);
+        reader_.report("L1023", node_line, 2, 6,
+                       "LMGC90 ignores this node type: the dofs of an " + body.body_type.value +
+                           " body are those of its " + expected + " node (1.." +
+                           std::to_string(node_dof_count(expected)) + ")");
+      dof_count = node_dof_count(expected);
     }
     if (body.model.value == "THERM") dof_count = 1;  // one temperature per node
     if (body.model.value == "POROx") dof_count = 0;  // dof set not in the spec: no bound check

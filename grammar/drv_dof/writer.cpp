@@ -97,8 +97,9 @@ void write_rigid_section(std::string& out, const DrvDofFile& file, bool rbdy3) {
       out += type;
       if (!rbdy3) append_blanks(out, 2);
       append_fortran_i(out, rank, 7);
+      // The body's own node type, whatever the DAT's node line says (LMGC90 ignores it there).
       out += "\n$nodty\n ";
-      append_fortran_a(out, node.type, 5);
+      out += rbdy3 ? "NO6xx" : "NO3xx";
       if (rbdy3) {
         append_fortran_i(out, number, 7);
       } else {

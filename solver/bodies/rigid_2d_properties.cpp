@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "solver/bodies/lmgc_pi.hpp"
+
 namespace lmgc::solver {
 namespace {
 
@@ -19,20 +21,20 @@ ContactorInertia2D contactor_inertia_2d(const grammar::Contactor& c) {
   const std::string& type = c.type.value;
   if (type == "DISKx" || type == "DISKb") {
     const double r = value_at(c.values, 0);
-    k.area = M_PI * r * r;
+    k.area = lmgc_pi * r * r;
     k.radius = r;
     k.gyration_radius = r / std::sqrt(2.0);
     if (type == "DISKb") k.shift = Vector2d(value_at(c.values, 1), value_at(c.values, 2));
   } else if (type == "xKSID") {
     const double r = value_at(c.values, 0);
-    k.area = -M_PI * r * r;  // a hole: no mass
+    k.area = -lmgc_pi * r * r;  // a hole: no mass
   } else if (type == "JONCx") {
     // Stadium area; LMGC90's gyration formula (not the exact stadium inertia) reproduced as is.
     const double a1 = value_at(c.values, 0), a2 = value_at(c.values, 1);
-    k.area = 4.0 * a1 * a2 + M_PI * a2 * a2;
-    k.radius = std::sqrt(k.area / M_PI);
+    k.area = 4.0 * a1 * a2 + lmgc_pi * a2 * a2;
+    k.radius = std::sqrt(k.area / lmgc_pi);
     const double g2 =
-        (M_PI * a2 * a2 * (a1 * a1 + 0.5 * a2 * a2) + 2.0 * a1 * a2 * (a1 * a1 + a2 * a2)) / k.area;
+        (lmgc_pi * a2 * a2 * (a1 * a1 + 0.5 * a2 * a2) + 2.0 * a1 * a2 * (a1 * a1 + a2 * a2)) / k.area;
     k.gyration_radius = std::sqrt(g2);
   } else if (type == "POLYG") {
     const std::size_t n = c.vertices.size();
@@ -56,7 +58,7 @@ ContactorInertia2D contactor_inertia_2d(const grammar::Contactor& c) {
         const double cross = a.x() * b.y() - b.x() * a.y();
         second += (a.squaredNorm() + a.dot(b) + b.squaredNorm()) * cross;
       }
-      k.radius = std::sqrt(k.area / M_PI);
+      k.radius = std::sqrt(k.area / lmgc_pi);
       k.gyration_radius = std::sqrt(second / (12.0 * k.area));
       k.shift = centroid;
     }
@@ -140,11 +142,11 @@ void normalise_rigid_body_2d(grammar::Body& body) {
     if (compute_bulk) {
       double mass = 0.0, inertia = 0.0;
       for (const auto& p : parts) {
-        const double m = M_PI * p.radius * p.radius;
+        const double m = lmgc_pi * p.radius * p.radius;
         mass += m;
         inertia += m * p.gyration_radius * p.gyration_radius + m * p.shift.squaredNorm();
       }
-      bulk.avrd.value = std::sqrt(mass / M_PI);
+      bulk.avrd.value = std::sqrt(mass / lmgc_pi);
       bulk.gyrd.value = mass > 0.0 ? std::sqrt(inertia / mass) : 0.0;
     }
     for (std::size_t i = 0; i < parts.size(); ++i) {

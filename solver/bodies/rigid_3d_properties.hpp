@@ -49,11 +49,9 @@
 #include <string>
 #include <vector>
 
-namespace lmgc::solver {
+#include "solver/bodies/lmgc_pi.hpp"
 
-// LMGC90's PI_g: `real(kind=8), parameter :: PI_g = 3.14159265358979323846` has no `d0`, so the
-// literal is single precision (shared/mod_overall.f90:358).
-inline constexpr double lmgc_pi = static_cast<double>(3.14159265358979323846f);
+namespace lmgc::solver {
 
 // One contactor of an RBDY3 body, in the body's input axes, as read from BODIES.DAT.
 // type: "SPHER", "SPHEb", "PLANx", "PT3Dx"; any other type counts as a contactor (one vs several)

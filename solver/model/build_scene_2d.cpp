@@ -4,6 +4,7 @@
 
 #include "grammar/tact_behav/law_catalogue.hpp"
 #include "grammar/tact_behav/see_table.hpp"
+#include "solver/bodies/lmgc_pi.hpp"
 #include "solver/bodies/rigid_2d_properties.hpp"
 #include "solver/model/driven_dofs.hpp"
 #include "solver/model/scene_builder_2d.hpp"
@@ -57,7 +58,7 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
       ok = false;
     }
     const double rho = density == in.densities.end() ? 0.0 : density->second;
-    const double mass = rho * M_PI * bulk.avrd.value * bulk.avrd.value;
+    const double mass = rho * lmgc_pi * bulk.avrd.value * bulk.avrd.value;
     b.mass.push_back(mass);
     b.inertia.push_back(mass * bulk.gyrd.value * bulk.gyrd.value);
     b.avrd.push_back(bulk.avrd.value);

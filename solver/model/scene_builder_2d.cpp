@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "solver/bodies/lmgc_pi.hpp"
 #include "solver/detection/detection_2d.hpp"
 
 namespace lmgc::solver {
@@ -28,7 +29,7 @@ int SceneBuilder2D::add_body(double x, double y, double angle, double mass, doub
 }
 
 int SceneBuilder2D::add_disk(double x, double y, double radius, double density, const std::string& color) {
-  const double mass = density * M_PI * radius * radius;
+  const double mass = density * lmgc_pi * radius * radius;
   const int body = add_body(x, y, 0.0, mass, 0.5 * mass * radius * radius);
   scene_.bodies.avrd.back() = radius;
   Contactor2D c;
