@@ -161,12 +161,19 @@ void check_element(const Body& body, const grammar::Element& e, const std::strin
 
 }  // namespace
 
+// log10 of the largest ρ s^(d+2) a body may have (its inertia, before the other factors).
+constexpr double kInertiaLog10Limit = 290.0;
+
 void check_geometry(const CaseFiles& files, grammar::DiagnosticSink& sink) {
   if (!files.bodies) return;
   Reporter report{sink, datbox_path(files, "BODIES.DAT")};
   std::size_t rank[3] = {0, 0, 0};
   for (const Body& body : files.bodies->bodies) {
     const std::string owner = body_name(body, ++rank[static_cast<int>(body.type)]);
+    const int dimension = body.type == grammar::BodyType::rbdy3 ? 3 : 2;
+    double density = 0.0;
+    if (body.rigid_bulk && files.bulk_behav)
+      grammar::bulk_density(*files.bulk_behav, body.rigid_bulk->behav.value, density);
     for (const Contactor& c : body.contactors) {
       const std::string& type = c.type.value;
       // Sizes: radius, half lengths and heights must be positive.
@@ -177,11 +184,20 @@ void check_geometry(const CaseFiles& files, grammar::DiagnosticSink& sink) {
         const std::size_t count = type == "JONCx" || type == "CYLND" || type == "DNLYC" ? 2
                                   : type == "PLANx"                                     ? 3
                                                                                         : 1;
-        for (std::size_t k = 0; k < count && k < c.values.size(); ++k)
+        for (std::size_t k = 0; k < count && k < c.values.size(); ++k) {
           if (!(c.values[k].value > 0.0))
             report("L3001", c.values[k].span,
                    fmt::format("{} size of contactor {} of {} is {}; it must be > 0", type,
                                &c - body.contactors.data() + 1, owner, c.values[k].value));
+          // The body's moment of inertia grows as ρ s^(d+2): it must stay a double.
+          else if (density > 0.0 &&
+                   std::log10(density) + (dimension + 2) * std::log10(c.values[k].value) > kInertiaLog10Limit)
+            report("L1003", c.values[k].span,
+                   fmt::format(
+                       "{} size {} of contactor {} of {} with density {} gives a mass and inertia beyond "
+                       "double precision",
+                       type, c.values[k].value, &c - body.contactors.data() + 1, owner, density));
+        }
       }
       if (type == "POLYG") check_polygon(c, owner, report);
       if (type == "POLYR") check_polyhedron(c, owner, report);

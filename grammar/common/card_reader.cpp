@@ -1,6 +1,7 @@
 #include "grammar/common/card_reader.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -36,15 +37,26 @@ bool CardReader::check_records(Empty empty) {
   bool any = false;
   for (const Line& line : source_.lines()) {
     const std::string_view text = line.text;
-    // Eight bytes at a time: any byte with its high bit set is non-ASCII.
+    // Eight bytes at a time: a byte with its high bit set is non-ASCII, one below 0x20 a control
+    // character (NUL of a damaged or binary file, ...); tabs are the only ones let through.
     std::size_t start = 0;
     for (; start + 8 <= text.size(); start += 8) {
       std::uint64_t word;
       std::memcpy(&word, text.data() + start, 8);
-      if (word & 0x8080808080808080ull) break;
+      const std::uint64_t below_space = (word - 0x2020202020202020ull) & ~word & 0x8080808080808080ull;
+      if ((word & 0x8080808080808080ull) || below_space) break;
     }
     for (std::size_t i = start; i < text.size(); ++i) {
-      if (static_cast<unsigned char>(text[i]) > 127) {
+      const auto byte = static_cast<unsigned char>(text[i]);
+      if (byte < 0x20 && byte != '\t') {
+        const int col = static_cast<int>(i) + 1;
+        report("L1008", line, col, col,
+               (byte == 0 ? std::string("NUL byte") : "control character " + std::to_string(byte)) +
+                   " in column " + std::to_string(col) + ": a damaged or binary file",
+               "LMGC90 input files are plain ASCII text");
+        break;  // one report per line
+      }
+      if (byte > 127) {
         const int col = static_cast<int>(i) + 1;
         report(
             "L1008", line, col, col,
@@ -178,6 +190,15 @@ Real CardReader::real(const Line& line, int first, int last, int implied_decimal
   if (r.error == NumberError::out_of_range) {
     report("L1003", line, first, last,
            "'" + std::string(trim(field)) + "' is out of the range of a double precision real");
+    return Real{0.0, span(line, first, last)};
+  }
+  // No quantity of an LMGC90 case (lengths, densities, moduli, gravity, velocities, law parameters)
+  // comes near this; past it, the products a run forms (masses, inertias, stiffnesses) overflow.
+  if (std::abs(r.value) > kLargestMagnitude) {
+    report("L1003", line, first, last,
+           "'" + std::string(trim(field)) +
+               "' is beyond any physical magnitude (|x| > 1e100): the masses, "
+               "inertias and stiffnesses a run forms from it overflow");
     return Real{0.0, span(line, first, last)};
   }
   if (spill) check_spill(line, first, last);

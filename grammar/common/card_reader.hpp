@@ -12,6 +12,9 @@
 
 namespace lmgc::grammar {
 
+// The largest magnitude a real of a case file may have (L1003 above it).
+inline constexpr double kLargestMagnitude = 1e100;
+
 // Columns `first`..`last` (1-based, inclusive) of a record, blank where the line is shorter
 // and never past column 180 (LMGC90's record length).
 std::string_view columns(std::string_view line, int first, int last);

@@ -21,8 +21,10 @@ constexpr std::array kCatalogue = {
                    "bare signed exponent). Blanks inside the field are ignored; an all-blank field "
                    "reads as zero."},
     DiagnosticKind{"L1003", error, "number out of range",
-                   "The value does not fit: a real overflows double precision, or an integer does "
-                   "not fit its field or is outside the range the card allows."},
+                   "The value does not fit: a real overflows double precision or its magnitude exceeds "
+                   "1e100 (beyond any physical quantity: the masses, inertias and stiffnesses a run forms "
+                   "from it would overflow), or an integer does not fit its field or is outside the range "
+                   "the card allows."},
     DiagnosticKind{"L1004", error, "malformed integer",
                    "An integer field holds something other than an optional sign and digits."},
     DiagnosticKind{"L1005", error, "missing end of block",
@@ -36,8 +38,9 @@ constexpr std::array kCatalogue = {
                    "fixed-column input depends on the compiler; lmgc reads it as a blank. Replace "
                    "tabs by spaces."},
     DiagnosticKind{"L1008", error, "non-ASCII byte",
-                   "LMGC90 files are plain ASCII; a byte above 127 (often a UTF-8 character pasted "
-                   "from a document) is not allowed."},
+                   "LMGC90 files are plain ASCII text; a byte above 127 (often a UTF-8 character "
+                   "pasted from a document) or a control character other than a tab (a NUL of a damaged "
+                   "or binary file) is not allowed."},
     DiagnosticKind{"L1009", error, "empty file",
                    "The file holds no card at all (only blank or comment lines, or nothing)."},
     DiagnosticKind{"L1010", warning, "text beyond column 180",

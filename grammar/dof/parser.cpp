@@ -1,6 +1,7 @@
 #include "grammar/dof/parser.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -180,7 +181,10 @@ class DofParser {
 
   // Reads `count` values, 3 a line, the first line being `first` (already taken) or, when
   // `first` is null, the next significant lines. Continuation lines must not be keyword lines.
-  bool read_values(const Line* first, int count, std::vector<Real>& out, const std::string& what) {
+  // `label(i)` is the label LMGC90 writes before value i ("X(1)=", ...): LMGC90 reads by columns and
+  // never reads it, so a damaged one is a warning (L1022), the value still read.
+  bool read_values(const Line* first, int count, std::vector<Real>& out, const std::string& what,
+                   const std::function<std::string(int)>& label) {
     const Line* line = first;
     for (int done = 0; done < count;) {
       if (line == nullptr) {
@@ -199,8 +203,20 @@ class DofParser {
         index_ = at + 1;
         line = &lines_[at];
       }
-      for (int k = 0; k < 3 && done < count; ++k, ++done)
+      for (int k = 0; k < 3 && done < count; ++k, ++done) {
+        const int label_first = kValueColumns[k][0] - 5;
+        const std::string_view written = trim(columns(line->text, label_first, label_first + 4));
+        // Alternatives are separated by '|': LMGC90's older writers labelled the third axis 'c'.
+        const std::string expected = label(done);
+        const bool known = ("|" + expected + "|").find("|" + std::string(written) + "|") != std::string::npos;
+        if (!written.empty() && !known)
+          reader_.report("L1022", *line, label_first, label_first + 4,
+                         "label '" + std::string(written) + "' where LMGC90 writes '" +
+                             expected.substr(0, expected.find('|')) +
+                             "'; LMGC90 reads the value of columns " + std::to_string(kValueColumns[k][0]) +
+                             "-" + std::to_string(kValueColumns[k][1]) + " without reading the label");
         out.push_back(reader_.real(*line, kValueColumns[k][0], kValueColumns[k][1]));
+      }
       line = nullptr;
     }
     return true;
@@ -216,10 +232,17 @@ class DofParser {
       return false;
     }
     node.number = rigid ? reader_.integer(node_line, 9, 13) : reader_.integer(node_line, 7, 13);
-    if (model == "THERM") return read_values(&node_line, 1, node.x, "temperature");
-    if (!read_values(&node_line, count, node.x, "X")) return false;
-    if (!read_values(nullptr, count, node.v, "V")) return false;
-    if (rigid && count == 6) return read_values(nullptr, 9, node.frame, "a/b/g frame");
+    const auto indexed = [](char letter) {
+      return [letter](int i) { return std::string(1, letter) + "(" + std::to_string(i + 1) + ")="; };
+    };
+    if (model == "THERM") return read_values(&node_line, 1, node.x, "temperature", indexed('T'));
+    if (!read_values(&node_line, count, node.x, "X", indexed('X'))) return false;
+    if (!read_values(nullptr, count, node.v, "V", indexed('V'))) return false;
+    if (rigid && count == 6)
+      return read_values(nullptr, 9, node.frame, "a/b/g frame", [](int i) {
+        const std::string index = "(" + std::to_string(i % 3 + 1) + ")=";
+        return i < 6 ? std::string(1, "ab"[i / 3]) + index : "g" + index + "|c" + index;
+      });
     return true;
   }
 

@@ -1,6 +1,7 @@
 #include "grammar/drv_dof/parser.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -366,8 +367,8 @@ EvolutionFile parse_evolution(const SourceText& source, DiagnosticSink& sink) {
       }
       const Token& token = tokens[i];
       const auto result = read_list_directed_real(token.text);
-      if (!result || result->error != NumberError::none) {
-        const bool range = result && result->error == NumberError::out_of_range;
+      if (!result || result->error != NumberError::none || std::abs(result->value) > kLargestMagnitude) {
+        const bool range = result && result->error != NumberError::malformed;
         reader.report(range ? "L1003" : "L1002", line, token.first, token.last,
                       "'" + std::string(token.text) + "' is not a " + (range ? "representable " : "") +
                           "real number (evolution files hold only 't v' pairs, no comments)");

@@ -356,6 +356,7 @@ std::vector<Row> rows() {
     {"NegativeRadius", disk, {{"BODIES.DAT", "byrd= 0.1000000D+00", "byrd=-0.1000000D+00"}}, "BODIES.DAT", "L3001", error, 9, 35},
     {"ZeroWallThickness", disk, {{"BODIES.DAT", "ax2 = 0.5000000D-01", "ax2 = 0.0000000D+00"}}, "BODIES.DAT", "L3001", error, 18, 56},
     {"NegativeEquivalentRadius", disk, {{"BODIES.DAT", "avrd= 0.1000000D+00  gyrd= 0.7", "avrd=-0.1000000D+00  gyrd= 0.7"}}, "BODIES.DAT", "L3001", error, 5, 35},
+    {"SphereTooLargeForItsInertia", spheres, {{"BODIES.DAT", "byrd= 0.1000000D+00", "byrd= 0.1000000D+99"}}, "BODIES.DAT", "L1003", error, 9, 35},
     {"ZeroSphereRadius", spheres, {{"BODIES.DAT", "byrd= 0.1000000D+00", "byrd= 0.0000000D+00"}}, "BODIES.DAT", "L3001", error, 9, 35},
     {"ZeroDensityOfRigidBody", disk, {{"BULK_BEHAV.DAT", "Umas= 0.1000000D+04", "Umas= 0.0000000D+00"}}, "BULK_BEHAV.DAT", "L3002", error, 5, 46},
     {"NegativeDensityOfMesh", mailx, {{"BULK_BEHAV.DAT", "Umas= 0.2300000D+04", "Umas=-0.2300000D+04"}}, "BULK_BEHAV.DAT", "L3002", error, 5, 46},

@@ -79,17 +79,33 @@ TEST(DofParser, ReadsRbdy3FrameAndThermalMailx) {
 }
 
 TEST(DofParser, HandWrittenIniWithoutDashesAndLabelsIgnored) {
-  // datbox-inputs.md §6: labels are not read (`c(1)=` where the writer emits `g(1)=`).
+  // datbox-inputs.md §6: labels are not read; a label that is not LMGC90's is said (L1022), its
+  // value read.
   const std::string text = "$steps      5                time= 0.5000000D+00\n$bdyty\n RBDY2  3\n$nodty\n" +
                            kXLine + "\n" + kLead + "  c(1)= 0.1000000D+01\n$$$$$$\n";
   DiagnosticSink sink;
   const DofFile file = parse(text, sink);
-  ASSERT_EQ(sink.items().size(), 0u);
+  ASSERT_EQ(sink.items().size(), 1u);
+  EXPECT_EQ(sink.items()[0].code, "L1022");
   EXPECT_EQ(file.step.value, 5);
   ASSERT_EQ(file.sections.size(), 1u);
   EXPECT_FALSE(file.sections[0].closed);
   EXPECT_EQ(file.sections[0].bodies[0].number.value, 3);
   EXPECT_DOUBLE_EQ(file.sections[0].bodies[0].nodes[0].v[0].value, 1.0);
+}
+
+// A damaged label: LMGC90 reads the value by its columns; a warning points at the label (L1022).
+TEST(DofParser, DamagedLabelIsAWarningAndTheValueIsRead) {
+  std::string x_line = kXLine;
+  x_line.replace(x_line.find("X(2)="), 5, "X(2)#");
+  const std::string text = kHeader + "$bdyty\n RBDY2        1\n$nodty\n" + x_line + "\n" + kLead +
+                           "  V(1)= 0.1000000D+01\n$$$$$$\n";
+  DiagnosticSink sink;
+  const DofFile file = parse(text, sink);
+  expect_one(sink, "L1022", 10, static_cast<std::uint32_t>(kXLine.find("X(2)=") + 1));
+  EXPECT_EQ(sink.items()[0].severity, Severity::warning);
+  ASSERT_EQ(file.sections.size(), 1u);
+  EXPECT_EQ(file.sections[0].bodies[0].nodes[0].x.size(), 3u);
 }
 
 // Broken inputs: one exact diagnostic each.
