@@ -42,7 +42,7 @@ ProblemReport solve(const FclibLocalProblem& input, const LocalProblemNlgsOption
   report.seconds = result.seconds;
   report.error = natural_map_error(problem, r);  // recomputed independently of the solver's test
   report.milestone_seconds = result.milestone_seconds;
-  report.solved = report.error <= options.tolerance;
+  report.solved = std::isfinite(report.error) && report.error <= options.tolerance;
   // The file's own solution, where present: its error in the same measure, and how far our u is from it
   // (r need not be unique when W is singular; u is compared instead).
   if (input.solution_r && input.solution_r->size() == input.size) {

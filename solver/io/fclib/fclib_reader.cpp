@@ -3,6 +3,7 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace lmgc::solver {
@@ -28,9 +29,17 @@ class Handle {
 
 class File {
  public:
-  explicit File(const std::filesystem::path& path)
-      : path_(path.string()), file_(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose) {
+  explicit File(const std::filesystem::path& path) : path_(path.string()), file_(open(path), H5Fclose) {
     if (!file_.valid()) throw FclibError(path_ + ": not an HDF5 file, or it cannot be opened");
+  }
+
+  // A regular file only: HDF5 would wait on a FIFO and read a device without end.
+  static hid_t open(const std::filesystem::path& path) {
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (ec) throw FclibError(path.string() + ": " + ec.message());
+    if (!std::filesystem::is_regular_file(status)) throw FclibError(path.string() + ": not a regular file");
+    return H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   }
 
   // True when every component of the absolute path exists.
@@ -155,12 +164,30 @@ FclibLocalProblem read_fclib_local(const std::filesystem::path& path) {
   if (problem.q.size() != rows) throw FclibError(file.path() + ": q does not match the size of W");
   if (problem.mu.size() * problem.space_dimension != rows)
     throw FclibError(file.path() + ": mu does not have one value per contact");
+  // Values a solve can take: finite, and small enough that |q| and W r do not overflow (the error
+  // measure divides by |q|: an infinite |q| would report any r as solved).
+  constexpr double kLargest = 1e100;
+  const auto sane = [&](const auto& values, const char* what) {
+    for (const double v : values)
+      if (!std::isfinite(v) || std::abs(v) > kLargest)
+        throw FclibError(file.path() + ": " + what + " holds " + std::to_string(v) +
+                         " (not finite, or beyond 1e100: the solve's sums would overflow)");
+  };
+  sane(problem.value, "W");
+  sane(problem.q, "q");
+  sane(problem.mu, "mu");
+  for (const double m : problem.mu)
+    if (m < 0.0)
+      throw FclibError(file.path() + ": mu holds a negative friction coefficient " + std::to_string(m));
   if (file.has("/solution/r")) {
     problem.solution_r = file.vector("/solution/r");
     if (file.has("/solution/u")) problem.solution_u = file.vector("/solution/u");
   }
   if (file.has("/guesses/number_of_guesses")) {
     const int guesses = file.scalar("/guesses/number_of_guesses");
+    // A damaged count must not walk two billion names.
+    if (guesses < 0 || guesses > 100000)
+      throw FclibError(file.path() + ": /guesses/number_of_guesses is " + std::to_string(guesses));
     for (int g = 1; g <= guesses; ++g) {
       const std::string name = "/guesses/" + std::to_string(g) + "/r";
       if (file.has(name)) problem.guesses_r.push_back(file.vector(name));
