@@ -300,6 +300,16 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
   };
   bool in_order = true;
   const std::vector<Vector3d>& velocity_begin = scene.bodies.velocity_begin;
+  // LMGC90's PLJCx detection (mod_PLJCx compute_contacts) leaves its contactor indices at 1 inside
+  // the loop: every PLJCx interaction takes its begin velocities from the body of the first POLYG
+  // and the body of the first JONCx of the case (docs/lmgc90-facts/rigid-2d.md §4.6). Only the
+  // restitution laws and DISSIPATED ENERGY read them; reproduced so that both follow LMGC90.
+  std::int32_t first_polygon_body = -1, first_joncx_body = -1;
+  if (scene.plan.families[static_cast<std::size_t>(PairFamily2D::PLJCx)])
+    for (std::size_t k = 0; k < shape_of.size(); ++k) {
+      if (first_polygon_body < 0 && shape_of[k] == ContactorShape2D::polygon) first_polygon_body = body_of[k];
+      if (first_joncx_body < 0 && shape_of[k] == ContactorShape2D::joncx) first_joncx_body = body_of[k];
+    }
   for (const std::uint32_t pair_index : order) {
     const RoughPair& rp = rough[pair_index];
     const std::size_t i = rp.i, j = rp.j;
@@ -398,8 +408,11 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
       c.lever_antagonist = Vector2d(cross_2d(lever_an, tangent), cross_2d(lever_an, c.normal));
       // Local relative velocity at the beginning of the step (restitution laws), while the record is
       // at hand: a pass of its own over a large list went to memory again.
-      const Vector3d& vc = velocity_begin[static_cast<std::size_t>(c.candidate_body)];
-      const Vector3d& va = velocity_begin[static_cast<std::size_t>(c.antagonist_body)];
+      const bool pljcx = family == PairFamily2D::PLJCx;
+      const Vector3d& vc =
+          velocity_begin[static_cast<std::size_t>(pljcx ? first_polygon_body : c.candidate_body)];
+      const Vector3d& va =
+          velocity_begin[static_cast<std::size_t>(pljcx ? first_joncx_body : c.antagonist_body)];
       const Vector3d tc(tangent.x(), tangent.y(), c.lever_candidate(0)),
           nc(c.normal.x(), c.normal.y(), c.lever_candidate(1));
       const Vector3d ta(tangent.x(), tangent.y(), c.lever_antagonist(0)),

@@ -148,15 +148,24 @@ RC_GTEST_PROP(Detection2D, PeriodicListIsInSweepOrderAndFindsDiskPairsAcrossTheS
   RC_ASSERT(detected == expected);
 }
 
+// (PLJCx: the bodies of the case's first POLYG and first JONCx, as LMGC90's detection has them.)
 RC_GTEST_PROP(Detection2D, EachInteractionCarriesTheRelativeVelocityOfItsBodiesAtTheStartOfTheStep, ()) {
   RandomScene s = random_scene();
   const VisibilityIndex2D index = build_visibility_index(s.scene);
   LargeArray<Interaction2D> found;
   detect_contacts_2d(s.scene, index, s.coordinates, found);
   const std::vector<Vector3d>& v = s.scene.bodies.velocity_begin;
+  std::int32_t first_polygon_body = -1, first_joncx_body = -1;
+  for (std::size_t k = 0; k < index.contactor_shape.size(); ++k) {
+    if (first_polygon_body < 0 && index.contactor_shape[k] == ContactorShape2D::polygon)
+      first_polygon_body = index.contactor_body[k];
+    if (first_joncx_body < 0 && index.contactor_shape[k] == ContactorShape2D::joncx)
+      first_joncx_body = index.contactor_body[k];
+  }
   for (const Interaction2D& c : found) {
-    const Vector3d& a = v[static_cast<std::size_t>(c.candidate_body)];
-    const Vector3d& b = v[static_cast<std::size_t>(c.antagonist_body)];
+    const bool pljcx = c.family == PairFamily2D::PLJCx;
+    const Vector3d& a = v[static_cast<std::size_t>(pljcx ? first_polygon_body : c.candidate_body)];
+    const Vector3d& b = v[static_cast<std::size_t>(pljcx ? first_joncx_body : c.antagonist_body)];
     const Vector2d relative = a.head<2>() - b.head<2>();
     const double ut =
         c.tangent().dot(relative) + c.lever_candidate(0) * a.z() - c.lever_antagonist(0) * b.z();
