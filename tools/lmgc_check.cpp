@@ -1,6 +1,7 @@
 // lmgc-check: reads a case folder like a compiler reads a program (syntax of every file, then the
 // semantic checks of validate/checks.hpp), and reports every problem with its file, line and
-// column. Exit: 0 no error, 1 errors in the data, 2 usage error or unreadable folder.
+// column. Exit: 0 no error, 1 errors in the data, 2 usage error or unreadable folder, 4 an echo
+// file could not be written.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -20,6 +21,7 @@ namespace {
 constexpr int kExitOk = 0;
 constexpr int kExitDataErrors = 1;
 constexpr int kExitUsage = 2;
+constexpr int kExitOutput = 4;  // an echo file could not be written
 
 int explain(const std::string& code) {
   const auto* kind = lmgc::grammar::find_diagnostic_kind(code);
@@ -109,6 +111,9 @@ int main(int argc, char** argv) {
     std::cout << lmgc::validate::render_summary(sink.error_count(), sink.warning_count(), notes) << "\n";
   }
   if (!files) return kExitUsage;
+  bool write_failed = false;
+  for (const auto& d : sink.items()) write_failed |= d.code == "L9003";
+  if (write_failed) return kExitOutput;
   if (sink.has_errors() || (werror && sink.warning_count() > 0)) return kExitDataErrors;
   return kExitOk;
 }

@@ -1,11 +1,11 @@
 #include "solver/bodies/rigid_3d_properties.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <cmath>
 #include <stdexcept>
 
 #include "solver/bodies/polyhedron.hpp"
+#include "solver/bodies/symmetric_eigen_3x3.hpp"
 
 namespace lmgc::solver {
 namespace {
@@ -99,55 +99,12 @@ ContactorGeometry contactor_geometry(const Rigid3DContactorShape& c, double avrd
   return g;
 }
 
-// Our sign convention for an eigenvector: its largest component (first one on ties) positive.
-Vector3d oriented(const Vector3d& v) {
-  int imax = 0;
-  for (int i = 1; i < 3; ++i)
-    if (std::abs(v[i]) > std::abs(v[imax])) imax = i;
-  return v[imax] < 0.0 ? Vector3d(-v) : v;
-}
-
 }  // namespace
 
 PrincipalInertia lmgc_diagonalise33(Matrix3d m) {
-  // shared/mod_algebra.f90:364-388: zero the negligible terms row by row, count the zero
-  // off-diagonal ones.
-  int zeros = 0;
-  for (int j = 0; j < 3; ++j) {
-    const double djj = std::abs(m(j, j));
-    for (int k = 0; k < 3; ++k) {
-      if (djj > 1.0e-10) {
-        if (std::abs(m(j, k)) < 1.0e-14 * djj) m(j, k) = 0.0;
-      } else if (std::abs(m(j, k)) < 1.0e-17) {
-        m(j, k) = 0.0;
-      }
-      if (j != k && m(j, k) == 0.0) ++zeros;
-    }
-  }
+  // shared/mod_algebra.f90:338-453, LAPACK dsyevd('V', 'L') reproduced bit for bit.
   PrincipalInertia p;
-  if (zeros == 6) {  // :392-403: already diagonal, kept in place
-    p.moments = m.diagonal();
-    p.frame.setIdentity();
-    return p;
-  }
-  // :411-449: dsyevd('V','L') — lower triangle, ascending eigenvalues, unit eigenvectors in
-  // columns; e1, e2 normalised (moments scaled by their squared norms), e3 = e1 × e2.
-  // SelfAdjointEigenSolver also reads the lower triangle only and sorts ascending.
-  Eigen::SelfAdjointEigenSolver<Matrix3d> solver(m);
-  if (solver.info() != Eigen::Success)
-    throw std::runtime_error("diagonalise33: diagonalisation not possible");
-  Matrix3d f = solver.eigenvectors();
-  Vector3d ip = solver.eigenvalues();
-  for (int j = 0; j < 2; ++j) {
-    const double norm = f.col(j).squaredNorm();
-    f.col(j) = oriented(f.col(j) / std::sqrt(norm));
-    ip[j] *= norm;
-  }
-  ip[2] *= f.col(2).squaredNorm();
-  const Vector3d e3 = f.col(0).cross(f.col(1));
-  f.col(2) = e3;
-  p.moments = ip;
-  p.frame = f;
+  lmgc90_diagonalise33(m, p.moments, p.frame);
   return p;
 }
 

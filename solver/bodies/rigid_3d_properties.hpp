@@ -95,8 +95,8 @@ RigidBody3DProperties rigid_3d_properties(double density, double avrd, const Eig
 // LMGC90's diagonalise33 (shared/mod_algebra.f90:338-453): off-diagonal terms below 1e-14·|diagonal|
 // of their row (or below 1e-17 when that diagonal is ≤ 1e-10) are zeroed; if all six are zero the
 // moments are the diagonal in place (unsorted) and the frame is identity; otherwise the eigenvalues
-// of the lower triangle, ascending (LAPACK dsyevd), with e3 = e1 × e2. The signs of e1 and e2 are
-// not reproducible from LAPACK; here each is oriented so that its largest component is positive.
+// of the lower triangle, ascending (LAPACK dsyevd), with e3 = e1 × e2. Eigenvalues and vectors,
+// signs included, are reference LAPACK 3.11's bit for bit (symmetric_eigen_3x3.hpp).
 struct PrincipalInertia {
   Eigen::Vector3d moments;
   Eigen::Matrix3d frame;  // columns

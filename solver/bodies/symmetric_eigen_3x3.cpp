@@ -1,6 +1,8 @@
 #include "solver/bodies/symmetric_eigen_3x3.hpp"
 
-// A translation, for bit-exactness, of the reference LAPACK/BLAS 3.11.0 code that
+// LMGC90 takes its principal frames from LAPACK's dsyevd, whose eigenvector signs depend on every
+// rounding of its algorithm: to give LMGC90's frames, this follows the reference LAPACK/BLAS 3.11.0
+// algorithm (BSD-3-Clause, netlib.org/lapack) that
 // DSYEVD('V', 'L', N = 3) executes. Each function names the routine (and branch) it follows;
 // the arithmetic keeps the Fortran operation order (left to right, same parentheses), so every
 // rounding is the same. Arrays are 1-based like the Fortran ones (index 0 unused) to keep the

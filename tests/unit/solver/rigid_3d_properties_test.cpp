@@ -184,7 +184,7 @@ TEST(Rigid3DProperties, TiltedClusterIsDiagonalisedAscendingInARightHandedFrame)
   EXPECT_LT(p.inertia[0], p.inertia[1]);
   EXPECT_NEAR(p.inertia[1], p.inertia[2], 1e-12 * p.inertia[2]);
   EXPECT_NEAR(std::abs(p.frame.col(0).dot(axis)), 1.0, 1e-12);
-  EXPECT_GT(p.frame.col(0).dot(axis), 0.0);  // our sign convention: largest component positive
+  EXPECT_GT(p.frame.col(0).dot(axis), 0.0);  // the sign LAPACK's dsyevd gives, as in LMGC90
   EXPECT_NEAR(p.frame.determinant(), 1.0, 1e-12);
   EXPECT_TRUE((p.frame.transpose() * p.frame).isIdentity(1e-12));
   const Matrix3d t = tensor_about(cs, centre);
