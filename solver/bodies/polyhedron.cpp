@@ -2,7 +2,6 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <deque>
 #include <map>
 
 namespace lmgc::solver {
@@ -29,39 +28,72 @@ void orient_faces(const std::vector<Vector3d>& vertices, std::vector<std::array<
     for (std::int32_t k : f)
       if (k < 0 || k >= nv) return;
   if (faces.empty()) return;
-  // Undirected edge -> faces holding it.
-  std::map<std::pair<std::int32_t, std::int32_t>, std::vector<std::size_t>> edge_faces;
-  for (std::size_t i = 0; i < faces.size(); ++i)
-    for (int k = 0; k < 3; ++k) {
-      const std::int32_t a = faces[i][static_cast<std::size_t>(k)],
-                         b = faces[i][static_cast<std::size_t>((k + 1) % 3)];
-      edge_faces[{std::min(a, b), std::max(a, b)}].push_back(i);
-    }
-  std::vector<std::uint8_t> tagged(faces.size(), 0);
-  for (std::size_t seed = 0; seed < faces.size(); ++seed) {  // one pass per connected patch
-    if (tagged[seed]) continue;
-    tagged[seed] = 1;
-    std::deque<std::size_t> queue{seed};
-    while (!queue.empty()) {
-      const std::size_t f = queue.front();
-      queue.pop_front();
-      for (int k = 0; k < 3; ++k) {
-        const std::int32_t a = faces[f][static_cast<std::size_t>(k)],
-                           b = faces[f][static_cast<std::size_t>((k + 1) % 3)];
-        for (std::size_t g : edge_faces[{std::min(a, b), std::max(a, b)}]) {
-          if (tagged[g]) continue;
-          auto& face = faces[g];
-          for (int m = 0; m < 3; ++m)
-            if (face[static_cast<std::size_t>(m)] == a && face[static_cast<std::size_t>((m + 1) % 3)] == b) {
-              // Same direction as the tagged face: swap the edge's two vertices.
-              std::swap(face[static_cast<std::size_t>(m)], face[static_cast<std::size_t>((m + 1) % 3)]);
-              break;
-            }
-          tagged[g] = 1;
-          queue.push_back(g);
+  const std::size_t n = faces.size();
+  // Neighbours, from the input faces: for each edge k (vertex k to k+1) in the face's own order, the
+  // lowest-numbered other face holding both its vertices (edges without one are left out).
+  std::vector<std::vector<std::size_t>> faces_of_vertex(static_cast<std::size_t>(nv));
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::int32_t v : faces[i]) faces_of_vertex[static_cast<std::size_t>(v)].push_back(i);
+  std::vector<std::array<std::size_t, 3>> neighbours(n);
+  std::vector<std::uint8_t> neighbour_count(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::int32_t a = faces[i][k], b = faces[i][(k + 1) % 3];
+      for (std::size_t g : faces_of_vertex[static_cast<std::size_t>(a)]) {
+        if (g == i) continue;
+        const auto& other = faces[g];
+        if (other[0] == b || other[1] == b || other[2] == b) {
+          neighbours[i][neighbour_count[i]++] = g;
+          break;
         }
       }
     }
+  // Breadth-first from face 0 by whole levels; within a level, in list order, each face is oriented
+  // against the first tagged face of its own neighbour list (faces of this level done before it
+  // included), then tagged.
+  std::vector<std::uint8_t> tagged(n, 0), listed(n, 0);
+  tagged[0] = listed[0] = 1;
+  std::vector<std::size_t> level{0}, next;
+  for (;;) {
+    next.clear();
+    for (std::size_t f : level)
+      for (std::uint8_t k = 0; k < neighbour_count[f]; ++k) {
+        const std::size_t g = neighbours[f][k];
+        if (!listed[g]) {
+          listed[g] = 1;
+          next.push_back(g);
+        }
+      }
+    if (next.empty()) break;
+    for (std::size_t e : next) {
+      std::size_t reference = n;
+      for (std::uint8_t k = 0; k < neighbour_count[e] && reference == n; ++k)
+        if (tagged[neighbours[e][k]]) reference = neighbours[e][k];
+      if (reference != n) {
+        // The shared edge: its first and second vertices in e's order (positions i0 < i1) and their
+        // positions in the reference.
+        auto& face = faces[e];
+        const auto& ref = faces[reference];
+        int found = 0, i0 = 0, i1 = 0, j0 = 0, j1 = 0;
+        for (int i = 0; i < 3 && found < 2; ++i)
+          for (int j = 0; j < 3; ++j)
+            if (face[static_cast<std::size_t>(i)] == ref[static_cast<std::size_t>(j)]) {
+              (found == 0 ? i0 : i1) = i;
+              (found == 0 ? j0 : j1) = j;
+              ++found;
+              break;
+            }
+        if (found == 2) {
+          const bool forward_in_reference = j1 - j0 == 1 || j1 - j0 == -2;
+          const bool forward_in_face = i1 - i0 == 1;
+          // Run the same way in both: e is the other way round; swap the shared vertices.
+          if (forward_in_reference == forward_in_face)
+            std::swap(face[static_cast<std::size_t>(i0)], face[static_cast<std::size_t>(i1)]);
+        }
+      }
+      tagged[e] = 1;
+    }
+    level.swap(next);
   }
   if (signed_volume(vertices, faces) < 0.0)
     for (auto& f : faces) std::swap(f[1], f[2]);

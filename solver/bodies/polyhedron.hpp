@@ -21,10 +21,12 @@ struct Polyhedron {
 };
 
 // LMGC90's orientation of a triangulated surface (set_orientation_surface_T3, then the global flip
-// of compute_mechanical_properties_surface_T3, mod_DiscreteGeometry): face 1's orientation is spread
-// breadth-first to its neighbours — a neighbour running a shared edge the same way has that edge's
-// two vertices swapped — then, if the enclosed volume is negative, every face has its 2nd and 3rd
-// vertices swapped. Faces naming missing vertices are left as they are.
+// of compute_mechanical_properties_surface_T3, mod_DiscreteGeometry): each face's neighbours are, in
+// the order of its edges, the lowest-numbered other face sharing the edge; face 1's orientation is
+// spread breadth-first by whole levels, each face oriented against the first tagged face of its
+// neighbour list (a face running the shared edge the same way has the edge's two vertices swapped);
+// then, if the enclosed volume is negative, every face has its 2nd and 3rd vertices swapped. Faces
+// not connected to face 1, and faces naming missing vertices, are left as they are.
 void orient_faces(const std::vector<Eigen::Vector3d>& vertices,
                   std::vector<std::array<std::int32_t, 3>>& faces);
 
