@@ -115,12 +115,16 @@ int main(int argc, char** argv) {
                "3D: PTPT3 reference lengths from the network file's nonuc0, or for detected links from "
                "the positions at the start (PTPT3_UseCurrentNonuc0(1))");
   std::vector<double> source_point;
+  bool source_point_relative = false;
   app.add_option("--source-point", source_point,
                  "3D: FIRST RADIUS X Y Z: bodies after FIRST enter one by one at (X, Y, Z), each when the "
                  "previous one is farther than RADIUS from it (RBDY3_SetSourcePointWithIni)")
       ->expected(5)
       ->delimiter(',')
       ->check(kFinite);
+  app.add_flag("--source-point-relative", source_point_relative,
+               "3D: --source-point X Y Z is a translation from each body's reference position "
+               "(RBDY3_SetSourcePoint, INIT SOURCE POINT) instead of a position");
   app.add_flag("--no-command-dat", no_command_dat,
                "do not read DATBOX/COMMAND.DAT (LMGC90 2025 no longer reads it): the run takes its "
                "parameters from the defaults and the flags only");
@@ -238,6 +242,7 @@ int main(int argc, char** argv) {
       run.source_first = static_cast<long>(source_point[0]);
       run.source_radius = source_point[1];
       for (int d = 0; d < 3; ++d) run.source_point[d] = source_point[static_cast<std::size_t>(d + 2)];
+      run.source_point_absolute = !source_point_relative;
     }
     options = run;
     if (!three_d && (options.y_period > 0.0 || options.source_first > 0 || options.ptpt3_network ||

@@ -402,6 +402,7 @@ CommandRunParameters command_run_parameters(const CommandFile& file, DiagnosticS
     } else if ((k == "FD INIT SOURCE POINT" || k == "INIT SOURCE POINT") && c.arguments.size() >= 3 &&
                c.arguments[2].reals.size() >= 3) {
       p.has_source_point = true;
+      p.source_point_absolute = k == "FD INIT SOURCE POINT";
       p.source_first = c.arguments[0].integer.value;
       first_real(c, 1, p.source_radius);
       for (int d = 0; d < 3; ++d) p.source_point[d] = c.arguments[2].reals[static_cast<std::size_t>(d)].value;

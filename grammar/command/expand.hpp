@@ -97,6 +97,9 @@ struct CommandRunParameters {
   long source_first = 0;
   double source_radius = 0.0;
   double source_point[3] = {0.0, 0.0, 0.0};
+  // FD INIT SOURCE POINT (RBDY3_SetSourcePointWithIni): the point is a position; INIT SOURCE POINT
+  // (RBDY3_SetSourcePoint): a translation from each body's reference position.
+  bool source_point_absolute = true;
 };
 CommandRunParameters command_run_parameters(const CommandFile& file, DiagnosticSink& sink);
 

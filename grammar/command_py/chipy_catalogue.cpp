@@ -51,6 +51,7 @@ constexpr ChipyFunction kFunctions[] = {
     {"RBDY2_SetXmaxBoundary", M::exact, S::run, ""},
     {"RBDY3_NewRotationScheme", M::exact, S::run, ""},
     {"RBDY3_SetSourcePointWithIni", M::exact, S::run, ""},
+    {"RBDY3_SetSourcePoint", M::exact, S::run, ""},  // --source-point ... --source-point-relative
     {"PTPT3_LoadNetwork", M::exact, S::run, ""},
     {"PTPT3_UseCurrentNonuc0", M::exact, S::run, ""},
     {"PRPRx_UseCpCundallDetection", M::exact, S::run, ""},

@@ -180,6 +180,7 @@ void apply_command_parameters(const validate::CaseFiles& files, RunOptions& opti
     options.source_first = p.source_first;
     options.source_radius = p.source_radius;
     for (int d = 0; d < 3; ++d) options.source_point[d] = p.source_point[d];
+    options.source_point_absolute = p.source_point_absolute;
   }
 }
 

@@ -57,7 +57,8 @@ RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D&
   if (options.source_first > 0)
     init_source_point(
         scene, static_cast<std::size_t>(options.source_first - 1), options.source_radius,
-        Eigen::Vector3d(options.source_point[0], options.source_point[1], options.source_point[2]));
+        Eigen::Vector3d(options.source_point[0], options.source_point[1], options.source_point[2]),
+        options.source_point_absolute);
 
   if (options.zero_initial_velocity)
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {

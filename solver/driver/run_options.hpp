@@ -36,6 +36,9 @@ struct RunOptions {
   long source_first = 0;
   double source_radius = 0.0;
   double source_point[3] = {0.0, 0.0, 0.0};
+  // RBDY3_SetSourcePointWithIni (true): the point is a position, the waiting bodies' references are
+  // zeroed; RBDY3_SetSourcePoint (false): a translation from each body's own reference.
+  bool source_point_absolute = true;
 };
 
 // Parses LMGC90's spellings: 'Quad ', 'QuaN ', 'Maxm ', 'QM/16' and 'Stored_Delassus_Loops',

@@ -92,8 +92,9 @@ constexpr RunParameter kParameters[] = {
      "RBDY3_SetSourcePointWithIni", -1, "",
      [](O o) {
        return o.source_first > 0
-                  ? fmt::format("{},{},{},{},{}", o.source_first, real(o.source_radius),
-                                real(o.source_point[0]), real(o.source_point[1]), real(o.source_point[2]))
+                  ? fmt::format("{},{},{},{},{}{}", o.source_first, real(o.source_radius),
+                                real(o.source_point[0]), real(o.source_point[1]), real(o.source_point[2]),
+                                o.source_point_absolute ? "" : " relative")
                   : std::string("none");
      },
      [](O) -> N { return std::nullopt; }},

@@ -906,19 +906,20 @@ bool enters_by_source(const Contactor3D* c) {
 }
 }  // namespace
 
-void init_source_point(Scene3D& scene, std::size_t first, double radius, const Vector3d& point) {
+void init_source_point(Scene3D& scene, std::size_t first, double radius, const Vector3d& point,
+                       bool absolute) {
   RigidBodies3D& b = scene.bodies;
   if (first >= b.size()) return;
   scene.source = SourcePoint3D{true, false, first, radius, point};
   for (std::size_t i = 0; i <= first; ++i) b.visible[i] = 1;
-  b.reference[first].setZero();
+  if (absolute) b.reference[first].setZero();
   b.displacement_begin[first].head<3>() = point;
   b.displacement[first] = b.displacement_begin[first];
   for (std::size_t i = first + 1; i < b.size(); ++i) {
     const Contactor3D* c = first_contactor(scene, i);
     if (!enters_by_source(c) || c->color == "BASEx") continue;
     b.visible[i] = 0;
-    b.reference[i].setZero();
+    if (absolute) b.reference[i].setZero();
     b.displacement_begin[i].setZero();
     b.displacement[i].setZero();
     b.velocity_begin[i].head<3>().setZero();

@@ -54,7 +54,11 @@ void update_step(Scene3D& scene, RunState3D& state);
 // init4fd_source_point_RBDY3: body `first` (0-based) starts at `point` (its reference moved to 0),
 // every later body whose first contactor is a SPHER or POLYR (colour other than BASEx) waits at 0,
 // at rest and invisible.
-void init_source_point(Scene3D& scene, std::size_t first, double radius, const Eigen::Vector3d& point);
+// `absolute` (init4fd_source_point_RBDY3, RBDY3_SetSourcePointWithIni): the point is a position and
+// the references of body `first` and of the waiting bodies are zeroed; otherwise
+// (init_source_point_RBDY3, RBDY3_SetSourcePoint) a translation from each body's own reference.
+void init_source_point(Scene3D& scene, std::size_t first, double radius, const Eigen::Vector3d& point,
+                       bool absolute = true);
 // check_source_point_RBDY3, after compute_dof: the next waiting body enters at the point when the
 // last one is farther than the radius from it.
 void check_source_point(Scene3D& scene);

@@ -218,6 +218,30 @@ TEST(Rigid3DAnalytic, SourcePointReleasesTheNextBodyWhenTheLastIsOneRadiusAway) 
   EXPECT_TRUE(centre_of(scene, second).isApprox(point));
 }
 
+// Source point without Ini (RBDY3_SetSourcePoint, COMMAND.DAT's INIT SOURCE POINT): the point is a
+// translation from each body's own reference: the first sphere starts at its reference + point, the
+// second waits at its reference and enters there + point.
+TEST(Rigid3DAnalytic, RelativeSourcePointTranslatesEachBodyFromItsReference) {
+  const double radius = 0.5, h = 1e-3;
+  const Vector3d point(1.0, 2.0, 3.0), first_at(-5.0, 0.0, 0.0), second_at(7.0, 0.0, 0.0);
+  SceneBuilder3D b;
+  const int first = b.add_sphere(first_at, 0.1, 1000.0);
+  const int second = b.add_sphere(second_at, 0.1, 1000.0);
+  Scene3D scene = b.build();
+  init_source_point(scene, static_cast<std::size_t>(first), radius, point, /*absolute=*/false);
+  EXPECT_EQ(scene.bodies.visible[static_cast<std::size_t>(second)], 0);
+  RunState3D state = run_state(h);
+  step_3d(scene, state, test::converged_nlgs_options(10));
+  EXPECT_NEAR((centre_of(scene, first) - (first_at + point)).head<2>().norm(), 0.0, 1e-12);
+  long entered = 0;
+  for (long step = 2; step <= 1000 && entered == 0; ++step) {
+    step_3d(scene, state, test::converged_nlgs_options(10));
+    if (scene.bodies.visible[static_cast<std::size_t>(second)]) entered = step;
+  }
+  EXPECT_EQ(entered, static_cast<long>(std::ceil(std::sqrt(2.0 * radius / g) / h)));
+  EXPECT_TRUE(centre_of(scene, second).isApprox(second_at + point));
+}
+
 // Periodic sides: a sphere moving in +x towards the side x = L meets the image of a sphere resting
 // just inside x = 0, one period away: a head-on impact across the side. With restitution e = 1
 // between equal masses (RST_CLB) the velocities swap.
