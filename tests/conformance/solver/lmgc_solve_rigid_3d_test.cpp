@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <sstream>
 
 #include "grammar/dof/parser.hpp"
@@ -117,6 +118,47 @@ TEST(LmgcSolveRigid3D, ArchFollowsLmgc90UntilItCollapses) {
     worst = std::max(worst, largest);
   }
   std::printf("Bridge_PR: largest translation difference over the compared steps %.3g m\n", worst);
+}
+
+// A POLYR whose vertices are not centred on its node (Bridge_PR's blocks: node at 0, vertices in
+// global coordinates, as LMGC90's older pre-processor wrote them) with a displacement in DOF.INI:
+// LMGC90 moves the node to the volume centroid G (cooref = node + G, BODIES.OUT) and adds DOF.INI's X
+// to it unchanged (read_in_dof: coor = cooref + X), so DOF.OUT's X is DOF.INI's plus the motion of
+// the step: nothing of the offset G goes into X.
+TEST(LmgcSolveRigid3D, OffsetPolyhedronKeepsItsDofIniDisplacement) {
+  LMGC_REQUIRE_SHARED();
+  const fs::path dir = scratch_dir("solve_offset_polyr");
+  fs::copy(examples_dir() / "RIGID_3D" / "Bridge_PR" / "DATBOX", dir / "DATBOX", fs::copy_options::recursive);
+  const std::string lead(29, ' ');
+  std::ofstream(dir / "DATBOX" / "DOF.INI", std::ios::binary)
+      << "! DOF\n$steps      0                time= 0.0000000D+00\n!" << std::string(71, '-') << "\n"
+      << "$bdyty\n RBDY3      1\n$nodty\n"
+      << " NO6xx      1                X(1)= 0.1000000D+00  X(2)= 0.2000000D+00  X(3)= 0.3000000D+00\n"
+      << lead << "X(4)= 0.0000000D+00  X(5)= 0.0000000D+00  X(6)= 0.0000000D+00\n"
+      << lead << "V(1)= 0.0000000D+00  V(2)= 0.0000000D+00  V(3)= 0.0000000D+00\n"
+      << lead << "V(4)= 0.0000000D+00  V(5)= 0.0000000D+00  V(6)= 0.0000000D+00\n"
+      << lead << "a(1)= 0.1000000D+01  a(2)= 0.0000000D+00  a(3)= 0.0000000D+00\n"
+      << lead << "b(1)= 0.0000000D+00  b(2)= 0.1000000D+01  b(3)= 0.0000000D+00\n"
+      << lead << "g(1)= 0.0000000D+00  g(2)= 0.0000000D+00  g(3)= 0.1000000D+01\n$$$$$$\n";
+  ASSERT_EQ(run_tool("lmgc-solve",
+                     "'" + dir.string() + "' --quiet --no-command-dat --steps 1 --dt 1e-6 --write-every 1")
+                .exit_code,
+            0);
+  const grammar::DofFile out = read_dof(dir / "OUTBOX" / "DOF.OUT.1");
+  ASSERT_FALSE(out.sections.empty());
+  const auto& x = out.sections[0].bodies[0].nodes[0].x;
+  ASSERT_GE(x.size(), 3u);
+  EXPECT_NEAR(x[0].value, 0.1, 1e-9);
+  EXPECT_NEAR(x[1].value, 0.2, 1e-9);
+  EXPECT_NEAR(x[2].value, 0.3, 1e-9);  // a free fall of 1e-6 s moves it by 5e-12 m
+  // The node of BODIES.OUT is LMGC90's: the centroid of the vertices' volume.
+  const std::string ours = read_file(dir / "OUTBOX" / "BODIES.OUT");
+  const std::string lmgc =
+      read_file(examples_dir() / "RIGID_3D" / "Bridge_PR" / "reference_lmgc90" / "OUTBOX" / "BODIES.OUT");
+  const std::string node =
+      " NO6xx      1                coo1= 0.2400000D+01  coo2= 0.9275479D+01  coo3= 0.4062896D+01";
+  EXPECT_NE(lmgc.find(node), std::string::npos);
+  EXPECT_NE(ours.find(node), std::string::npos);
 }
 
 // Beam_ClusterPR (a cluster of two boxes and three boxes on a plane, PRPRx and PRPLx): BODIES.OUT
