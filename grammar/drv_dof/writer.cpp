@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <map>
 #include <string>
 #include <string_view>
@@ -185,23 +186,34 @@ std::string write_drv_dof(const DrvDofFile& file) {
 
 namespace {
 
-// ±d.ddddddddddddddddE±ddd in 24 columns (blank sign for positives).
-void append_evolution_value(std::string& out, double value) {
+// One REAL(8) item of gfortran's list-directed output (`write(nfich,*) x, fx`, how LMGC90 rewrites an
+// evolution file): 17 significant digits, correctly rounded; F form when the rounded value lies in
+// [0.1, 1e17) (and for zero), right-justified in 20 columns and followed by 5 blanks, else
+// d.dddddddddddddddd with a three-digit exponent, right-justified in 25 columns.
+void append_list_directed_real(std::string& out, double value) {
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.16E", std::fabs(value));
-  std::string text(buffer);
-  const std::size_t e = text.find('E');
-  if (e == std::string::npos) {  // inf / nan: not produced by the parser
-    append_fortran_a(out, text, 24);
-    return;
+  std::snprintf(buffer, sizeof buffer, "%.16E", value);  // the 17 significant digits, and their exponent
+  const char* e = std::strchr(buffer, 'E');
+  const long exponent = e ? std::strtol(e + 1, nullptr, 10) : 0;
+  std::string text;
+  int width = 25;
+  if (!std::isfinite(value)) {
+    text = buffer;
+  } else if (value == 0.0 || (exponent >= -1 && exponent < 17)) {
+    std::snprintf(buffer, sizeof buffer, "%#.*f", value == 0.0 ? 16 : static_cast<int>(16 - exponent), value);
+    text = buffer;
+    width = 20;
+  } else {
+    char exponent_text[32];
+    std::snprintf(exponent_text, sizeof exponent_text, "E%c%03ld", exponent < 0 ? '-' : '+',
+                  std::labs(exponent));
+    text.assign(buffer, static_cast<std::size_t>(e - buffer));
+    text += exponent_text;
   }
-  const long exponent = std::strtol(text.c_str() + e + 1, nullptr, 10);
-  char exponent_text[32];
-  std::snprintf(exponent_text, sizeof exponent_text, "E%c%03ld", exponent < 0 ? '-' : '+',
-                std::labs(exponent));
-  out += (std::signbit(value) && value != 0.0) ? '-' : ' ';
-  out.append(text, 0, e);
-  out += exponent_text;
+  if (text.size() < static_cast<std::size_t>(width))
+    out.append(static_cast<std::size_t>(width) - text.size(), ' ');
+  out += text;
+  if (width == 20) out.append(5, ' ');
 }
 
 }  // namespace
@@ -210,9 +222,9 @@ std::string write_evolution(const EvolutionFile& file) {
   std::string out;
   for (const EvolutionPoint& point : file.points) {
     out += ' ';
-    append_evolution_value(out, point.time.value);
+    append_list_directed_real(out, point.time.value);
     out += ' ';
-    append_evolution_value(out, point.value.value);
+    append_list_directed_real(out, point.value.value);
     out += '\n';
   }
   return out;

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "solver/bodies/polyhedron.hpp"
+#include "solver/bodies/surface_integrals_t3.hpp"
 #include "solver/bodies/symmetric_eigen_3x3.hpp"
 
 namespace lmgc::solver {
@@ -64,23 +64,22 @@ ContactorGeometry contactor_geometry(const Rigid3DContactorShape& c, double avrd
     g.shift = c.shift;
     g.centre_weight = g.volume;
   } else if (c.type == "POLYR") {
-    Polyhedron p;
-    p.vertices = c.vertices;
-    p.faces = c.faces;
-    orient_faces(p.vertices, p.faces);
-    const PolyhedronMass m = polyhedron_mass(p);
+    // mod_a_BDARY_POLYR.f90:59-156 -> compute_mechanical_properties_surface_T3: LMGC90's
+    // orientation and Gauss-point surface integrals, bit for bit (surface_integrals_t3.hpp).
+    const bool given = given_inertia != Vector3d::Zero();
+    const SurfaceT3Integrals m = lmgc90_polyr_integrals(c.vertices, c.faces, !given);
     g.volume = m.volume;
-    g.shift = m.centroid;
+    g.shift = m.centre;
     g.centre_weight = g.volume;
-    if (given_inertia != Vector3d::Zero()) {
+    if (given) {
       g.inertia = given_inertia;
     } else {
       const PrincipalInertia principal = lmgc_diagonalise33(m.inertia);
       g.inertia = principal.moments;
       g.frame = principal.frame;
     }
-    for (const Vector3d& v : p.vertices) g.vertices.push_back(g.frame.transpose() * (v - m.centroid));
-    g.faces = p.faces;
+    for (const Vector3d& v : c.vertices) g.vertices.push_back(g.frame.transpose() * (v - m.centre));
+    g.faces = m.faces;
   } else if (c.type == "PT3Dx") {
     // A ball of radius avrd, 1 when avrd = 0 (mod_RBDY3.f90:902-909); given I-line values are kept
     // where non-zero (mod_RBDY3.f90:812-826, mod_a_BDARY_PT3Dx.f90:67-72); weight 0 in the centre

@@ -58,7 +58,7 @@ TEST(PinnedIterates, Rigid3DStackOfCubes) {
                     b = state_after("cube_stack_10_3d", "3d_b", flags);
   ASSERT_FALSE(a.empty());
   EXPECT_TRUE(a == b) << "two runs differ";
-  EXPECT_EQ(hex(fnv1a(a)), "dd65f57b4ae2c62b");
+  EXPECT_EQ(hex(fnv1a(a)), "41086be47a4c640e");
 }
 
 }  // namespace

@@ -247,10 +247,29 @@ TEST(EvolutionParser, ReadsListDirectedPairs) {
   EXPECT_DOUBLE_EQ(file.points[1].time.value, 1.5);
   EXPECT_DOUBLE_EQ(file.points[1].value.value, -0.03);
   EXPECT_DOUBLE_EQ(file.points[2].value.value, 4.0);
+  // As gfortran 12 writes `write(nfich,*) x, fx` (LMGC90's echo of an evolution file).
   EXPECT_EQ(write_evolution(file),
-            "  0.0000000000000000E+000  0.0000000000000000E+000\n"
-            "  1.5000000000000000E+000 -2.9999999999999999E-002\n"
-            "  2.0000000000000000E+000  4.0000000000000000E+000\n");
+            "   0.0000000000000000        0.0000000000000000     \n"
+            "   1.5000000000000000       -2.9999999999999999E-002\n"
+            "   2.0000000000000000        4.0000000000000000     \n");
+}
+
+// gfortran's list-directed REAL(8) output around its F/E boundaries (printed by gfortran 12.2 for the
+// same values): F form from 0.1 to below 1e17 after rounding to 17 digits, E form otherwise.
+TEST(EvolutionWriter, WritesGfortransListDirectedForm) {
+  EvolutionFile file;
+  const auto pair = [&](double t, double v) { file.points.push_back({Real{t}, Real{v}}); };
+  pair(0.99999999999999999, 9.99999999999999999e16);
+  pair(0.099999999999999999, 5e-324);
+  pair(0.09999, -0.03);
+  pair(123456.789, 1e16);
+  pair(-0.5, 2.5e300);
+  EXPECT_EQ(write_evolution(file),
+            "   1.0000000000000000        1.0000000000000000E+017\n"
+            "  0.10000000000000001        4.9406564584124654E-324\n"
+            "   9.9989999999999996E-002  -2.9999999999999999E-002\n"
+            "   123456.78900000000        10000000000000000.     \n"
+            " -0.50000000000000000        2.5000000000000001E+300\n");
 }
 
 TEST(EvolutionBroken, SinglePair) {
