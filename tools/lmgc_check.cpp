@@ -12,6 +12,7 @@
 #include "grammar/common/diagnostic_catalogue.hpp"
 #include "grammar/common/output_file.hpp"
 #include "solver/driver/case_input.hpp"
+#include "solver/driver/run_loop.hpp"
 #include "validate/case_files.hpp"
 #include "validate/checks.hpp"
 #include "validate/render.hpp"
@@ -64,6 +65,7 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
 
+  lmgc::solver::ignore_file_size_signal();
   lmgc::grammar::DiagnosticSink sink(5000);
   auto files = lmgc::validate::load_case(case_dir, sink);
   // Semantic checks (references, consistency, physics) run on whatever could be read: a file

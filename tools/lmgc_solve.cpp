@@ -155,6 +155,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitUsage;
   }
+  solver::ignore_file_size_signal();
   if (app.count("--rloc-tol")) {
     std::cerr
         << "lmgc-solve: --rloc-tol is not supported: LMGC90's RecupRloc(tol) matches PLPLx reactions by "

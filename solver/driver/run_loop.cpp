@@ -14,6 +14,13 @@ extern "C" void on_stop_signal(int signal) {
 
 void install_interrupt_handler() {
   for (int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, on_stop_signal);
+  ignore_file_size_signal();
+}
+
+void ignore_file_size_signal() {
+  // Past a file size limit (ulimit -f) a write fails with EFBIG instead of killing the process: the
+  // run then stops as for a full disk, with its files whole.
+  std::signal(SIGXFSZ, SIG_IGN);
 }
 
 }  // namespace lmgc::solver

@@ -18,6 +18,8 @@ namespace lmgc::solver {
 // the loop finishes the step, writes .LAST and returns.
 extern std::atomic<int> g_stop_signal;
 void install_interrupt_handler();
+// SIGXFSZ ignored: a write past `ulimit -f` fails (exit 4) rather than kill the program mid-file.
+void ignore_file_size_signal();
 
 // What one dimension provides to the loop (2D and 3D in run_2d.cpp and run_3d.cpp).
 template <class Scene, class State>

@@ -196,6 +196,26 @@ TEST(LmgcSolve, AnOutputThatCannotBeWrittenExitsFour) {
   EXPECT_FALSE(fs::exists(dir / "OUTBOX" / ".DOF.LAST.tmp"));
 }
 
+// A file size limit (ulimit -f, what a batch scheduler may set): the write that crosses it fails,
+// the run stops with exit 4, and every file under its final name is whole (DOF.OUT.n are written
+// under a temporary name and renamed).
+TEST(LmgcSolve, AFileSizeLimitStopsTheRunWithItsFilesWhole) {
+  const fs::path dir = default_case_copy("solve_ulimit");
+  // 64 blocks of 1 KiB (POSIX sh's ulimit -f unit is 512 bytes on some shells: 32 KiB at least).
+  const ToolRun run = run_tool_both_streams(
+      "lmgc-solve", "'" + dir.string() + "' --quiet --steps 3000 --write-every 1", "ulimit -f 64; ");
+  EXPECT_EQ(run.exit_code, 4) << run.output;
+  int outputs = 0;
+  for (const auto& e : fs::directory_iterator(dir / "OUTBOX")) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("DOF.OUT.", 0) != 0) continue;
+    ++outputs;
+    const std::string text = read_file(e.path());
+    EXPECT_NE(text.find("$$$$$$"), std::string::npos) << name << " is cut";
+  }
+  EXPECT_GT(outputs, 0);
+}
+
 TEST(LmgcSolve, StrictExitsThreeWhenAStepHitsTheIterationCap) {
   LMGC_REQUIRE_SHARED();
   // 1024 disks with one sweep per step cannot reach 1e-12: every step with contacts hits the cap.
