@@ -25,7 +25,7 @@ class Writer {
     static_assert(std::is_standard_layout_v<T>);
     value(static_cast<std::uint64_t>(v.size()));
     value(static_cast<std::uint64_t>(sizeof(T)));
-    bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+    if (!v.empty()) bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
   }
   void text(const std::string& s) {
     value(static_cast<std::uint64_t>(s.size()));
@@ -59,7 +59,7 @@ class Reader {
     if (expected && n != *expected) return fail("written for another case (its arrays differ in size)");
     if (n > (bytes_.size() - at_) / sizeof(T)) return fail("the file ends early");
     v.resize(n);
-    std::memcpy(reinterpret_cast<char*>(v.data()), bytes_.data() + at_, n * sizeof(T));
+    if (n > 0) std::memcpy(reinterpret_cast<char*>(v.data()), bytes_.data() + at_, n * sizeof(T));
     at_ += n * sizeof(T);
     return true;
   }
