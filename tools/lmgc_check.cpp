@@ -11,6 +11,7 @@
 
 #include "grammar/common/diagnostic_catalogue.hpp"
 #include "grammar/common/output_file.hpp"
+#include "lmgc_revision.hpp"
 #include "solver/driver/case_input.hpp"
 #include "solver/driver/run_loop.hpp"
 #include "validate/case_files.hpp"
@@ -52,7 +53,8 @@ int main(int argc, char** argv) {
   app.add_flag("--werror", werror, "treat warnings as errors (exit code 1)");
   app.add_flag("--no-color", no_color, "never color the output (NO_COLOR in the environment does the same)");
   app.add_option("--explain", explain_code, "print the long description of a diagnostic code and exit");
-  app.set_version_flag("--version", "lmgc-check 0.1.0");
+  app.set_version_flag("--version",
+                       std::string("lmgc-check ") + LMGC_VERSION + " (revision " + LMGC_REVISION + ")");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

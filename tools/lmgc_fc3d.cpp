@@ -11,6 +11,7 @@
 #include <iostream>
 #include <span>
 
+#include "lmgc_revision.hpp"
 #include "solver/io/fclib/fclib_reader.hpp"
 #include "solver/nlgs/frictional_contact_problem.hpp"
 #include "solver/nlgs/local_problem_nlgs.hpp"
@@ -66,6 +67,8 @@ std::string seconds_or_dash(double seconds) {
 
 int main(int argc, char** argv) {
   CLI::App app{"lmgc-fc3d: solve FCLIB frictional contact problems (HDF5, /fclib_local) with NLGS"};
+  app.set_version_flag("--version",
+                       std::string("lmgc-fc3d ") + LMGC_VERSION + " (revision " + LMGC_REVISION + ")");
   std::vector<std::string> files;
   LocalProblemNlgsOptions options;
   options.milestones = {1e-4, 1e-6, 1e-8};

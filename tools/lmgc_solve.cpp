@@ -12,6 +12,7 @@
 
 #include "grammar/common/diagnostic_catalogue.hpp"
 #include "grammar/common/output_file.hpp"
+#include "lmgc_revision.hpp"
 #include "solver/driver/case_input.hpp"
 #include "solver/driver/run_2d.hpp"
 #include "solver/driver/run_3d.hpp"
@@ -132,7 +133,8 @@ int main(int argc, char** argv) {
   app.add_flag("--new-rotation-scheme", options.new_rotation_scheme,
                "RBDY3: update the principal frame by the Cayley map (RBDY3_NewRotationScheme)");
   app.add_flag("--strict", options.strict, "exit 3 when a step stopped at the iteration cap");
-  app.set_version_flag("--version", "lmgc-solve 0.1.0");
+  app.set_version_flag("--version",
+                       std::string("lmgc-solve ") + LMGC_VERSION + " (revision " + LMGC_REVISION + ")");
   app.footer(
       "Run parameters: the defaults (--dt 1e-3 --theta 0.5 --steps 1000 --norm Quad --tol 1.666e-4 --gs-it1 "
       "50\n"
