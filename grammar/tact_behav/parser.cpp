@@ -152,6 +152,15 @@ class TactBehavParser {
           return;
         }
       }
+      // A keyword line where the data line is expected: LMGC90 would read its columns as a pair and
+      // a law ('$behav  lawty' as candidate 'behav', law 'lawty'...).
+      if (reader_.peek().text.starts_with("$")) {
+        reader_.report(
+            "L1013", reader_.peek(), 1, 6,
+            "keyword line where the data line of '$seety' is expected; LMGC90 would read it as a pair",
+            "give the '$seety' block its data line");
+        continue;
+      }
       file.sees.push_back(read_see_data(take()));
     }
   }

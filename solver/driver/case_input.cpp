@@ -128,7 +128,9 @@ bool prepare_run_3d(const validate::CaseFiles& files, Scene3D& scene, RunOutputs
 }
 
 void report_solver_support(const validate::CaseFiles& files, grammar::DiagnosticSink& sink) {
-  if (!files.bodies || !files.bulk_behav) return;
+  // The scene builders take checked data: a case with errors is not prepared (lmgc-solve does not
+  // run it either).
+  if (!files.bodies || !files.bulk_behav || sink.has_errors()) return;
   grammar::DiagnosticSink scratch(static_cast<std::size_t>(-1));
   if (is_rigid_3d_case(files)) {
     Scene3D scene;

@@ -27,7 +27,8 @@ bool prepare_run_3d(const validate::CaseFiles& files, Scene3D& scene, RunOutputs
                     grammar::DiagnosticSink& sink);
 
 // What lmgc-solve would refuse (L4001-L4003) or leave out (L4004) in this case, for lmgc-check:
-// prepares the run into a scratch sink and passes those diagnostics on.
+// prepares the run into a scratch sink and passes those diagnostics on. Nothing when `sink` holds
+// errors already (the builders take checked data only).
 void report_solver_support(const validate::CaseFiles& files, grammar::DiagnosticSink& sink);
 
 // The run parameters COMMAND.DAT sets, laid over `options` (flags given on the command line are

@@ -50,6 +50,20 @@ TEST(TactBehavParserErrors, GuideOnlyKeywordNamesTheCurrentOne) {
   EXPECT_NE(d.hint.find("'IQS_MAC_CZM'"), std::string::npos) << d.hint;
 }
 
+// Found by fuzzing: a '$seety' block whose data line is missing, the next card's keyword line
+// coming instead, was read silently as a pair ('behav' against 'lawty').
+TEST(TactBehavParserErrors, KeywordLineWhereTheSeetyDataLineIsExpected) {
+  DiagnosticSink sink;
+  const auto file = parse("$seety\n" + kSeeTitle + "! a comment\n$behav  lawty\n iqsc0  IQS_CLB" +
+                              std::string(25, ' ') + "fric= 0.5000000D+00\n",
+                          sink);
+  ASSERT_EQ(sink.items().size(), 1u);
+  EXPECT_EQ(sink.items()[0].code, "L1013");
+  EXPECT_EQ(sink.items()[0].where.span.line, 4u);
+  EXPECT_TRUE(file.sees.empty());
+  ASSERT_EQ(file.laws.size(), 1u);
+}
+
 TEST(TactBehavParserErrors, MalformedNumberInTheValueField) {
   DiagnosticSink sink;
   parse("$behav  lawty\n iqsc0  IQS_CLB                         fric= 0.5x00000D+00\n", sink);
