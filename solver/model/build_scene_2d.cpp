@@ -34,6 +34,12 @@ bool contact_law_of(const grammar::TactLaw& card, ContactLaw& law) {
       card.keyword.value, [&](std::string_view name) { return parameter(card, *kind, name); }, law);
 }
 
+bool runs_contactor_2d(std::string_view type) {
+  for (std::string_view run : {"DISKx", "DISKb", "xKSID", "JONCx", "PT2Dx", "POLYG"})
+    if (type == run) return true;
+  return false;
+}
+
 bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticSink& sink) {
   bool ok = true;
   scene = Scene2D{};
@@ -74,6 +80,12 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
       c.type = t.type.value;
       c.color = t.color.value;
       const auto value = [&](std::size_t i) { return i < t.values.size() ? t.values[i].value : 0.0; };
+      if (!runs_contactor_2d(c.type)) {
+        sink.report("L4001", grammar::Location{in.bodies_path, t.type.span},
+                    "contactor '" + c.type + "' is not handled by the rigid 2D solver");
+        ok = false;
+        continue;
+      }
       if (c.type == "DISKx") {
         c.shape = ContactorShape2D::disk;
         c.type = "DISKx";

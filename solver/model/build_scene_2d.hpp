@@ -25,6 +25,10 @@ struct SceneInput2D {
   std::string bodies_path, tact_behav_path, drv_dof_path;  // for diagnostics
 };
 
+// The RBDY2 contactor kinds the rigid 2D scene is built with; any other is reported (L4001) and the
+// case refused. docs/support.md is generated from this and the catalogues.
+bool runs_contactor_2d(std::string_view type);
+
 // Returns false (with diagnostics) when the case uses something the rigid 2D solver does not
 // provide (a law it does not solve, a contactor of another dimension, ...).
 bool build_scene_2d(const SceneInput2D& input, Scene2D& scene, grammar::DiagnosticSink& sink);

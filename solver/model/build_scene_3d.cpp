@@ -48,6 +48,12 @@ Rigid3DContactorShape rigid_3d_shape(const grammar::Contactor& t) {
   return shape;
 }
 
+bool runs_contactor_3d(std::string_view type) {
+  for (std::string_view run : {"SPHER", "SPHEb", "PLANx", "POLYR", "PT3Dx", "CYLND", "DNLYC"})
+    if (type == run) return true;
+  return false;
+}
+
 bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticSink& sink) {
   bool ok = true;
   scene = Scene3D{};
@@ -74,6 +80,13 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
       c.rank = ++rank;
       c.type = t.type.value;
       c.color = t.color.value;
+      if (!runs_contactor_3d(c.type)) {
+        sink.report("L4001", grammar::Location{in.bodies_path, t.type.span},
+                    "contactor '" + c.type + "' is not handled by the rigid 3D solver yet");
+        ok = false;
+        unsupported = true;
+        continue;
+      }
       const Rigid3DContactorShape shape = rigid_3d_shape(t);
       if (c.type == "SPHER" || c.type == "SPHEb") {
         c.shape = ContactorShape3D::sphere;

@@ -29,6 +29,10 @@ struct SceneInput3D {
 // types keep only their type), for the mass-property computation and the BODIES.OUT echo.
 Rigid3DContactorShape rigid_3d_shape(const grammar::Contactor& contactor);
 
+// The RBDY3 contactor kinds the rigid 3D scene is built with; any other is reported (L4001) and the
+// case refused.
+bool runs_contactor_3d(std::string_view type);
+
 // Returns false (with diagnostics) when the case uses something the rigid 3D solver does not
 // provide yet (a contactor other than SPHER/SPHEb/PLANx/POLYR, a law it does not solve).
 bool build_scene_3d(const SceneInput3D& input, Scene3D& scene, grammar::DiagnosticSink& sink);

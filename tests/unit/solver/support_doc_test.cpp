@@ -1,0 +1,68 @@
+// docs/support.md: what lmgc-solve runs, generated from the catalogues and the solver's own
+// predicates (the contactor kinds its scene builders take, each law's 2D and 3D forms, the POSTPRO
+// commands its post-processors compute), so that the page cannot drift from the code. When they
+// differ, the expected tables are written to test_scratch/support_doc/support.tables.md: review
+// them and paste them into the page.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "grammar/bodies/contactor_catalogue.hpp"
+#include "grammar/postpro/catalogue.hpp"
+#include "grammar/tact_behav/law_catalogue.hpp"
+#include "solver/io/postpro_2d.hpp"
+#include "solver/io/postpro_3d.hpp"
+#include "solver/laws/contact_law.hpp"
+#include "solver/model/build_scene_2d.hpp"
+#include "solver/model/build_scene_3d.hpp"
+#include "tests/support/run_tool.hpp"
+#include "tests/support/shared_data.hpp"
+
+namespace lmgc::solver {
+namespace {
+
+std::string yes_no(bool yes) {
+  return yes ? "yes" : "not yet";
+}
+
+std::string expected_tables() {
+  std::string out = "### Contactors\n\n| contactor | bodies | lmgc-solve |\n| --- | --- | --- |\n";
+  for (const grammar::ContactorKind& k : grammar::contactor_catalogue()) {
+    std::string bodies, runs;
+    if (k.bodies & grammar::kOnRbdy2) bodies += "RBDY2 ", runs = yes_no(runs_contactor_2d(k.keyword));
+    if (k.bodies & grammar::kOnRbdy3) bodies += "RBDY3 ", runs = yes_no(runs_contactor_3d(k.keyword));
+    if (k.bodies & grammar::kOnMailx) bodies += "MAILx ", runs = "not yet (MAILx)";
+    if (!k.guide_only.empty()) runs = "removed from LMGC90 (error)";
+    out +=
+        "| `" + std::string(k.keyword) + "` | " + bodies.substr(0, bodies.size() - 1) + " | " + runs + " |\n";
+  }
+  out += "\n### Contact laws\n\n| law | 2D | 3D |\n| --- | --- | --- |\n";
+  for (const grammar::LawKind& k : grammar::law_catalogue()) {
+    if (!k.readable) continue;
+    ContactLaw law;
+    const bool known = law_from_card(
+        k.keyword, [](std::string_view) { return 0.0; }, law);
+    out += "| `" + std::string(k.keyword) + "` | " + yes_no(known && provided_in_2d(law)) + " | " +
+           yes_no(known && provided_in_3d(law)) + " |\n";
+  }
+  out += "\n### POSTPRO commands\n\n| command | 2D | 3D |\n| --- | --- | --- |\n";
+  for (const grammar::PostproCommandKind& k : grammar::postpro_catalogue()) {
+    PostproKind2D kind;
+    const bool known = postpro_kind_of(k.name, kind);
+    out += "| `" + std::string(k.name) + "` | " + (k.available_in(2) ? yes_no(known) : "—") + " | " +
+           (k.available_in(3) ? yes_no(known && Postpro3D::provides(kind)) : "—") + " |\n";
+  }
+  return out;
+}
+
+TEST(SupportDoc, ListsWhatLmgcSolveRunsAsTheCodeDoes) {
+  const std::string doc = test::read_file(std::filesystem::path(LMGC_SOURCE_DIR) / "docs" / "support.md");
+  const std::string tables = expected_tables();
+  const bool listed = doc.find(tables) != std::string::npos;
+  if (!listed) std::ofstream(test::scratch_dir("support_doc") / "support.tables.md") << tables;
+  EXPECT_TRUE(listed) << "docs/support.md does not hold the generated tables (written to "
+                         "test_scratch/support_doc/support.tables.md)";
+}
+
+}  // namespace
+}  // namespace lmgc::solver
