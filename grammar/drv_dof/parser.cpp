@@ -389,10 +389,16 @@ EvolutionFile parse_evolution(const SourceText& source, DiagnosticSink& sink) {
     }
     file.points.push_back(EvolutionPoint{values[0], values[1]});
   }
-  if (file.points.size() < 2 && last_line != nullptr)
-    reader.report(
-        "L1014", *last_line, 1, static_cast<int>(std::max<std::size_t>(1, last_line->text.size())),
-        "an evolution file needs at least two 't v' pairs, found " + std::to_string(file.points.size()));
+  // (Lines that hold no value at all, blank or cut by a '/', count as none.)
+  if (file.points.size() < 2) {
+    const std::string message =
+        "an evolution file needs at least two 't v' pairs, found " + std::to_string(file.points.size());
+    if (last_line != nullptr)
+      reader.report("L1014", *last_line, 1,
+                    static_cast<int>(std::max<std::size_t>(1, last_line->text.size())), message);
+    else
+      reader.report_at_end("L1014", message);
+  }
   return file;
 }
 

@@ -144,9 +144,13 @@ void write_mailx_section(std::string& out, const DrvDofFile& file, std::string_v
   out += kDashes;
 }
 
+// A body of this module that drives a dof (a block without any is not echoed, so it cannot decide
+// what the echo holds: the echo of the echo must be the echo).
 bool has_body(const DrvDofFile& file, std::string_view type, std::string_view model) {
   return std::any_of(file.bodies.begin(), file.bodies.end(), [&](const DrvDofBody& body) {
-    return body.body_type.value == type && body.model.value == model;
+    return body.body_type.value == type && body.model.value == model &&
+           std::any_of(body.nodes.begin(), body.nodes.end(),
+                       [](const DrvDofNode& n) { return !n.dofs.empty(); });
   });
 }
 

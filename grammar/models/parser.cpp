@@ -155,6 +155,13 @@ class ModelsParser {
       model.user_model = Word{list_directed_word(columns(line.text, 30, 79)), reader_.span(line, 30, 79)};
       if (model.user_model.value.empty())
         reader_.report("L1015", line, 30, 79, "the user model name ('u_mdl') is missing");
+      // A quoted name with a blank, comma, slash or quote reads whole, but LMGC90 writes it unquoted
+      // (A50) and reads its own echo as another name.
+      else if (model.user_model.value.find_first_of(" ,/'\"") != std::string::npos)
+        reader_.report(
+            "L1017", line, 30, 79,
+            "user model name '" + model.user_model.value +
+                "' holds a blank, comma, slash or quote: LMGC90's echo of it would name another model");
       return;
     }
     model.options.push_back(read_option(line, id));

@@ -231,6 +231,21 @@ TEST(DrvDofBroken, NeverCrashesOnGarbage) {
   }
 }
 
+// A block whose node drives no dof is not echoed, so it must not put its module's section in
+// the echo either: the echo of the echo is the echo.
+TEST(DrvDofWriter, BlockWithoutDrivenDofsLeavesNoSectionInTheEcho) {
+  DiagnosticSink sink;
+  const DrvDofFile file = parse(
+      "$bdyty\n MAILx      1\n$model\n MECAx\n$nodty\n NO3xx      1\n" + kTemplate + "\n" + " vlocy      3" +
+          kValues + "\n$$$$$$\n$bdyty\n RBDY2      1\n$nodty\n NO3xx      1\n" + kTemplate + "\n$$$$$$\n",
+      sink);
+  ASSERT_FALSE(sink.has_errors()) << sink.items()[0].code << " " << sink.items()[0].message;
+  const std::string echo = write_drv_dof(file);
+  EXPECT_EQ(echo.find("RBDY2"), std::string::npos) << echo;
+  DiagnosticSink again;
+  EXPECT_EQ(write_drv_dof(parse(echo, again)), echo);
+}
+
 // Evolution files.
 EvolutionFile evolution(const std::string& text, DiagnosticSink& sink) {
   return parse_evolution(SourceText("vy.dat", text), sink);
@@ -306,6 +321,15 @@ TEST(EvolutionBroken, CommentLineIsNotAllowed) {
   DiagnosticSink sink;
   evolution("! t v\n0.0 0.0\n1.0 1.0\n", sink);
   expect_one(sink, "L1002", 1, 1);
+}
+
+// Lines cut at once by a '/' hold no pair at all: still too few pairs, not an empty evolution.
+TEST(EvolutionBroken, LinesWithoutAnyValueAreTooFewPairs) {
+  DiagnosticSink sink;
+  const EvolutionFile file = evolution("//1.01\n/ 2.0 3.0\n", sink);
+  EXPECT_TRUE(file.points.empty());
+  ASSERT_FALSE(sink.items().empty());
+  EXPECT_EQ(sink.items()[0].code, "L1014") << sink.items()[0].message;
 }
 
 TEST(EvolutionBroken, EmptyFile) {

@@ -135,6 +135,10 @@ TEST(ModelsBroken, SecondMdltyLineAfterOptions) {
 TEST(ModelsBroken, MissingUserModelName) {
   expect_diagnostic("$model\n M2DNL\n        MECAx  Q4xxx  u_mdl\n", "L1015", 3, 30);
 }
+// LMGC90 writes the name unquoted (A50) and would read its own echo as the name 'a'.
+TEST(ModelsBroken, QuotedUserModelNameWithABlank) {
+  expect_diagnostic("$model\n TET__\n        MECAx  TE4xx  u_mdl  'a name, with blanks'\n", "L1017", 3, 30);
+}
 TEST(ModelsBroken, UnknownModelType) {
   std::string t = kModel;
   t.replace(t.find("MECAx"), 5, "MECAy");
