@@ -14,6 +14,7 @@
 #include "lmgc_revision.hpp"
 #include "solver/driver/case_input.hpp"
 #include "solver/driver/run_loop.hpp"
+#include "solver/driver/run_parameters.hpp"
 #include "validate/case_files.hpp"
 #include "validate/checks.hpp"
 #include "validate/render.hpp"
@@ -43,7 +44,7 @@ int main(int argc, char** argv) {
   CLI::App app{"lmgc-check: validate an LMGC90 case folder (CASE_DIR/DATBOX/) before running it"};
   std::string case_dir;
   std::string explain_code;
-  bool echo = false, json = false, quiet = false, werror = false, no_color = false;
+  bool echo = false, json = false, quiet = false, werror = false, no_color = false, command_dat = false;
   app.add_option("CASE_DIR", case_dir, "case folder holding DATBOX/");
   app.add_flag("--echo", echo,
                "also write the echo files LMGC90 writes when it reads the case (OUTBOX/*.OUT)");
@@ -52,6 +53,10 @@ int main(int argc, char** argv) {
   app.add_flag("-q,--quiet", quiet, "print only errors and the summary");
   app.add_flag("--werror", werror, "treat warnings as errors (exit code 1)");
   app.add_flag("--no-color", no_color, "never color the output (NO_COLOR in the environment does the same)");
+  app.add_flag(
+      "--command-dat", command_dat,
+      "check the case as lmgc-solve --command-dat runs it: driven by DATBOX/COMMAND.DAT even when it "
+      "has a command.py");
   app.add_option("--explain", explain_code, "print the long description of a diagnostic code and exit");
   app.set_version_flag("--version",
                        std::string("lmgc-check ") + LMGC_VERSION + " (revision " + LMGC_REVISION + ")");
@@ -73,9 +78,17 @@ int main(int argc, char** argv) {
   // Semantic checks (references, consistency, physics) run on whatever could be read: a file
   // with syntax errors still gets its cross references checked.
   if (files) {
-    lmgc::validate::check_case(*files, sink);
+    const lmgc::validate::CheckOptions options{true, command_dat};
+    lmgc::validate::check_case(*files, sink, options);
     // What lmgc-solve would refuse or leave out: warnings here, for a case valid for LMGC90.
     lmgc::solver::report_solver_support(*files, sink);
+    // The run parameters of the script that drives the run: out of range (L4010) or computed (L4013).
+    if (lmgc::validate::script_drives(*files, options)) {
+      lmgc::solver::RunOptions run;
+      lmgc::solver::ParameterSources sources;
+      lmgc::solver::apply_script_parameters(*files->command_script, lmgc::solver::is_rigid_3d_case(*files),
+                                            run, sources, sink);
+    }
   }
 
   // Echo files are written only from a case that read without error, and never into DATBOX/.

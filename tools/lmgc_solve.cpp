@@ -59,6 +59,7 @@ int main(int argc, char** argv) {
   std::string storage = "Stored_Delassus_Loops", norm = "Quad";
   double rloc_tol = 0.0;
   bool no_command_dat = false;
+  bool command_dat = false;
   app.add_option("CASE_DIR", case_dir, "case folder holding DATBOX/ (after '--' it may start with '-')")
       ->required();
   app.add_option("--dt", options.dt, "time step [s]")->check(kFinite & CLI::PositiveNumber);
@@ -129,6 +130,9 @@ int main(int argc, char** argv) {
   app.add_flag("--no-command-dat", no_command_dat,
                "do not read DATBOX/COMMAND.DAT (LMGC90 2025 no longer reads it): the run takes its "
                "parameters from the defaults and the flags only");
+  app.add_flag("--command-dat", command_dat,
+               "take the run parameters from DATBOX/COMMAND.DAT even when the case has a command.py (the "
+               "legacy driver of LMGC90 before 2025)");
   app.add_flag("-q,--quiet", options.quiet, "no progress line, no warnings but those that refuse the run");
   app.add_flag("--new-rotation-scheme", options.new_rotation_scheme,
                "RBDY3: update the principal frame by the Cayley map (RBDY3_NewRotationScheme)");
@@ -138,12 +142,15 @@ int main(int argc, char** argv) {
   app.footer(
       "Run parameters: the defaults (--dt 1e-3 --theta 0.5 --steps 1000 --norm Quad --tol 1.666e-4 --gs-it1 "
       "50\n"
-      "--gs-it2 500), then DATBOX/COMMAND.DAT when it exists (TIME STEP, THETA, the step loop's REPETE "
-      "count,\n"
-      "NLGS CHECK TYPE, the NLGS loops, WRITE OUT DOF STEP, ...; not with --no-command-dat), then the flags\n"
-      "given here. OUTBOX/run_parameters.csv records every value and where it came from. A case's "
-      "command.py\n"
-      "is read, not run: every parameter whose value differs from the script's is named (L4008).\n"
+      "--gs-it2 500), then the case's driver, then the flags given here. The driver is CASE_DIR/command.py "
+      "when it\n"
+      "exists (read, not run: the literals its chipy calls pass, and the count of its step loop; what it "
+      "computes\n"
+      "is named, L4013), else DATBOX/COMMAND.DAT (TIME STEP, THETA, the step loop's REPETE count, NLGS "
+      "CHECK TYPE,\n"
+      "the NLGS loops, WRITE OUT DOF STEP, ...; not with --no-command-dat; before the script with "
+      "--command-dat).\n"
+      "OUTBOX/run_parameters.csv records every value and where it came from.\n"
       "Outputs: OUTBOX/ (echo files, DOF and Vloc_Rloc .OUT.n and .LAST, run_report.csv with the achieved\n"
       "natural-map residual of every step, run_parameters.csv), POSTPRO/ (POSTPRO.DAT's commands), "
       "DISPLAY/.\n"
@@ -169,7 +176,14 @@ int main(int argc, char** argv) {
   grammar::DiagnosticSink sink(5000);
   // PTPT3_NETWORK.DAT is read (and checked) only when the run uses it, as LMGC90.
   auto files = validate::load_case(case_dir, sink, validate::LoadOptions{options.ptpt3_network});
-  if (files) validate::check_case(*files, sink, validate::CheckOptions{!no_command_dat});
+  if (command_dat && no_command_dat) {
+    std::cerr << "lmgc-solve: --command-dat and --no-command-dat exclude each other\n";
+    return kExitUsage;
+  }
+  // The driver of the run: the case's command.py (as LMGC90 2025), or COMMAND.DAT.
+  const validate::CheckOptions check_options{!no_command_dat, command_dat};
+  const bool script_drives = files && validate::script_drives(*files, check_options);
+  if (files) validate::check_case(*files, sink, check_options);
   const bool three_d = files && solver::is_rigid_3d_case(*files);
 
   // The norm: an unknown one is a usage error, except for rigid 3D cases: LMGC90's 3D NLGS ignores
@@ -199,10 +213,14 @@ int main(int argc, char** argv) {
                            : solver::prepare_run_2d(*files, scene, outputs, sink));
   solver::ParameterSources sources;
   if (prepared) {
-    // The layers: defaults, COMMAND.DAT's parameters, then the flags given on the command line.
+    // The layers: defaults, the driver's parameters (command.py or COMMAND.DAT), then the flags given
+    // on the command line.
     solver::RunOptions from_file;  // the defaults
     solver::ParameterSources file_sources;
-    if (!no_command_dat) solver::apply_command_parameters(*files, from_file, sink, &file_sources);
+    if (script_drives)
+      solver::apply_script_parameters(*files->command_script, three_d, from_file, file_sources, sink);
+    else if (!no_command_dat)
+      solver::apply_command_parameters(*files, from_file, sink, &file_sources);
     solver::RunOptions run = from_file;
     run.quiet = options.quiet;
     run.strict = options.strict;
@@ -259,8 +277,10 @@ int main(int argc, char** argv) {
       const std::string& path = files->command_script->path;
       sink.report(
           "L4011", grammar::Location{path, {}},
-          "this case has a command.py, which LMGC90 runs; lmgc-solve reads its literals and runs " +
-              std::string(files->command && !no_command_dat ? "COMMAND.DAT's parameters" : "its defaults") +
+          "this case has a command.py, which LMGC90 runs; lmgc-solve reads it without running it and runs " +
+              std::string(script_drives                       ? "the run parameters it passes as literals"
+                          : files->command && !no_command_dat ? "COMMAND.DAT's parameters"
+                                                              : "its defaults") +
               " and the flags");
       for (const solver::ScriptDifference& d : solver::script_differences(options, *files->command_script)) {
         const auto it = sources.find(d.parameter->name);

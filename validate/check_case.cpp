@@ -16,6 +16,13 @@ std::string place(const grammar::Location& where) {
 
 }  // namespace
 
+bool script_drives(const CaseFiles& files, const CheckOptions& options) {
+  return files.command_script && !options.prefer_command_dat;
+}
+bool command_dat_drives(const CaseFiles& files, const CheckOptions& options) {
+  return files.command && options.command_dat && !script_drives(files, options);
+}
+
 void check_case(const CaseFiles& files, grammar::DiagnosticSink& sink, const CheckOptions& options) {
   std::unordered_set<std::string> reader_errors;
   for (const auto& d : sink.items())
@@ -31,7 +38,7 @@ void check_case(const CaseFiles& files, grammar::DiagnosticSink& sink, const Che
   check_contact_laws(files, checks);
   check_visibility(files, checks);
   check_interpenetration(files, checks);
-  check_time_step(files, checks);
+  check_time_step(files, checks, options);
   check_drivers(files, checks, options);
 
   for (const auto& d : checks.items())

@@ -221,7 +221,7 @@ void check_multiphysics(const CaseFiles& files, grammar::DiagnosticSink& sink) {
 }  // namespace
 
 void check_drivers(const CaseFiles& files, grammar::DiagnosticSink& sink, const CheckOptions& options) {
-  if (files.command && options.command_dat) {
+  if (command_dat_drives(files, options)) {
     check_command_dat_parameters(files, sink);
     check_command_dat_commands(files, sink);
   }

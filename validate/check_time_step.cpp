@@ -264,15 +264,27 @@ std::optional<Fall> worst_fall(const CaseFiles& files, const RigidLayout& layout
 
 }  // namespace
 
-void check_time_step(const CaseFiles& files, grammar::DiagnosticSink& sink) {
-  if (!files.command || !files.bodies) return;
-  grammar::DiagnosticSink scratch;  // COMMAND.DAT's own problems are reported by its reader
-  const grammar::CommandRunParameters run = grammar::command_run_parameters(*files.command, scratch);
-  const double dt = run.dt;
+void check_time_step(const CaseFiles& files, grammar::DiagnosticSink& sink, const CheckOptions& options) {
+  if (!files.bodies) return;
+  // The time step of the run's driver, and where it is written.
+  double dt = 0.0;
+  Location at_dt;
+  if (script_drives(files, options)) {
+    const auto calls = files.command_script->calls_to("TimeEvolution_SetTimeStep");
+    if (calls.empty() || calls.back()->arguments.empty() || !calls.back()->arguments[0].value.number) return;
+    const grammar::ScriptCall& call = *calls.back();
+    dt = *call.arguments[0].value.number;
+    at_dt = Location{files.command_script->path,
+                     grammar::SourceSpan{call.line, call.column,
+                                         static_cast<std::uint16_t>(call.column + call.name.size())}};
+  } else if (command_dat_drives(files, options)) {
+    grammar::DiagnosticSink scratch;  // COMMAND.DAT's own problems are reported by its reader
+    const grammar::CommandRunParameters run = grammar::command_run_parameters(*files.command, scratch);
+    dt = run.dt;
+    const std::optional<grammar::Real> dt_value = time_step_value(*files.command, dt);
+    at_dt = Location{datbox_path(files, "COMMAND.DAT"), dt_value ? dt_value->span : grammar::SourceSpan{}};
+  }
   if (!(dt > 0.0) || !std::isfinite(dt)) return;
-  const std::string command_path = datbox_path(files, "COMMAND.DAT");
-  const std::optional<grammar::Real> dt_value = time_step_value(*files.command, dt);
-  const Location at_dt{command_path, dt_value ? dt_value->span : grammar::SourceSpan{}};
   const std::string tact_path = datbox_path(files, "TACT_BEHAV.DAT");
   const std::string bodies_path = datbox_path(files, "BODIES.DAT");
 

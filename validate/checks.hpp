@@ -9,10 +9,16 @@ namespace lmgc::validate {
 
 // What the checks are told about the run.
 struct CheckOptions {
-  // COMMAND.DAT drives the run (lmgc-solve --no-command-dat says it does not): its commands and
-  // parameters are checked.
+  // COMMAND.DAT may drive the run (lmgc-solve --no-command-dat says it does not).
   bool command_dat = true;
+  // COMMAND.DAT drives the run even when the case has a command.py (--command-dat).
+  bool prefer_command_dat = false;
 };
+
+// The driver whose commands and parameters the run takes: the case's command.py (as LMGC90 2025,
+// which no longer reads COMMAND.DAT) unless told otherwise, else COMMAND.DAT.
+bool script_drives(const CaseFiles& files, const CheckOptions& options);
+bool command_dat_drives(const CaseFiles& files, const CheckOptions& options);
 
 // Every check below, in this order.
 void check_case(const CaseFiles& files, grammar::DiagnosticSink& sink, const CheckOptions& options = {});
@@ -38,7 +44,7 @@ void check_visibility(const CaseFiles& files, grammar::DiagnosticSink& sink);
 // L3012: rigid contactors overlapping at the start.
 void check_interpenetration(const CaseFiles& files, grammar::DiagnosticSink& sink);
 // L3013: COMMAND.DAT's time step against the fastest time scales of the case.
-void check_time_step(const CaseFiles& files, grammar::DiagnosticSink& sink);
+void check_time_step(const CaseFiles& files, grammar::DiagnosticSink& sink, const CheckOptions& options = {});
 
 // L4005-L4007, L4009, L4010, L4012: what COMMAND.DAT and command.py ask of a run, and the case's
 // multi-physics data, against what lmgc-solve runs.

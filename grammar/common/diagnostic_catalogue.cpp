@@ -289,25 +289,34 @@ constexpr std::array kCatalogue = {
                    false, true},
     DiagnosticKind{"L4008", warning, "run parameter differs from command.py",
                    "The case has a command.py, the script LMGC90 runs, and lmgc-solve took this run "
-                   "parameter from COMMAND.DAT, its default or a flag, with a value other than the "
-                   "script's. Give the flag named in the message to run as the script does."},
+                   "parameter from a flag (or, with --command-dat, from COMMAND.DAT or its default) with "
+                   "a value other than the script's. Leave the flag out to run as the script does."},
     DiagnosticKind{"L4009", note, "chipy call not known to lmgc",
                    "command.py calls a chipy function that lmgc does not know: its effect on the run "
                    "is not checked."},
     DiagnosticKind{"L4010", error, "run parameter out of range",
-                   "A run parameter of COMMAND.DAT is outside the values a run can take: a time step, "
+                   "A run parameter of COMMAND.DAT, or a literal that command.py passes to the chipy "
+                   "call that sets it, is outside the values a run can take: a time step, "
                    "tolerance or iteration count not positive, a theta outside [0.5, 1], a relaxation "
                    "outside (0, 2], a non-positive period or output frequency, an unknown NLGS norm or "
                    "storage."},
     DiagnosticKind{"L4011", warning, "command.py present",
                    "The case has a command.py: LMGC90 2025 runs it and no longer reads COMMAND.DAT. "
-                   "lmgc-solve does not run Python scripts yet: it takes its parameters from COMMAND.DAT "
-                   "(unless --no-command-dat), its defaults and its flags, and names every parameter "
-                   "whose value differs from the script's (L4008)."},
+                   "lmgc-solve does not run Python scripts yet: it reads the script and takes the run "
+                   "parameters its chipy calls pass as literals (time step, theta, the step loop's "
+                   "count, the NLGS's settings, output frequencies, boundaries, periods, ...), then the "
+                   "flags; COMMAND.DAT is not read (--command-dat reads it instead of the script). What "
+                   "the script computes is named (L4013), what it does that lmgc-solve does not is "
+                   "refused (L4005), and every flag that overrides the script is named (L4008)."},
     DiagnosticKind{"L4012", note, "multi-physics bulk parameters not used",
                    "A THERMO_RIGID, ELECTRO_RIGID or THERMO_ELECTRO_RIGID bulk law gives thermal or "
                    "electrical parameters that only LMGC90's multi-physics solver uses (when the script "
                    "loads MP_DEM.DAT). Without it LMGC90 runs the body as RIGID, and so does lmgc-solve."},
+    DiagnosticKind{"L4013", warning, "run parameter computed by command.py",
+                   "command.py sets a run parameter with a value computed at run time (a function call, "
+                   "a name bound under a condition, input read from a file) that lmgc-solve, which reads "
+                   "the script without running it, cannot know. The message names the value lmgc-solve "
+                   "runs instead and the flag that sets it: give the flag with the script's value."},
     // L9xxx — input/output.
     DiagnosticKind{"L9001", error, "cannot read file",
                    "A file that the case needs does not exist or cannot be read."},

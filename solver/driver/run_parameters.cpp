@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace lmgc::solver {
 namespace {
@@ -29,63 +31,111 @@ std::string_view norm_name(NlgsNorm n) {
 
 using O = const RunOptions&;
 using N = std::optional<double>;
+using V = const grammar::ScriptValue&;
+
+// The script's literal as a run value (the checks COMMAND.DAT's values get, L4010).
+bool positive(V v, double& out) {
+  if (!v.number || !std::isfinite(*v.number) || *v.number <= 0.0) return false;
+  out = *v.number;
+  return true;
+}
+bool finite(V v, double& out) {
+  if (!v.number || !std::isfinite(*v.number)) return false;
+  out = *v.number;
+  return true;
+}
+template <class Integer>
+bool integer_at_least(V v, long least, Integer& out) {
+  if (!v.number || !std::isfinite(*v.number) || *v.number != std::floor(*v.number) || *v.number < least ||
+      *v.number > static_cast<double>(std::numeric_limits<Integer>::max() / 2))
+    return false;
+  out = static_cast<Integer>(*v.number);
+  return true;
+}
+bool switch_on(V v, bool& out) {
+  if (!v.number) return false;
+  out = *v.number != 0.0;
+  return true;
+}
 
 // One row per parameter; COMMAND.DAT keywords and chipy calls as LMGC90 spells them.
 constexpr RunParameter kParameters[] = {
     {"dt", "--dt", "TIME STEP", "TimeEvolution_SetTimeStep", 0, "", [](O o) { return real(o.dt); },
-     [](O o) -> N { return o.dt; }},
+     [](O o) -> N { return o.dt; }, [](RunOptions& o, V v) { return positive(v, o.dt); }},
     {"theta", "--theta", "THETA", "Integrator_InitTheta", 0, "", [](O o) { return real(o.theta); },
-     [](O o) -> N { return o.theta; }},
+     [](O o) -> N { return o.theta; },
+     [](RunOptions& o, V v) {
+       return v.number && *v.number >= 0.5 && *v.number <= 1.0 && finite(v, o.theta);
+     }},
     {"nb_steps", "--steps", "INCREMENT STEP", "IncrementStep", -1, "",
-     [](O o) { return std::to_string(o.steps); }, [](O o) -> N { return static_cast<double>(o.steps); }},
+     [](O o) { return std::to_string(o.steps); }, [](O o) -> N { return static_cast<double>(o.steps); },
+     [](RunOptions& o, V v) { return integer_at_least(v, 0, o.steps); }},
     {"solver_type", "--solver", "EX PREP NLGS", "ExSolver", 0, "",
      [](O o) {
        return std::string(o.nlgs.storage == NlgsStorage::stored_delassus_loops ? "Stored_Delassus_Loops"
                                                                                : "Exchange_Local_Global");
      },
-     [](O) -> N { return std::nullopt; }},
+     [](O) -> N { return std::nullopt; },
+     [](RunOptions& o, V v) { return v.text && parse_storage(*v.text, o.nlgs.storage); }},
     {"norm", "--norm", "NLGS CHECK TYPE", "ExSolver", 1, "",
-     [](O o) { return std::string(norm_name(o.nlgs.norm)); }, [](O) -> N { return std::nullopt; }},
+     [](O o) { return std::string(norm_name(o.nlgs.norm)); }, [](O) -> N { return std::nullopt; },
+     [](RunOptions& o, V v) { return v.text && parse_norm(*v.text, o.nlgs.norm); }},
     {"tol", "--tol", "NLGS CHECK TYPE", "ExSolver", 2, "", [](O o) { return real(o.nlgs.tolerance); },
-     [](O o) -> N { return o.nlgs.tolerance; }},
+     [](O o) -> N { return o.nlgs.tolerance; },
+     [](RunOptions& o, V v) { return positive(v, o.nlgs.tolerance); }},
     {"relax", "--relax", "NLGS CHECK TYPE", "ExSolver", 3, "", [](O o) { return real(o.nlgs.relax); },
-     [](O o) -> N { return o.nlgs.relax; }},
+     [](O o) -> N { return o.nlgs.relax; },
+     [](RunOptions& o, V v) { return v.number && *v.number <= 2.0 && positive(v, o.nlgs.relax); }},
     {"gs_it1", "--gs-it1", "REPETE (after EX ITER NLGS)", "ExSolver", 4, "",
-     [](O o) { return std::to_string(o.nlgs.gs_it1); }, [](O o) -> N { return o.nlgs.gs_it1; }},
+     [](O o) { return std::to_string(o.nlgs.gs_it1); }, [](O o) -> N { return o.nlgs.gs_it1; },
+     [](RunOptions& o, V v) { return integer_at_least(v, 1, o.nlgs.gs_it1); }},
     {"gs_it2", "--gs-it2", "REPETE (the checks' loop)", "ExSolver", 5, "",
-     [](O o) { return std::to_string(o.nlgs.gs_it2); }, [](O o) -> N { return o.nlgs.gs_it2; }},
+     [](O o) { return std::to_string(o.nlgs.gs_it2); }, [](O o) -> N { return o.nlgs.gs_it2; },
+     [](RunOptions& o, V v) { return integer_at_least(v, 1, o.nlgs.gs_it2); }},
     {"quick_scramble", "--quick-scramble", "quickSCRAMBLE", "nlgs_SetWithQuickScramble", -1, "",
-     [](O o) { return yes_no(o.nlgs.quick_scramble); }, [](O o) -> N { return o.nlgs.quick_scramble; }},
+     [](O o) { return yes_no(o.nlgs.quick_scramble); }, [](O o) -> N { return o.nlgs.quick_scramble; },
+     [](RunOptions& o, V v) { return switch_on(v, o.nlgs.quick_scramble); }},
     {"scramble_seed", "--scramble-seed", "", "", -1, "",
      [](O o) { return std::to_string(o.nlgs.scramble_seed); }, [](O) -> N { return std::nullopt; }},
     {"diagonal_resolution", "--diagonal-resolution", "DIAGONAL RESOLUTION", "nlgs_3D_DiagonalResolution", -1,
      "", [](O o) { return yes_no(o.nlgs.diagonal_resolution); },
-     [](O o) -> N { return o.nlgs.diagonal_resolution; }},
+     [](O o) -> N { return o.nlgs.diagonal_resolution; },
+     [](RunOptions& o, V v) { return switch_on(v, o.nlgs.diagonal_resolution); }},
     {"residual_target", "--residual-target", "", "", -1, "", [](O o) { return real(o.nlgs.residual_target); },
      [](O) -> N { return std::nullopt; }},
     {"freq_write", "--write-every", "WRITE OUT DOF STEP", "WriteOut", 0, "nsteps",
      [](O o) { return std::to_string(o.write_every); },
-     [](O o) -> N { return static_cast<double>(o.write_every); }, 1.0},
+     [](O o) -> N { return static_cast<double>(o.write_every); },
+     [](RunOptions& o, V v) { return integer_at_least(v, 1, o.write_every); }, 1.0},
     {"freq_display", "--display-every", "WRITE OUTPUT GMV STEP", "WriteDisplayFiles", 0, "freq",
      [](O o) { return std::to_string(o.display_every); },
-     [](O o) -> N { return static_cast<double>(o.display_every); }, 1.0},
+     [](O o) -> N { return static_cast<double>(o.display_every); },
+     [](RunOptions& o, V v) { return integer_at_least(v, 1, o.display_every); }, 1.0},
     {"ymin_boundary", "--ymin-boundary", "INIT YMIN BOUNDARY", "RBDY2_SetYminBoundary", 0, "",
-     [](O o) { return real(o.y_min); }, [](O o) -> N { return o.y_min; }},
+     [](O o) { return real(o.y_min); }, [](O o) -> N { return o.y_min; },
+     [](RunOptions& o, V v) { return finite(v, o.y_min); }},
     {"ymax_boundary", "--ymax-boundary", "INIT YMAX BOUNDARY", "RBDY2_SetYmaxBoundary", 0, "",
-     [](O o) { return real(o.y_max); }, [](O o) -> N { return o.y_max; }},
+     [](O o) { return real(o.y_max); }, [](O o) -> N { return o.y_max; },
+     [](RunOptions& o, V v) { return finite(v, o.y_max); }},
     {"xmin_boundary", "--xmin-boundary", "INIT XMIN BOUNDARY", "RBDY2_SetXminBoundary", 0, "",
-     [](O o) { return real(o.x_min); }, [](O o) -> N { return o.x_min; }},
+     [](O o) { return real(o.x_min); }, [](O o) -> N { return o.x_min; },
+     [](RunOptions& o, V v) { return finite(v, o.x_min); }},
     {"xmax_boundary", "--xmax-boundary", "INIT XMAX BOUNDARY", "RBDY2_SetXmaxBoundary", 0, "",
-     [](O o) { return real(o.x_max); }, [](O o) -> N { return o.x_max; }},
+     [](O o) { return real(o.x_max); }, [](O o) -> N { return o.x_max; },
+     [](RunOptions& o, V v) { return finite(v, o.x_max); }},
     {"xperiod", "--xperiod", "PERIODIC CONDITION, XPERIODIC CONDITION", "SetPeriodicCondition", 0, "xperiod",
-     [](O o) { return real(o.x_period); }, [](O o) -> N { return o.x_period; }},
+     [](O o) { return real(o.x_period); }, [](O o) -> N { return o.x_period; },
+     [](RunOptions& o, V v) { return positive(v, o.x_period); }},
     {"yperiod", "--yperiod", "YPERIODIC CONDITION", "SetPeriodicCondition", 1, "yperiod",
-     [](O o) { return real(o.y_period); }, [](O o) -> N { return o.y_period; }},
+     [](O o) { return real(o.y_period); }, [](O o) -> N { return o.y_period; },
+     [](RunOptions& o, V v) { return positive(v, o.y_period); }},
     {"new_rotation_scheme", "--new-rotation-scheme", "NEW ROTATION SCHEME", "RBDY3_NewRotationScheme", -1, "",
-     [](O o) { return yes_no(o.new_rotation_scheme); }, [](O o) -> N { return o.new_rotation_scheme; }},
+     [](O o) { return yes_no(o.new_rotation_scheme); }, [](O o) -> N { return o.new_rotation_scheme; },
+     [](RunOptions& o, V v) { return switch_on(v, o.new_rotation_scheme); }},
     {"cundall_iterations", "--cundall-iterations", "CUNDALL ITERATION", "PRPRx_UseCpCundallDetection", 0,
      "nb_iter", [](O o) { return std::to_string(o.cundall_iterations); },
-     [](O o) -> N { return o.cundall_iterations; }},
+     [](O o) -> N { return o.cundall_iterations; },
+     [](RunOptions& o, V v) { return integer_at_least(v, 1, o.cundall_iterations); }},
     {"zero_initial_velocity", "", "FATAL DAMPING, INI V DOF NULL (before the first step)", "", -1, "",
      [](O o) { return yes_no(o.zero_initial_velocity); }, [](O) -> N { return std::nullopt; }},
     {"source_point", "--source-point", "INIT SOURCE POINT, FD INIT SOURCE POINT",
@@ -99,9 +149,11 @@ constexpr RunParameter kParameters[] = {
      },
      [](O) -> N { return std::nullopt; }},
     {"ptpt3_network", "--ptpt3-network", "", "PTPT3_LoadNetwork", -1, "",
-     [](O o) { return yes_no(o.ptpt3_network); }, [](O o) -> N { return o.ptpt3_network; }},
+     [](O o) { return yes_no(o.ptpt3_network); }, [](O o) -> N { return o.ptpt3_network; },
+     [](RunOptions& o, V v) { return switch_on(v, o.ptpt3_network); }},
     {"ptpt3_current_nonuc0", "--ptpt3-current-nonuc0", "", "PTPT3_UseCurrentNonuc0", 0, "",
-     [](O o) { return yes_no(o.ptpt3_current_nonuc0); }, [](O o) -> N { return o.ptpt3_current_nonuc0; }},
+     [](O o) { return yes_no(o.ptpt3_current_nonuc0); }, [](O o) -> N { return o.ptpt3_current_nonuc0; },
+     [](RunOptions& o, V v) { return switch_on(v, o.ptpt3_current_nonuc0); }},
 };
 
 std::string trimmed(std::string s) {
@@ -127,6 +179,8 @@ std::string_view source_name(ParameterSource source) {
       return "default";
     case ParameterSource::command_dat:
       return "COMMAND.DAT";
+    case ParameterSource::command_py:
+      return "command.py";
     case ParameterSource::flag:
       return "flag";
   }
@@ -143,71 +197,165 @@ const RunParameter* find_run_parameter(std::string_view name) {
   return nullptr;
 }
 
+std::vector<ScriptSetting> script_settings(const grammar::CommandScript& script) {
+  std::vector<ScriptSetting> out;
+  for (const RunParameter& p : kParameters) {
+    if (p.chipy.empty()) continue;
+    ScriptSetting setting;
+    setting.parameter = &p;
+    if (p.name == "nb_steps") {
+      const grammar::ScriptLoop* loop = script.step_loop();
+      if (!loop) continue;
+      if (loop->count) setting.value.number = static_cast<double>(*loop->count);
+      setting.expression = loop->header;
+      setting.line = loop->line;
+      setting.column = 1;
+      out.push_back(std::move(setting));
+      continue;
+    }
+    // The 2D and 3D spellings of a call, and its variants; the last call in the file counts.
+    std::vector<const grammar::ScriptCall*> calls = script.calls_to(p.chipy);
+    const auto also = [&](std::string_view name) {
+      for (const grammar::ScriptCall* c : script.calls_to(name)) calls.push_back(c);
+    };
+    if (p.chipy == "nlgs_SetWithQuickScramble") also("nlgs_3D_SetWithQuickScramble");
+    if (p.chipy == "WriteOut") also("WriteOutDof");
+    if (p.name == "source_point") also("RBDY3_SetSourcePoint");
+    std::stable_sort(
+        calls.begin(), calls.end(),
+        [](const grammar::ScriptCall* a, const grammar::ScriptCall* b) { return a->line < b->line; });
+    const grammar::ScriptCall* call = calls.empty() ? nullptr : calls.back();
+    if (call) {
+      setting.line = call->line;
+      setting.column = call->column;
+      setting.expression = call->name + "(...)";
+    }
+    if (p.name == "source_point") {
+      if (!call) continue;
+      for (std::size_t k = 0; k < 5; ++k) {
+        const grammar::ScriptArgument* a = grammar::script_argument(*call, k, "");
+        setting.source_point.push_back(a ? a->value : grammar::ScriptValue{});
+      }
+      setting.value = setting.source_point[0];
+      setting.source_point_relative = call->name == "RBDY3_SetSourcePoint";
+      out.push_back(std::move(setting));
+      continue;
+    }
+    if (p.argument < 0) {
+      // Set by the call's presence.
+      setting.value.number = call ? 1.0 : 0.0;
+      if (!call) setting.expression = "not called";
+      out.push_back(std::move(setting));
+      continue;
+    }
+    if (!call) continue;
+    const grammar::ScriptArgument* a =
+        grammar::script_argument(*call, static_cast<std::size_t>(p.argument), p.keyword);
+    if (a) {
+      setting.value = a->value;
+      setting.expression = a->expression;
+    } else if (p.call_default) {
+      setting.value.number = *p.call_default;
+    } else {
+      continue;  // the call does not set this one (SetPeriodicCondition(xperiod) in 2D)
+    }
+    out.push_back(std::move(setting));
+  }
+  return out;
+}
+
 std::vector<ScriptDifference> script_differences(const RunOptions& options,
                                                  const grammar::CommandScript& script) {
   std::vector<ScriptDifference> out;
-  auto differ = [&](const RunParameter& p, std::string script_value, std::uint32_t line,
-                    std::uint16_t column) {
-    out.push_back({&p, p.text(options), std::move(script_value), line, column});
-  };
-  for (const RunParameter& p : kParameters) {
-    if (p.chipy.empty()) continue;
-    if (p.name == "nb_steps") {
-      const grammar::ScriptLoop* loop = script.step_loop();
-      if (loop && loop->count && *loop->count != options.steps)
-        differ(p, std::to_string(*loop->count), loop->line, 1);
-      continue;
-    }
-    // 2D and 3D spellings of the NLGS calls.
-    std::vector<const grammar::ScriptCall*> calls = script.calls_to(p.chipy);
-    if (p.chipy == "nlgs_SetWithQuickScramble")
-      for (const grammar::ScriptCall* c : script.calls_to("nlgs_3D_SetWithQuickScramble")) calls.push_back(c);
-    if (p.chipy == "WriteOut")
-      for (const grammar::ScriptCall* c : script.calls_to("WriteOutDof")) calls.push_back(c);
-    const auto number = p.number(options);
-    if (p.argument < 0 && p.name != "source_point") {
-      // Set by the call's presence: on when the script calls it (the last call's line is shown).
-      const bool called = !calls.empty();
-      if (number && called != (*number != 0.0))
-        differ(p, called ? "called" : "not called", called ? calls.back()->line : 0,
-               called ? calls.back()->column : 0);
-      continue;
-    }
-    if (calls.empty()) continue;
-    const grammar::ScriptCall& call = *calls.back();
+  for (const ScriptSetting& s : script_settings(script)) {
+    const RunParameter& p = *s.parameter;
+    const auto differ = [&](std::string script_value) {
+      out.push_back({&p, p.text(options), std::move(script_value), s.line, s.column});
+    };
     if (p.name == "source_point") {
       std::string values;
       bool resolved = true;
-      for (std::size_t k = 0; k < 5; ++k) {
-        const grammar::ScriptArgument* a = grammar::script_argument(call, k, "");
-        if (!a || !a->value.number)
+      for (std::size_t k = 0; k < s.source_point.size(); ++k) {
+        if (!s.source_point[k].number)
           resolved = false;
         else
-          values += fmt::format("{}{}", k ? "," : "", *a->value.number);
+          values += fmt::format("{}{}", k ? "," : "", *s.source_point[k].number);
       }
-      if (resolved && values != p.text(options)) differ(p, values, call.line, call.column);
+      if (s.source_point_relative) values += " relative";
+      if (resolved && values != p.text(options)) differ(values);
       continue;
     }
-    const grammar::ScriptArgument* a =
-        grammar::script_argument(call, static_cast<std::size_t>(p.argument), p.keyword);
-    grammar::ScriptValue value;
-    if (a) {
-      value = a->value;
-    } else if (p.call_default) {
-      value.number = *p.call_default;
+    if (!s.value.resolved()) continue;
+    const auto number = p.number(options);
+    if (p.argument < 0 && p.name != "nb_steps") {
+      const bool called = *s.value.number != 0.0;
+      if (number && called != (*number != 0.0)) differ(called ? "called" : "not called");
+      continue;
     }
-    if (!value.resolved()) continue;
     bool same = true;
-    if (number && value.number) {
-      same = same_number(*number, *value.number);
-    } else if (value.text) {
+    if (number && s.value.number) {
+      same = same_number(*number, *s.value.number);
+    } else if (s.value.text) {
       // Strings: the NLGS storage and norm, compared as LMGC90 reads them (trailing blanks dropped).
-      const std::string run = p.text(options), given = trimmed(*value.text);
+      const std::string run = p.text(options), given = trimmed(*s.value.text);
       same = run == given || (p.name == "norm" && given == "MaxM" && run == "Quad");
     }
-    if (!same) differ(p, literal_text(value), call.line, call.column);
+    if (!same) differ(p.name == "nb_steps" ? fmt::format("{}", *s.value.number) : literal_text(s.value));
   }
   return out;
+}
+
+void apply_script_parameters(const grammar::CommandScript& script, bool three_d, RunOptions& options,
+                             ParameterSources& sources, grammar::DiagnosticSink& sink) {
+  for (const ScriptSetting& s : script_settings(script)) {
+    const RunParameter& p = *s.parameter;
+    const grammar::Location where{
+        script.path, grammar::SourceSpan{s.line, s.column, static_cast<std::uint16_t>(s.column + 1)}};
+    const std::string flag = p.flag.empty() ? std::string() : " (" + std::string(p.flag) + ")";
+    if (p.name == "source_point") {
+      const auto& v = s.source_point;
+      const bool resolved =
+          std::all_of(v.begin(), v.end(), [](const auto& x) { return x.number.has_value(); });
+      if (!resolved) {
+        sink.report("L4013", where,
+                    "command.py computes the source point; lmgc-solve runs " + p.text(options) + flag);
+        continue;
+      }
+      if (*v[0].number < 1.0 || *v[0].number != std::floor(*v[0].number) || !(*v[1].number > 0.0) ||
+          !std::isfinite(*v[2].number) || !std::isfinite(*v[3].number) || !std::isfinite(*v[4].number)) {
+        sink.report(
+            "L4010", where,
+            "the source point needs a first body of at least 1, a positive radius and a finite point");
+        continue;
+      }
+      options.source_first = static_cast<long>(*v[0].number);
+      options.source_radius = *v[1].number;
+      for (std::size_t d = 0; d < 3; ++d) options.source_point[d] = *v[d + 2].number;
+      options.source_point_absolute = !s.source_point_relative;
+      sources[std::string(p.name)] = ParameterSource::command_py;
+      continue;
+    }
+    if (!p.assign) continue;
+    if (!s.value.resolved()) {
+      sink.report("L4013", where,
+                  "command.py computes " + std::string(p.name) + " (" + s.expression + "); lmgc-solve runs " +
+                      p.text(options) + (sources.count(p.name) ? "" : " (its default)") + flag);
+      continue;
+    }
+    if (!p.assign(options, s.value)) {
+      // LMGC90's 3D NLGS keeps 'Quad ' for a norm it does not know (mod_nlgs_3D set_nlgs_parameter has
+      // no default branch): the same run, without a word, as LMGC90's.
+      if (p.name == "norm" && three_d && s.value.text) {
+        options.nlgs.norm = NlgsNorm::quad;
+        sources[std::string(p.name)] = ParameterSource::command_py;
+        continue;
+      }
+      sink.report("L4010", where,
+                  std::string(p.name) + " = " + literal_text(s.value) + " is not a value a run can take");
+      continue;
+    }
+    sources[std::string(p.name)] = ParameterSource::command_py;
+  }
 }
 
 std::string run_parameters_csv(const RunOptions& options, const ParameterSources& sources) {

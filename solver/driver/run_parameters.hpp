@@ -1,8 +1,9 @@
 #pragma once
 // The run parameters of lmgc-solve in one table: name (as LMGC90's command.py scripts name them),
 // flag, the COMMAND.DAT keyword and the chipy call that set them, and how a value is compared and
-// written. The layers apply in order (defaults, then COMMAND.DAT, then flags); each parameter
-// remembers which layer gave its value, and OUTBOX/run_parameters.csv records it with the run.
+// written. The layers apply in order (defaults, then the case's driver: the literals of its
+// command.py, or COMMAND.DAT; then flags); each parameter remembers which layer gave its value, and
+// OUTBOX/run_parameters.csv records it with the run.
 #include <map>
 #include <optional>
 #include <span>
@@ -11,12 +12,14 @@
 #include <vector>
 
 #include "grammar/command_py/script.hpp"
+#include "grammar/common/diagnostic.hpp"
 #include "solver/driver/run_options.hpp"
 
 namespace lmgc::solver {
 
-enum class ParameterSource { default_value, command_dat, flag };
-std::string_view source_name(ParameterSource source);  // "default", "COMMAND.DAT", "flag"
+enum class ParameterSource { default_value, command_dat, command_py, flag };
+// "default", "COMMAND.DAT", "command.py", "flag"
+std::string_view source_name(ParameterSource source);
 
 struct RunParameter {
   std::string_view name;         // "dt"
@@ -29,6 +32,9 @@ struct RunParameter {
   // The value of the run, as written in the report and compared with a script's literal.
   std::string (*text)(const RunOptions&);
   std::optional<double> (*number)(const RunOptions&);
+  // Sets the run's value from a script's literal; false when the literal is not a value the run
+  // can take (nullptr: the script's value is compared, never taken).
+  bool (*assign)(RunOptions&, const grammar::ScriptValue&) = nullptr;
   // The value of the chipy call's argument when the call is made without it (write and display
   // frequencies: every step), if any.
   std::optional<double> call_default = std::nullopt;
@@ -48,6 +54,32 @@ struct ScriptDifference {
   std::uint32_t line = 0;    // of the call in command.py
   std::uint16_t column = 0;
 };
+
+// What a command.py sets for one run parameter: the literal of the call's argument (or 1 when the
+// call alone sets it), or an unresolved value when the script computes it.
+struct ScriptSetting {
+  const RunParameter* parameter = nullptr;
+  grammar::ScriptValue value;  // for the source point: FIRST (see source_point below)
+  std::string expression;      // as written, for messages
+  std::uint32_t line = 0;      // of the call (0 when the call is absent: "not called")
+  std::uint16_t column = 0;
+  // RBDY3_SetSourcePoint(WithIni): first, radius, x, y, z, and which of the two calls.
+  std::vector<grammar::ScriptValue> source_point;
+  bool source_point_relative = false;
+};
+
+// Every run parameter the script sets, in the table's order. A call under a condition counts (the
+// condition is taken as it holds in LMGC90's default run: 'if "--norand" not in sys.argv'); of
+// several calls the last one; the step count comes from the time loop's range(); a parameter set by
+// the presence of a call is 1 when called, 0 when not.
+std::vector<ScriptSetting> script_settings(const grammar::CommandScript& script);
+
+// The script's layer: takes every value the script sets by a literal (sources[name] = command_py).
+// A value the run cannot take is an error (L4010), a value the script computes a warning that
+// names the value run instead and its flag (L4013), both at the call in command.py. `three_d`: the
+// 3D NLGS keeps 'Quad ' for a norm it does not know, as LMGC90's does.
+void apply_script_parameters(const grammar::CommandScript& script, bool three_d, RunOptions& options,
+                             ParameterSources& sources, grammar::DiagnosticSink& sink);
 
 // The parameters the script sets by a literal (or a name bound to one) that differ from the run's.
 // A parameter the script sets by a computed value, or under a condition, is compared only when its

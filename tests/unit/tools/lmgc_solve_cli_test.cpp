@@ -157,26 +157,82 @@ TEST(LmgcSolve, RunParametersRecordWhereEachValueCameFrom) {
 
 // A case with a command.py: lmgc-solve says that it does not run it, and names each parameter whose
 // value differs from the script's literal, with the script's line and the flag that would match it.
-TEST(LmgcSolve, NamesEachParameterThatDiffersFromTheScript) {
+const char* const kScript =
+    "from pylmgc90 import chipy\n"
+    "dt = 5e-4\n"
+    "theta = 0.5\n"
+    "chipy.TimeEvolution_SetTimeStep(dt)\n"
+    "chipy.Integrator_InitTheta(theta)\n"
+    "chipy.ExSolver('Stored_Delassus_Loops', 'Quad ', 1e-4, 1., 20, 30)\n"
+    "for k in range(30):\n"
+    "  chipy.IncrementStep()\n"
+    "  chipy.WriteOut(10)\n";
+
+// The case's command.py drives the run, as in LMGC90 2025: its literals are the run's parameters
+// (COMMAND.DAT is not read), and a flag that overrides one of them is named.
+TEST(LmgcSolve, TheScriptsLiteralsAreTheRunParameters) {
   const fs::path dir = default_case_copy("solve_script");
-  std::ofstream(dir / "command.py") << "from pylmgc90 import chipy\n"
-                                       "dt = 5e-4\n"
-                                       "theta = 0.5\n"
-                                       "chipy.TimeEvolution_SetTimeStep(dt)\n"
-                                       "chipy.Integrator_InitTheta(theta)\n"
-                                       "for k in range(3000):\n"
-                                       "  chipy.IncrementStep()\n"
-                                       "  chipy.WriteOut(100)\n";
-  const ToolRun run = run_tool_both_streams("lmgc-solve", "'" + dir.string() + "' --steps 3000");
-  EXPECT_EQ(run.exit_code, 0);
+  std::ofstream(dir / "command.py") << kScript;
+  const ToolRun run = run_tool_both_streams("lmgc-solve", "'" + dir.string() + "' --theta 0.6");
+  EXPECT_EQ(run.exit_code, 0) << run.output;
   EXPECT_NE(run.output.find("warning[L4011]"), std::string::npos) << run.output;
+  EXPECT_NE(
+      run.output.find("command.py:5:7: warning[L4008]: theta is 0.6 (flag); command.py passes 0.5 (--theta)"),
+      std::string::npos)
+      << run.output;
+  EXPECT_EQ(run.output.find("dt is"), std::string::npos) << run.output;
+  const std::string csv = read_file(dir / "OUTBOX" / "run_parameters.csv");
+  for (const char* row : {"dt,\"0.0005\",command.py", "nb_steps,\"30\",command.py",
+                          "tol,\"0.0001\",command.py", "gs_it1,\"20\",command.py", "gs_it2,\"30\",command.py",
+                          "freq_write,\"10\",command.py", "theta,\"0.6\",flag"})
+    EXPECT_NE(csv.find(row), std::string::npos) << row << "\n" << csv;
+  EXPECT_TRUE(fs::exists(dir / "OUTBOX" / "DOF.OUT.3"));
+  EXPECT_FALSE(fs::exists(dir / "OUTBOX" / "DOF.OUT.4"));
+}
+
+// --command-dat: the legacy driver; every parameter of the script that differs is named.
+TEST(LmgcSolve, CommandDatDrivesWhenAskedAndTheScriptsDifferencesAreNamed) {
+  const fs::path dir = default_case_copy("solve_script_dat");
+  std::ofstream(dir / "command.py") << kScript;
+  const ToolRun run = run_tool_both_streams("lmgc-solve", "'" + dir.string() + "' --command-dat --steps 30");
+  EXPECT_EQ(run.exit_code, 0) << run.output;
   EXPECT_NE(run.output.find(
                 "command.py:4:7: warning[L4008]: dt is 0.001 (COMMAND.DAT); command.py passes 0.0005 (--dt)"),
             std::string::npos)
       << run.output;
   EXPECT_EQ(run.output.find("theta is"), std::string::npos);
   EXPECT_EQ(run.output.find("nb_steps is"), std::string::npos);
-  EXPECT_EQ(run.output.find("freq_write is"), std::string::npos);
+  EXPECT_EQ(run.output.find("L4013"), std::string::npos);
+  EXPECT_NE(read_file(dir / "OUTBOX" / "run_parameters.csv").find("dt,\"0.001\",COMMAND.DAT"),
+            std::string::npos);
+}
+
+// What the script computes cannot be read without running it: the value run instead is named with
+// its flag. A literal the run cannot take is an error at the call.
+TEST(LmgcSolve, AComputedScriptParameterIsNamedAndABadOneRefused) {
+  const fs::path dir = default_case_copy("solve_script_computed");
+  std::ofstream(dir / "command.py") << "import sys\nfrom pylmgc90 import chipy\n"
+                                       "dt = float(sys.argv[1])\n"
+                                       "chipy.TimeEvolution_SetTimeStep(dt)\n"
+                                       "for k in range(5):\n  chipy.IncrementStep()\n";
+  ToolRun run = run_tool_both_streams("lmgc-solve", "'" + dir.string() + "'");
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(
+      run.output.find("command.py:4:7: warning[L4013]: command.py computes dt (dt); lmgc-solve runs 0.001 "
+                      "(its default) (--dt)"),
+      std::string::npos)
+      << run.output;
+  std::ofstream(dir / "command.py") << "from pylmgc90 import chipy\nchipy.TimeEvolution_SetTimeStep(-1e-3)\n"
+                                       "for k in range(5):\n  chipy.IncrementStep()\n";
+  run = run_tool_both_streams("lmgc-solve", "'" + dir.string() + "'");
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_NE(run.output.find("command.py:2:7: error[L4010]: dt = -0.001 is not a value a run can take"),
+            std::string::npos)
+      << run.output;
+  // lmgc-check says the same.
+  run = run_tool_both_streams("lmgc-check", "'" + dir.string() + "'");
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_NE(run.output.find("error[L4010]"), std::string::npos) << run.output;
 }
 
 // An output that cannot be written (a POSTPRO file on a full device) stops the run with exit 4,
