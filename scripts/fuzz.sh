@@ -22,13 +22,15 @@ cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz --target $(printf 'fuzz_%s ' "${targets[@]}")
 
 shared=${LMGC_SHARED_DIR:-../shared}
-machine=$(hostname -s 2>/dev/null || echo machine)
+machine=${LMGC_MACHINE:-debian12-2core}  # the label of bench/results/<machine>/, as the benches
 cpu=$(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')
 date=$(date -u +%Y-%m-%d)
 declare -A names=([bodies]=BODIES.DAT [bulk_behav]=BULK_BEHAV.DAT [tact_behav]=TACT_BEHAV.DAT [models]=MODELS.DAT
                   [drv_dof]=DRV_DOF.DAT [dof]=DOF.INI [vloc_rloc]=Vloc_Rloc.INI [gpv]=GPV.INI
                   [ptpt3_network]=PTPT3_NETWORK.DAT [postpro]=POSTPRO.DAT [command]=COMMAND.DAT
                   [command_py]=command.py)
+# Leaks inside libraries lmgc cannot fix (fuzz/lsan.supp says which and why).
+export LSAN_OPTIONS="suppressions=$PWD/fuzz/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 results=build/fuzz/results.csv
 echo "target,seconds,executions,coverage,features,corpus,findings" > "$results"
 for t in "${targets[@]}"; do

@@ -11,6 +11,7 @@
 
 #include "grammar/common/diagnostic_catalogue.hpp"
 #include "solver/driver/case_input.hpp"
+#include "solver/driver/run_parameters.hpp"
 #include "solver/integrator/step_2d.hpp"
 #include "solver/integrator/step_3d.hpp"
 #include "validate/checks.hpp"
@@ -44,13 +45,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   grammar::DiagnosticSink sink(5000);
   auto files = validate::load_case(scratch, sink);
   if (!files) return 0;
-  validate::check_case(*files, sink);
+  const validate::CheckOptions check_options;
+  validate::check_case(*files, sink, check_options);
   solver::report_solver_support(*files, sink);
   if (sink.has_errors()) return 0;
   for (const auto& d : sink.items())
     if (grammar::refuses_run(d.code)) return 0;
+  // The run's parameters from its driver, as lmgc-solve takes them.
   solver::RunOptions options;
-  solver::apply_command_parameters(*files, options, sink);
+  solver::ParameterSources sources;
+  if (validate::script_drives(*files, check_options))
+    solver::apply_script_parameters(*files->command_script, solver::is_rigid_3d_case(*files), options,
+                                    sources, sink);
+  else
+    solver::apply_command_parameters(*files, options, sink);
   if (sink.has_errors()) return 0;
   options.nlgs.gs_it1 = 5;
   options.nlgs.gs_it2 = 5;
