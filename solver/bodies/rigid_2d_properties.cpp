@@ -1,5 +1,6 @@
 #include "solver/bodies/rigid_2d_properties.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "solver/bodies/lmgc_pi.hpp"
@@ -68,7 +69,22 @@ ContactorInertia2D contactor_inertia_2d(const grammar::Contactor& c) {
   return k;
 }
 
-void normalise_rigid_body_2d(grammar::Body& body) {
+double polygon_outer_radius(const std::vector<Vector2d>& vertices) {
+  if (vertices.empty()) return 0.0;
+  double d1 = 0.0, d2 = 0.0;
+  for (const Vector2d& v : vertices) {
+    d1 += v.x();
+    d2 += v.y();
+  }
+  d1 /= static_cast<double>(vertices.size());
+  d2 /= static_cast<double>(vertices.size());
+  double radius = 0.0;
+  for (const Vector2d& v : vertices)
+    radius = std::max(radius, std::sqrt((d1 - v.x()) * (d1 - v.x()) + (d2 - v.y()) * (d2 - v.y())));
+  return radius;
+}
+
+void normalise_rigid_body_2d(grammar::Body& body, RigidContactorFrames2D* frames) {
   if (body.type != grammar::BodyType::rbdy2 || !body.rigid_bulk || body.nodes.empty()) return;
   grammar::RigidBulk& bulk = *body.rigid_bulk;
   grammar::Node& node = body.nodes.front();
@@ -107,6 +123,13 @@ void normalise_rigid_body_2d(grammar::Body& body) {
 
   for (std::size_t i = 0; i < parts.size(); ++i)
     if (body.contactors[i].type.value == "POLYG") recentre_polygon(body.contactors[i], parts[i].shift);
+  if (frames) {
+    frames->polygon_vertices.assign(parts.size(), {});
+    for (std::size_t i = 0; i < parts.size(); ++i)
+      if (body.contactors[i].type.value == "POLYG")
+        for (const auto& v : body.contactors[i].vertices)
+          frames->polygon_vertices[i].emplace_back(v[0].value, v[1].value);
+  }
 
   if (parts.size() == 1) {
     if (compute_bulk) {
@@ -156,6 +179,10 @@ void normalise_rigid_body_2d(grammar::Body& body) {
         store_shift(body.contactors[i], parts[i].shift);
       }
     }
+  }
+  if (frames) {
+    frames->shift.clear();
+    for (const auto& p : parts) frames->shift.push_back(p.shift);
   }
 }
 

@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <tuple>
 
 #include "solver/detection/pair_geometry_2d.hpp"
-#include "solver/detection/sort_interactions.hpp"
 #include "spatial/multilevel_grid.hpp"
 
 namespace lmgc::solver {
@@ -25,7 +26,96 @@ bool is_disk(const std::string& t) {
   return t == "DISKx" || t == "DISKb";
 }
 
+// The contactor shapes of a family: candidate, antagonist.
+constexpr std::array<std::pair<ContactorShape2D, ContactorShape2D>, kPairFamily2DCount> kFamilyShapes = {{
+    {ContactorShape2D::disk, ContactorShape2D::disk},         // DKDKx
+    {ContactorShape2D::disk, ContactorShape2D::hollow_disk},  // DKKDx
+    {ContactorShape2D::disk, ContactorShape2D::joncx},        // DKJCx
+    {ContactorShape2D::disk, ContactorShape2D::polygon},      // DKPLx
+    {ContactorShape2D::point, ContactorShape2D::point},       // PTPT2
+    {ContactorShape2D::polygon, ContactorShape2D::polygon},   // PLPLx
+    {ContactorShape2D::polygon, ContactorShape2D::joncx},     // PLJCx
+}};
+
+bool of_family(PairFamily2D f, ContactorShape2D shape) {
+  const auto& [cd, an] = kFamilyShapes[static_cast<std::size_t>(f)];
+  return shape == cd || shape == an;
+}
+
 }  // namespace
+
+// LMGC90's compute_box of each module (rigid-2d.md §3.2): maxray over the module's contactors
+// (a JONCx counts ax1 + ax2, a polygon its outer radius; big disks and polygons left out of their
+// own module's), maxalert over the '$seety' rows of exactly that (candidate, antagonist) pair.
+void set_rough_grids(const Scene2D& scene, VisibilityIndex2D& index) {
+  const std::size_t n = scene.contactors.size();
+  index.big.assign(n, 0);
+  double disk_max = 0.0, polygon_max = 0.0, joncx_max = 0.0, hollow_max = 0.0;
+  double disk_sum = 0.0, polygon_sum = 0.0;
+  std::size_t disks = 0, polygons = 0;
+  for (const Contactor2D& c : scene.contactors) switch (c.shape) {
+      case ContactorShape2D::disk:
+        disk_max = std::max(disk_max, c.radius);
+        disk_sum += c.radius;
+        ++disks;
+        break;
+      case ContactorShape2D::polygon:
+        polygon_max = std::max(polygon_max, c.bounding_radius);
+        polygon_sum += c.bounding_radius;
+        ++polygons;
+        break;
+      case ContactorShape2D::joncx:
+        joncx_max = std::max(joncx_max, c.half_length + c.half_width);
+        break;
+      case ContactorShape2D::hollow_disk:
+        hollow_max = std::max(hollow_max, c.radius);
+        break;
+      case ContactorShape2D::point:
+        break;
+    }
+  // Big contactors (mod_DKDKx big_ratio 5, mod_PLPLx 2 times the mean); the module's maxray is then
+  // that of the others.
+  double disk_max_small = disk_max, polygon_max_small = polygon_max;
+  const auto mark_big = [&](ContactorShape2D shape, double sum, std::size_t count, double ratio,
+                            double& max_small) {
+    if (count == 0) return;
+    const double mean = sum / static_cast<double>(count);
+    bool any = false;
+    for (std::size_t k = 0; k < n; ++k) {
+      const Contactor2D& c = scene.contactors[k];
+      if (c.shape != shape) continue;
+      const double r = shape == ContactorShape2D::disk ? c.radius : c.bounding_radius;
+      if (r > ratio * mean) index.big[k] = 1, any = true;
+    }
+    if (!any) return;
+    max_small = 0.0;
+    for (std::size_t k = 0; k < n; ++k)
+      if (scene.contactors[k].shape == shape && !index.big[k])
+        max_small =
+            std::max(max_small, shape == ContactorShape2D::disk ? scene.contactors[k].radius
+                                                                : scene.contactors[k].bounding_radius);
+  };
+  mark_big(ContactorShape2D::disk, disk_sum, disks, 5.0, disk_max_small);
+  mark_big(ContactorShape2D::polygon, polygon_sum, polygons, 2.0, polygon_max_small);
+  std::array<double, kPairFamily2DCount> alert{};
+  for (const Visibility2D& v : scene.visibility) {
+    PairFamily2D f;
+    if (pair_family_of(v.candidate_type, v.antagonist_type, f))
+      alert[static_cast<std::size_t>(f)] = std::max(alert[static_cast<std::size_t>(f)], v.alert);
+  }
+  std::array<double, kPairFamily2DCount> ray{};
+  ray[static_cast<std::size_t>(PairFamily2D::DKDKx)] = disk_max_small;
+  ray[static_cast<std::size_t>(PairFamily2D::DKKDx)] = std::max(disk_max, hollow_max);
+  ray[static_cast<std::size_t>(PairFamily2D::DKJCx)] = std::max(disk_max, joncx_max);
+  ray[static_cast<std::size_t>(PairFamily2D::DKPLx)] = std::max(polygon_max, disk_max);
+  ray[static_cast<std::size_t>(PairFamily2D::PLPLx)] = polygon_max_small;
+  ray[static_cast<std::size_t>(PairFamily2D::PLJCx)] = std::max(polygon_max, joncx_max);
+  for (int f = 0; f < kPairFamily2DCount; ++f) {
+    if (static_cast<PairFamily2D>(f) == PairFamily2D::PTPT2) continue;  // no grid: pairs in index order
+    const double box = 1.01 * (2.0 * ray[static_cast<std::size_t>(f)] + alert[static_cast<std::size_t>(f)]);
+    index.box_inverse[static_cast<std::size_t>(f)] = box > 0.0 ? 1.0 / box : 0.0;
+  }
+}
 
 bool pair_family_of(const std::string& cd, const std::string& an, PairFamily2D& family) {
   if (is_disk(cd) && is_disk(an))
@@ -88,6 +178,7 @@ VisibilityIndex2D build_visibility_index(const Scene2D& scene) {
         }
       }
     }
+  set_rough_grids(scene, index);
   return index;
 }
 
@@ -227,78 +318,209 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
 
   // Fine detection, with the roles of the pair family.
   std::vector<Vector2d> vertices_cd, normals_cd, vertices_an, normals_an;
+  // Edge normals as LMGC90 has them (mod_POLYG): computed once in the body frame, d = v_i - v_(i+1),
+  // n = (-d2, d1) times 1/|d|, then turned with the body; not from the turned vertices. On two
+  // parallel faces the shadow-overlap detection compares normals that are opposite up to round-off:
+  // only the same round-off chooses the same candidate and the same critical vertex.
   auto polygon_view = [&](std::size_t k, std::vector<Vector2d>& vertices, std::vector<Vector2d>& normals) {
     world_polygon(k, vertices);
+    const Contactor2D& c = scene.contactors[k];
     const std::size_t m = vertices.size();
     normals.resize(m);
     for (std::size_t i = 0; i < m; ++i) {
-      const Vector2d e = vertices[(i + 1) % m] - vertices[i];
-      normals[i] = Vector2d(e.y(), -e.x()).normalized();
+      const Vector2d& a = scene.vertices[static_cast<std::size_t>(c.first_vertex) + i];
+      const Vector2d& b = scene.vertices[static_cast<std::size_t>(c.first_vertex) + (i + 1) % m];
+      const double d1 = a.x() - b.x(), d2 = a.y() - b.y();
+      const double inverse = 1.0 / std::sqrt(d1 * d1 + d2 * d2);
+      normals[i] = orientation[k] * Vector2d(-d2 * inverse, d1 * inverse);
     }
     return PolygonView{vertices, normals, centre[k]};
   };
-  // Rough pairs in the order the interactions are kept (family, candidate, antagonist; periodic
-  // images of one pair by shift): fine detection then reads contactors in sequence and writes the
-  // list in order, where a 64k-disk step sorted its 53 MB of interactions by permuting them at
-  // random. Roles as the fine loop takes them; a pair no row sees sorts last. `order` lists the
-  // pairs in that order: sorted on (family, candidate), then each candidate's few pairs by
-  // (antagonist, shift) in place (std::sort of the keys was a twentieth of a 64k-disk step).
-  // The grid gives the pairs by candidate (it visits the contactors in order, and a pair's
-  // candidate is mostly the one it visits), so a counting sort on the family alone mostly does:
-  // the one on (family, candidate) zeroed and summed a table of nine entries per contactor, 2 MB
-  // at 64k disks. The pairs themselves are not moved: gathering them into a sorted copy went to
-  // memory at every pair of a 64k-disk layer.
+  // The roles of a pair: the visibility's, except that LMGC90 pairs a big contactor as the
+  // candidate of every other one (a big polygon against a big one: the lower index).
+  const auto roles_of = [&](std::size_t i, std::size_t j) {
+    PairRoles roles = pair_roles(index, i, j);
+    if (roles.seen && index.big[roles.antagonist] && !index.big[roles.candidate]) {
+      const auto family = static_cast<PairFamily2D>(index.family[roles.pair]);
+      if (family == PairFamily2D::DKDKx || family == PairFamily2D::PLPLx) {
+        const PairRoles turned = pair_roles(index, roles.antagonist, roles.candidate);
+        if (turned.seen && turned.candidate == roles.antagonist) roles = turned;
+      }
+    }
+    return roles;
+  };
+
+  // LMGC90's enumeration of each family's rough pairs (rigid-2d.md §3.2): on the family's box grid
+  // (its origin at this configuration's lowest contactor centres, x at 0 when periodic), boxes
+  // column by column (i1 outer; PLPLx row by row), a box's candidates by index, for each the 3 x 3
+  // neighbouring boxes in the same nesting and their antagonists by index; then the big
+  // contactors' pairs; then the periodic ones. `order` lists the rough pairs that way; the fine
+  // detection below keeps it, and so does the interaction list.
+  struct FamilyGrid {
+    double left = 0.0, down = 0.0, inverse = 0.0;
+    bool rows_first = false;  // PLPLx: i2 outer
+  };
+  std::array<FamilyGrid, kPairFamily2DCount> grids{};
+  for (int f = 0; f < kPairFamily2DCount; ++f) {
+    const auto family = static_cast<PairFamily2D>(f);
+    if (!scene.plan.families[static_cast<std::size_t>(f)] || family == PairFamily2D::PTPT2) continue;
+    FamilyGrid& g = grids[static_cast<std::size_t>(f)];
+    g.inverse = index.box_inverse[static_cast<std::size_t>(f)];
+    g.rows_first = family == PairFamily2D::PLPLx;
+    // DKKDx reads every contactor, visible or not; the others the visible ones, big ones left out.
+    const bool all = family == PairFamily2D::DKKDx;
+    const bool skip_big = family == PairFamily2D::DKDKx || family == PairFamily2D::PLPLx;
+    g.left = g.down = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!of_family(family, shape_of[k]) || (!all && !in_grid[k]) || (skip_big && index.big[k])) continue;
+      g.left = std::min(g.left, centre[k].x());
+      g.down = std::min(g.down, centre[k].y());
+    }
+    if (scene.x_period > 0.0 &&
+        (family == PairFamily2D::DKDKx || family == PairFamily2D::DKPLx || family == PairFamily2D::PLPLx))
+      g.left = 0.0;
+  }
+  // Box indices as LMGC90 computes them: 1 + int((x - Bleft) / Lbox), by the inverse.
+  const auto box_of = [&](const FamilyGrid& g, std::size_t k) {
+    return std::pair<std::int64_t, std::int64_t>{
+        1 + static_cast<std::int64_t>((centre[k].x() - g.left) * g.inverse),
+        1 + static_cast<std::int64_t>((centre[k].y() - g.down) * g.inverse)};
+  };
+  // The rank of each candidate in its family's enumeration (boxes in the family's nesting, then
+  // index), by a counting sort on the box when the grid is not much larger than its contactors.
+  thread_local std::array<std::vector<std::uint32_t>, kPairFamily2DCount> candidate_rank;
+  for (int f = 0; f < kPairFamily2DCount; ++f) {
+    const auto family = static_cast<PairFamily2D>(f);
+    std::vector<std::uint32_t>& rank = candidate_rank[static_cast<std::size_t>(f)];
+    if (!scene.plan.families[static_cast<std::size_t>(f)]) {
+      rank.clear();
+      continue;
+    }
+    rank.assign(n, std::numeric_limits<std::uint32_t>::max());
+    const ContactorShape2D shape = kFamilyShapes[static_cast<std::size_t>(f)].first;
+    if (family == PairFamily2D::PTPT2) {
+      std::uint32_t next = 0;
+      for (std::size_t k = 0; k < n; ++k)
+        if (shape_of[k] == shape) rank[k] = next++;
+      continue;
+    }
+    const FamilyGrid& g = grids[static_cast<std::size_t>(f)];
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys;
+    std::int64_t columns = 1, rows = 1;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (shape_of[k] != shape || index.big[k]) continue;
+      const auto [b1, b2] = box_of(g, k);
+      columns = std::max(columns, b1);
+      rows = std::max(rows, b2);
+      keys.push_back({0, static_cast<std::uint32_t>(k)});
+    }
+    const auto linear = [&](std::size_t k) {
+      const auto [b1, b2] = box_of(g, k);
+      const std::int64_t c = std::clamp<std::int64_t>(b1, 0, columns),
+                         r = std::clamp<std::int64_t>(b2, 0, rows);
+      return static_cast<std::uint64_t>(g.rows_first ? r * (columns + 1) + c : c * (rows + 1) + r);
+    };
+    for (auto& key : keys) key.first = linear(key.second);
+    const std::uint64_t boxes = static_cast<std::uint64_t>((columns + 1) * (rows + 1));
+    if (boxes <= 4 * keys.size() + 1024) {
+      thread_local std::vector<std::uint32_t> start;
+      start.assign(boxes + 1, 0);
+      for (const auto& key : keys) ++start[key.first + 1];
+      for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
+      for (const auto& key : keys) rank[key.second] = start[key.first]++;  // keys come by index: stable
+    } else {
+      std::sort(keys.begin(), keys.end());
+      for (std::size_t p = 0; p < keys.size(); ++p) rank[keys[p].second] = static_cast<std::uint32_t>(p);
+    }
+  }
   thread_local std::vector<std::uint32_t> order;
   {
+    // Grid pairs: counted into (family, candidate rank) buckets, then each bucket's few pairs by
+    // (neighbouring box, antagonist). Big contactors' and periodic pairs (few) follow their family's
+    // grid pairs, sorted on their own keys.
     const std::size_t family_slots = kPairFamily2DCount + 1;  // the last: pairs no row sees
-    // Kept from step to step, as `rough`.
     thread_local std::vector<std::size_t> bucket;
-    thread_local std::vector<std::uint32_t> antagonist, start;
-    thread_local std::vector<std::uint8_t> family_of;
-    bucket.resize(rough.size());
-    antagonist.resize(rough.size());
-    family_of.resize(rough.size());
-    std::array<std::size_t, family_slots + 1> family_start{};
-    for (std::size_t k = 0; k < rough.size(); ++k) {
-      const PairRoles roles = pair_roles(index, rough[k].i, rough[k].j);
-      const std::size_t cd = roles.candidate, an = roles.antagonist;
-      const std::size_t family =
-          roles.seen ? static_cast<std::size_t>(index.family[roles.pair]) : family_slots - 1;
-      bucket[k] = family * n + cd;
-      antagonist[k] = static_cast<std::uint32_t>(an);
-      family_of[k] = static_cast<std::uint8_t>(family);
-      ++family_start[family + 1];
-    }
-    order.resize(rough.size());
-    for (std::size_t f = 1; f < family_start.size(); ++f) family_start[f] += family_start[f - 1];
-    for (std::size_t k = 0; k < rough.size(); ++k)
-      order[family_start[family_of[k]]++] = static_cast<std::uint32_t>(k);
-    // Sorted on the family, stably: sorted on (family, candidate) too when no candidate comes
-    // after a larger one of its family.
-    bool by_candidate = true;
-    for (std::size_t p = 1; p < order.size(); ++p) by_candidate &= bucket[order[p - 1]] <= bucket[order[p]];
-    if (!by_candidate) {
-      start.assign(family_slots * n + 1, 0);
-      for (std::size_t k = 0; k < rough.size(); ++k) ++start[bucket[k] + 1];
-      for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
-      for (std::size_t k = 0; k < rough.size(); ++k)
-        order[start[bucket[k]]++] = static_cast<std::uint32_t>(k);
-    }
-    const auto before = [&](std::uint32_t x, std::uint32_t y) {
-      return std::tie(antagonist[x], rough[x].shift) < std::tie(antagonist[y], rough[y].shift);
+    thread_local std::vector<std::uint64_t> secondary;
+    thread_local std::vector<std::uint32_t> start;
+    struct Extra {
+      std::array<std::int64_t, 7> key;
+      std::uint32_t pair;
+      bool operator<(const Extra& o) const { return std::tie(key, pair) < std::tie(o.key, o.pair); }
     };
-    // Insertion into the run of the same bucket (stable: grid order among equal keys).
-    for (std::size_t p = 1; p < order.size(); ++p)
-      for (std::size_t q = p;
-           q > 0 && bucket[order[q - 1]] == bucket[order[q]] && before(order[q], order[q - 1]); --q)
-        std::swap(order[q - 1], order[q]);
+    std::array<std::vector<Extra>, kPairFamily2DCount + 1> extra;
+    bucket.resize(rough.size());
+    secondary.resize(rough.size());
+    constexpr std::size_t kNoBucket = static_cast<std::size_t>(-1);
+    for (std::size_t k = 0; k < rough.size(); ++k) {
+      const RoughPair& rp = rough[k];
+      const PairRoles roles = roles_of(rp.i, rp.j);
+      const std::size_t cd = roles.candidate, an = roles.antagonist;
+      if (!roles.seen) {
+        bucket[k] = kNoBucket;
+        extra[kPairFamily2DCount].push_back(
+            {{0, 0, 0, 0, 0, static_cast<std::int64_t>(rp.i), rp.j}, static_cast<std::uint32_t>(k)});
+        continue;
+      }
+      const std::size_t f = static_cast<std::size_t>(index.family[roles.pair]);
+      const auto family = static_cast<PairFamily2D>(f);
+      const FamilyGrid& g = grids[f];
+      if (rp.shift != 0) {
+        // Periodic: the contactor in the last box columns against one in the first columns, moved
+        // by a period (the one whose image the pair holds); DKPLx: disks there first, then polygons.
+        const std::size_t right = rp.shift > 0 ? rp.i : rp.j, left = rp.shift > 0 ? rp.j : rp.i;
+        const auto [r1, r2] = box_of(g, right);
+        const auto [l1, l2] = box_of(g, left);
+        const std::int64_t part = family == PairFamily2D::DKPLx && shape_of[right] != ContactorShape2D::disk;
+        bucket[k] = kNoBucket;
+        extra[f].push_back(
+            {{2 + part, r1, r2, static_cast<std::int64_t>(right), l1, l2, static_cast<std::int64_t>(left)},
+             static_cast<std::uint32_t>(k)});
+        continue;
+      }
+      if (index.big[cd] || index.big[an] || family == PairFamily2D::PTPT2) {
+        bucket[k] = kNoBucket;
+        extra[f].push_back({{family == PairFamily2D::PTPT2 ? 0 : 1, static_cast<std::int64_t>(cd),
+                             static_cast<std::int64_t>(an), 0, 0, 0, 0},
+                            static_cast<std::uint32_t>(k)});
+        continue;
+      }
+      const auto [c1, c2] = box_of(g, cd);
+      const auto [a1, a2] = box_of(g, an);
+      const std::int64_t d1 = a1 - c1 + 1, d2 = a2 - c2 + 1;
+      // A pair outside the 3 x 3 boxes is one LMGC90's grid does not enumerate: its fine test
+      // rejects it too; it comes last.
+      const std::uint64_t neighbour =
+          d1 < 0 || d1 > 2 || d2 < 0 || d2 > 2
+              ? 9
+              : static_cast<std::uint64_t>(g.rows_first ? d2 * 3 + d1 : d1 * 3 + d2);
+      bucket[k] = f * n + candidate_rank[f][cd];
+      secondary[k] = (neighbour << 32) | static_cast<std::uint64_t>(an);
+    }
+    start.assign(kPairFamily2DCount * n + 1, 0);
+    std::size_t grid_pairs = 0;
+    for (std::size_t k = 0; k < rough.size(); ++k)
+      if (bucket[k] != kNoBucket) ++start[bucket[k] + 1], ++grid_pairs;
+    for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
+    thread_local std::vector<std::uint32_t> grid_order;
+    grid_order.resize(grid_pairs);
+    for (std::size_t k = 0; k < rough.size(); ++k)
+      if (bucket[k] != kNoBucket) grid_order[start[bucket[k]]++] = static_cast<std::uint32_t>(k);
+    // Insertion into the run of the same bucket.
+    for (std::size_t p = 1; p < grid_order.size(); ++p)
+      for (std::size_t q = p; q > 0 && bucket[grid_order[q - 1]] == bucket[grid_order[q]] &&
+                              secondary[grid_order[q]] < secondary[grid_order[q - 1]];
+           --q)
+        std::swap(grid_order[q - 1], grid_order[q]);
+    order.clear();
+    order.reserve(rough.size());
+    std::size_t p = 0;
+    for (std::size_t f = 0; f < family_slots; ++f) {
+      for (; p < grid_order.size() && bucket[grid_order[p]] / n == f; ++p) order.push_back(grid_order[p]);
+      std::sort(extra[f].begin(), extra[f].end());
+      for (const Extra& e : extra[f]) order.push_back(e.pair);
+    }
   }
 
-  const auto key_of = [](const Interaction2D& c) {
-    return std::pair{(std::uint64_t(c.family) << 32) | std::uint32_t(c.candidate),
-                     (std::uint64_t(std::uint32_t(c.antagonist)) << 32) | std::uint32_t(c.candidate_vertex)};
-  };
-  bool in_order = true;
   const std::vector<Vector3d>& velocity_begin = scene.bodies.velocity_begin;
   // LMGC90's PLJCx detection (mod_PLJCx compute_contacts) leaves its contactor indices at 1 inside
   // the loop: every PLJCx interaction takes its begin velocities from the body of the first POLYG
@@ -334,7 +556,7 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
     } restore{centre, image_shift, j, centre[j].x()};
     image_shift[j] = rp.shift * scene.x_period;
     centre[j].x() += image_shift[j];
-    const PairRoles roles = pair_roles(index, i, j);
+    const PairRoles roles = roles_of(i, j);
     if (!roles.seen) continue;
     const std::size_t pair = roles.pair, cd = roles.candidate, an = roles.antagonist;
     const std::int32_t v = index.row[pair];
@@ -364,6 +586,10 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
         count = point_point(centre[cd], centre[an], found[0]);
         break;
       case PairFamily2D::PLPLx:
+        // mod_PLPLx compute_contact's pre-test on the outer radii, with the pair's alert distance.
+        if ((centre[cd] - centre[an]).squaredNorm() >=
+            (radii[cd] + radii[an] + see.alert) * (radii[cd] + radii[an] + see.alert))
+          break;
         count = polygon_polygon(polygon_view(cd, vertices_cd, normals_cd),
                                 polygon_view(an, vertices_an, normals_an), see.alert, found);
         break;
@@ -418,11 +644,8 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
       const Vector3d ta(tangent.x(), tangent.y(), c.lever_antagonist(0)),
           na(c.normal.x(), c.normal.y(), c.lever_antagonist(1));
       c.velocity_begin = Vector2d(tc.dot(vc) - ta.dot(va), nc.dot(vc) - na.dot(va));
-      if (out.size() > 1 && in_order && key_of(c) < key_of(out[out.size() - 2])) in_order = false;
     }
   }
-  // Written in order unless a pair's roles turned over in the fine test: sorted only then.
-  if (!in_order) sort_interactions(out, key_of);
 }
 
 }  // namespace lmgc::solver

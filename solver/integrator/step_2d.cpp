@@ -1,8 +1,10 @@
 #include "solver/integrator/step_2d.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <span>
 
 #include "solver/model/large_array.hpp"
 
@@ -83,51 +85,69 @@ bool scene_keeps_law_state_2d(const Scene2D& scene) {
 }
 
 void recup_rloc(RunState2D& state) {
-  // Both lists are sorted by the same key: a merge finds the matches in linear time.
-  auto key = [](const auto& c) {
-    return std::make_tuple(c.family, c.candidate, c.antagonist, c.candidate_vertex);
-  };
   if (state.contacts_stored) {
     // Stored by stock_rloc with no detection since: each interaction is its own previous one.
     for (Interaction2D& c : state.contacts) c.status_begin = c.status;
     return;
   }
   const LargeArray<Interaction2D>& previous = state.previous;
+  // The stored interactions of each candidate contactor, in their order (LMGC90's verlet lists are
+  // by candidate too): the lists come in detection order, so a match is looked up among its
+  // candidate's few stored interactions.
+  std::size_t contactors = 0;
+  for (const Interaction2D& p : previous)
+    contactors =
+        std::max<std::size_t>(contactors, static_cast<std::size_t>(std::max(p.candidate, p.antagonist)) + 1);
+  thread_local std::vector<std::uint32_t> first, by_candidate;
+  first.assign(contactors + 1, 0);
+  for (const Interaction2D& p : previous) ++first[static_cast<std::size_t>(p.candidate) + 1];
+  for (std::size_t k = 1; k < first.size(); ++k) first[k] += first[k - 1];
+  by_candidate.resize(previous.size());
+  {
+    thread_local std::vector<std::uint32_t> next;
+    next.assign(first.begin(), first.end() - 1);
+    for (std::size_t k = 0; k < previous.size(); ++k)
+      by_candidate[next[static_cast<std::size_t>(previous[k].candidate)]++] = static_cast<std::uint32_t>(k);
+  }
+  const auto stored_of = [&](std::int32_t candidate) {
+    const auto c = static_cast<std::size_t>(candidate);
+    if (c + 1 >= first.size()) return std::span<const std::uint32_t>{};
+    return std::span<const std::uint32_t>(by_candidate.data() + first[c], first[c + 1] - first[c]);
+  };
   // PLPLx between two parallel faces: which polygon holds the vertices depends on round-off, so a
   // pair may come back with its roles swapped (LMGC90's own detection keeps them; its
   // recup_rloc_ByPosition_PLPLx matches either role by position). The swapped pair's previous
   // point at the same place (within 1% of the distance between that pair's two points) is the match.
   const auto swapped_match = [&](const Interaction2D& c) -> const Interaction2D* {
-    const auto first = std::lower_bound(previous.begin(), previous.end(),
-                                        std::make_tuple(c.family, c.antagonist, c.candidate),
-                                        [&](const Interaction2D& p, const auto& k) {
-                                          return std::make_tuple(p.family, p.candidate, p.antagonist) < k;
-                                        });
-    auto last = first;
-    while (last != previous.end() && last->family == c.family && last->candidate == c.antagonist &&
-           last->antagonist == c.candidate)
-      ++last;
-    if (last - first != 2) return nullptr;  // face against face: two points
-    const double spacing = (first->point - (first + 1)->point).norm();
-    for (auto p = first; p != last; ++p)
-      if ((p->point - c.point).norm() < 0.01 * spacing) return &*p;
+    std::array<const Interaction2D*, 2> points{};
+    int count = 0;
+    for (std::uint32_t k : stored_of(c.antagonist)) {
+      const Interaction2D& p = previous[k];
+      if (p.family != c.family || p.antagonist != c.candidate) continue;
+      if (count < 2) points[static_cast<std::size_t>(count)] = &p;
+      ++count;
+    }
+    if (count != 2) return nullptr;  // face against face: two points
+    const double spacing = (points[0]->point - points[1]->point).norm();
+    for (const Interaction2D* p : points)
+      if ((p->point - c.point).norm() < 0.01 * spacing) return p;
     return nullptr;
   };
   // Internals from the stored list's, where both lists keep them (a warm start from a file, or a
   // scene whose laws have internals); 0 otherwise.
   const bool internals = !state.law_states.empty() && !state.previous_law_states.empty();
-  std::size_t j = 0;
   for (std::size_t k = 0; k < state.contacts.size(); ++k) {
     Interaction2D& c = state.contacts[k];
-    // Both lists' first lines, ahead: at 64k disks they come from memory, and the merge waited for each.
-    prefetch_ahead<true>(state.contacts, k);
-    prefetch_ahead<false>(previous, j);
-    while (j < previous.size() && key(previous[j]) < key(c)) ++j;
     const Interaction2D* match = nullptr;
     bool swapped = false;
-    if (j < previous.size() && key(previous[j]) == key(c)) {
-      match = &previous[j];
-    } else if (c.family == PairFamily2D::PLPLx) {
+    for (std::uint32_t m : stored_of(c.candidate)) {
+      const Interaction2D& p = previous[m];
+      if (p.family == c.family && p.antagonist == c.antagonist && p.candidate_vertex == c.candidate_vertex) {
+        match = &p;
+        break;
+      }
+    }
+    if (!match && c.family == PairFamily2D::PLPLx) {
       match = swapped_match(c);
       swapped = match != nullptr;
     }

@@ -47,7 +47,8 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
   std::vector<std::int32_t> body_of_rank;  // RBDY2 rank (1-based) -> body index
   for (grammar::Body body : in.bodies->bodies) {
     if (body.type != grammar::BodyType::rbdy2) continue;
-    normalise_rigid_body_2d(body);
+    RigidContactorFrames2D frames;
+    normalise_rigid_body_2d(body, &frames);
     const auto index = static_cast<std::int32_t>(scene.bodies.size());
     body_of_rank.push_back(index);
     const grammar::RigidBulk& bulk = *body.rigid_bulk;
@@ -109,15 +110,23 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
         c.shift = Vector2d(value(0), value(1));
       } else if (c.type == "POLYG") {
         c.shape = ContactorShape2D::polygon;
-        std::vector<Vector2d> vertices;
-        for (const auto& v : t.vertices) vertices.emplace_back(v[0].value, v[1].value);
-        double area, polar;
-        Vector2d centroid;
-        polygon_mass_properties(vertices, area, centroid, polar);
-        c.shift = centroid;
+        const std::size_t k = static_cast<std::size_t>(rank - 1);
         c.first_vertex = static_cast<std::int32_t>(scene.vertices.size());
-        c.vertex_count = static_cast<std::int32_t>(vertices.size());
-        for (const Vector2d& v : vertices) scene.vertices.push_back(v - centroid);
+        if (k < frames.shift.size() && k < frames.polygon_vertices.size()) {
+          // As LMGC90 holds it: vertices about the polygon's centroid, the centroid's offset.
+          c.shift = frames.shift[k];
+          c.vertex_count = static_cast<std::int32_t>(frames.polygon_vertices[k].size());
+          for (const Vector2d& v : frames.polygon_vertices[k]) scene.vertices.push_back(v);
+        } else {
+          std::vector<Vector2d> vertices;
+          for (const auto& v : t.vertices) vertices.emplace_back(v[0].value, v[1].value);
+          double area, polar;
+          Vector2d centroid;
+          polygon_mass_properties(vertices, area, centroid, polar);
+          c.shift = centroid;
+          c.vertex_count = static_cast<std::int32_t>(vertices.size());
+          for (const Vector2d& v : vertices) scene.vertices.push_back(v - centroid);
+        }
       } else {
         sink.report("L4001", grammar::Location{in.bodies_path, t.type.span},
                     "contactor '" + c.type + "' is not handled by the rigid 2D solver");
@@ -139,9 +148,9 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
           c.bounding_radius = 0.0;
           break;
         case ContactorShape2D::polygon:
-          for (std::int32_t k = 0; k < c.vertex_count; ++k)
-            c.bounding_radius = std::max(c.bounding_radius,
-                                         scene.vertices[static_cast<std::size_t>(c.first_vertex + k)].norm());
+          c.bounding_radius = polygon_outer_radius(
+              std::vector<Vector2d>(scene.vertices.begin() + c.first_vertex,
+                                    scene.vertices.begin() + c.first_vertex + c.vertex_count));
           break;
       }
       scene.contactors.push_back(c);

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "solver/bodies/lmgc_pi.hpp"
+#include "solver/bodies/rigid_2d_properties.hpp"
 #include "solver/detection/detection_2d.hpp"
 
 namespace lmgc::solver {
@@ -90,10 +91,10 @@ int SceneBuilder2D::add_polygon(double x, double y, const std::vector<Vector2d>&
   c.color = color;
   c.first_vertex = static_cast<std::int32_t>(scene_.vertices.size());
   c.vertex_count = static_cast<std::int32_t>(vertices.size());
-  for (const Vector2d& p : vertices) {
-    scene_.vertices.push_back(p - centroid);
-    c.bounding_radius = std::max(c.bounding_radius, (p - centroid).norm());
-  }
+  std::vector<Vector2d> centred;
+  for (const Vector2d& p : vertices) centred.push_back(p - centroid);
+  scene_.vertices.insert(scene_.vertices.end(), centred.begin(), centred.end());
+  c.bounding_radius = polygon_outer_radius(centred);
   scene_.contactors.push_back(c);
   return body;
 }

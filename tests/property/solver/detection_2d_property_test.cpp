@@ -1,6 +1,7 @@
-// Properties of 2D detection on random scenes: the list comes out in sweep order, disk pairs are
-// found exactly when their gap is within the alert distance, and each interaction carries the
-// relative velocity of its bodies at the start of the step.
+// Properties of 2D detection on random scenes: the list comes out in LMGC90's order (its families'
+// order, and in a family the order its box grid enumerates the pairs), disk pairs are found exactly
+// when their gap is within the alert distance, and each interaction carries the relative velocity
+// of its bodies at the start of the step.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -71,16 +72,89 @@ RandomScene random_scene() {
   return s;
 }
 
-auto sweep_key(const Interaction2D& c) {
-  return std::make_tuple(c.family, c.candidate, c.antagonist, c.candidate_vertex);
+// LMGC90's DKDKx enumeration written out as its loops (docs/lmgc90-facts/rigid-2d.md §3.2,
+// mod_DKDKx creation_tab_visu), for disks 0..n-1 (contactor index = disk index): boxes of side
+// Lbox = 1.01 (2 max radius + alert) from the lowest centres, i1 outer, i2 inner, candidates by
+// index, the 3 x 3 neighbouring boxes i1an outer, antagonists of larger index. With a period, the
+// grid starts at x = 0 and, after the grid pairs, the disks of the last two columns meet those of
+// the first two, moved by a period, as (lower index, higher index).
+std::vector<std::pair<int, int>> lmgc90_disk_pairs(const std::vector<std::pair<Vector2d, double>>& disks,
+                                                   double period, bool periodic_part) {
+  double ray = 0.0, left = 1e300, down = 1e300, right = -1e300, up = -1e300;
+  for (const auto& [c, r] : disks) {
+    ray = std::max(ray, r);
+    left = std::min(left, c.x());
+    down = std::min(down, c.y());
+    right = std::max(right, c.x());
+    up = std::max(up, c.y());
+  }
+  if (period > 0.0) left = 0.0, right = period;
+  const double inverse = 1.0 / (1.01 * (2.0 * ray + kAlert));
+  const auto box = [&](const Vector2d& c) {
+    return std::pair<long, long>{1 + static_cast<long>((c.x() - left) * inverse),
+                                 1 + static_cast<long>((c.y() - down) * inverse)};
+  };
+  const long columns = 1 + static_cast<long>((right - left) * inverse),
+             rows = 1 + static_cast<long>((up - down) * inverse);
+  std::vector<std::pair<int, int>> out;
+  const int n = static_cast<int>(disks.size());
+  if (!periodic_part) {
+    for (long i1 = 1; i1 <= columns; ++i1)
+      for (long i2 = 1; i2 <= rows; ++i2)
+        for (int cd = 0; cd < n; ++cd) {
+          if (box(disks[static_cast<std::size_t>(cd)].first) != std::pair{i1, i2}) continue;
+          for (long a1 = i1 - 1; a1 <= i1 + 1; ++a1)
+            for (long a2 = i2 - 1; a2 <= i2 + 1; ++a2)
+              for (int an = cd + 1; an < n; ++an)
+                if (box(disks[static_cast<std::size_t>(an)].first) == std::pair{a1, a2})
+                  out.emplace_back(cd, an);
+        }
+    return out;
+  }
+  for (long i1 = std::max(1L, columns - 1); i1 <= columns; ++i1)
+    for (long i2 = 1; i2 <= rows; ++i2)
+      for (int cd = 0; cd < n; ++cd) {
+        if (box(disks[static_cast<std::size_t>(cd)].first) != std::pair{i1, i2}) continue;
+        for (long a1 = 1; a1 <= 2; ++a1)
+          for (long a2 = i2 - 1; a2 <= i2 + 1; ++a2)
+            for (int an = 0; an < n; ++an)
+              if (an != cd && box(disks[static_cast<std::size_t>(an)].first) == std::pair{a1, a2})
+                out.emplace_back(std::min(cd, an), std::max(cd, an));
+      }
+  return out;
 }
 
-RC_GTEST_PROP(Detection2D, ListIsInSweepOrderAndFindsEveryDiskPairWithinTheAlertDistance, ()) {
+// `found`'s DKDKx pairs (those of `periodic` images or not) are `reference`'s, in its order, where
+// the reference is kept to the pairs found.
+bool in_lmgc90_order(const LargeArray<Interaction2D>& found,
+                     const std::vector<std::pair<int, int>>& reference, bool periodic) {
+  std::vector<std::pair<int, int>> got;
+  std::set<std::pair<int, int>> pairs;
+  for (const Interaction2D& c : found)
+    if (c.family == PairFamily2D::DKDKx && (c.periodic_shift != 0) == periodic) {
+      got.emplace_back(c.candidate, c.antagonist);
+      pairs.insert(got.back());
+    }
+  std::vector<std::pair<int, int>> expected;
+  for (const auto& p : reference)
+    if (pairs.count(p) && std::find(expected.begin(), expected.end(), p) == expected.end())
+      expected.push_back(p);
+  return got == expected;
+}
+
+bool families_in_order(const LargeArray<Interaction2D>& found) {
+  for (std::size_t k = 1; k < found.size(); ++k)
+    if (found[k].family < found[k - 1].family) return false;
+  return true;
+}
+
+RC_GTEST_PROP(Detection2D, ListIsInLmgc90sBoxOrderAndFindsEveryDiskPairWithinTheAlertDistance, ()) {
   RandomScene s = random_scene();
   const VisibilityIndex2D index = build_visibility_index(s.scene);
   LargeArray<Interaction2D> found;
   detect_contacts_2d(s.scene, index, s.coordinates, found);
-  for (std::size_t k = 1; k < found.size(); ++k) RC_ASSERT(!(sweep_key(found[k]) < sweep_key(found[k - 1])));
+  RC_ASSERT(families_in_order(found));
+  RC_ASSERT(in_lmgc90_order(found, lmgc90_disk_pairs(s.disks, 0.0, false), false));
 
   std::set<std::pair<int, int>> detected, expected;
   for (const Interaction2D& c : found)
@@ -102,7 +176,7 @@ RC_GTEST_PROP(Detection2D, ListIsInSweepOrderAndFindsEveryDiskPairWithinTheAlert
   RC_ASSERT(detected == expected);
 }
 
-RC_GTEST_PROP(Detection2D, PeriodicListIsInSweepOrderAndFindsDiskPairsAcrossTheSides, ()) {
+RC_GTEST_PROP(Detection2D, PeriodicListIsInLmgc90sBoxOrderAndFindsDiskPairsAcrossTheSides, ()) {
   // Disks in [0, P) x [0, P) with P far above their reach, so that a pair meets either directly or
   // across the side x = 0 = P, not both.
   constexpr double period = 0.1;
@@ -124,7 +198,14 @@ RC_GTEST_PROP(Detection2D, PeriodicListIsInSweepOrderAndFindsDiskPairsAcrossTheS
   const VisibilityIndex2D index = build_visibility_index(scene);
   LargeArray<Interaction2D> found;
   detect_contacts_2d(scene, index, coordinates, found);
-  for (std::size_t k = 1; k < found.size(); ++k) RC_ASSERT(!(sweep_key(found[k]) < sweep_key(found[k - 1])));
+  // The grid's pairs first, then those across the sides, each in LMGC90's order.
+  bool across = false;
+  for (const Interaction2D& c : found) {
+    RC_ASSERT(!(across && c.periodic_shift == 0));
+    across |= c.periodic_shift != 0;
+  }
+  RC_ASSERT(in_lmgc90_order(found, lmgc90_disk_pairs(disks, period, false), false));
+  RC_ASSERT(in_lmgc90_order(found, lmgc90_disk_pairs(disks, period, true), true));
 
   std::multiset<std::pair<int, int>> detected, expected;
   std::set<std::pair<int, int>> undecided;
