@@ -827,13 +827,44 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   }
   if (contacts.empty()) result.converged = true;
 
+  // Post (mod_nlgs_3D solve_nlgs i_post after RnodHRloc): the velocities rebuilt from scratch
+  // (Vfree + M^-1 H r), then one more relaxed sweep that solves every contact. With
+  // Stored_Delassus_Loops LMGC90 does not inject that sweep's changes: the bodies end the step with
+  // the velocities and impulses of the reactions before it, the contacts keep the new reactions.
+  const bool stored_delassus = options.storage == NlgsStorage::stored_delassus_loops;
+  std::vector<Vector6d> velocity_before_post;
+  if (!contacts.empty()) {
+    V = b.velocity_free;
+    for (Interaction3D& c : contacts)
+      if (!c.inactive && !c.r.isZero(0.0)) inject(c, c.r, b, V);
+    if (stored_delassus) {
+      velocity_before_post = V;
+      for (const Interaction3D& c : contacts)
+        if (!c.inactive && !c.r.isZero(0.0)) add_impulse(c, c.r, b.impulse);
+    }
+    for (const std::size_t k : order) {
+      Interaction3D& c = contacts[k];
+      if (c.inactive) continue;
+      Vector3d q_local;
+      const Vector3d r_solved = local_solve(k, q_local, sweep_forcing);
+      // Laws that re-evaluate their state at a check do it here too, from this solution's velocity.
+      if (law_updates_at_check[static_cast<std::size_t>(c.law)])
+        update_law_at_check(scene.laws[static_cast<std::size_t>(c.law)].law, c, law_state(k),
+                            local_velocity(c, V) + c.W * (r_solved - c.r), law_step);
+      const Vector3d r_new =
+          options.relax != 1.0 ? Vector3d(options.relax * r_solved + (1.0 - options.relax) * c.r) : r_solved;
+      if (r_new != c.r) inject(c, r_new - c.r, b, V);
+      c.r = r_new;
+    }
+  }
+
   // End of the solve, in one pass: Ireac of every body from the final reactions, relative velocities,
   // statuses, and the natural-map residual of the local problems (fc3d/FORMAT.md §3) in the auxiliary
   // variables u + covfree.
   double residual_squared = 0.0;
   for (std::size_t k = 0; k < contacts.size(); ++k) {
     Interaction3D& c = contacts[k];
-    if (!c.inactive && !c.r.isZero(0.0)) add_impulse(c, c.r, b.impulse);
+    if (!stored_delassus && !c.inactive && !c.r.isZero(0.0)) add_impulse(c, c.r, b.impulse);
     c.u = local_velocity(c, V);
     if (c.inactive) {
       c.status = ContactStatus::noctc;
@@ -853,6 +884,7 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
     }
     finish_law(scene.laws[static_cast<std::size_t>(c.law)].law, c, law_state(k), law_step);
   }
+  if (stored_delassus && !contacts.empty()) V = std::move(velocity_before_post);
   result.residual_absolute = std::sqrt(residual_squared);
   result.residual_relative = result.free_velocity_norm > 0.0
                                  ? result.residual_absolute / result.free_velocity_norm

@@ -243,6 +243,14 @@ void cohesive_solve(const SweepContact2D& c, const LawTerms2D& l, double vt, dou
   solve_signorini_coulomb_2d(c.wtt(), c.wtn(), c.wnn(), c.inverse, vt, vn, c.mu, rt, rn, status);
 }
 
+// Adds a contact's impulse to its two bodies (Ireac = Σ H r).
+void add_impulses(const SweepContact2D& k, double rt, double rn, std::vector<Vector3d>& impulse) {
+  const double tx = k.ny(), ty = -k.nx();
+  const Vector3d f(rt * tx + rn * k.nx(), rt * ty + rn * k.ny(), 0.0);
+  impulse[static_cast<std::size_t>(k.cd)] += f + Vector3d(0, 0, rt * k.gcd_t() + rn * k.gcd_n());
+  impulse[static_cast<std::size_t>(k.an)] -= f + Vector3d(0, 0, rt * k.gan_t() + rn * k.gan_n());
+}
+
 }  // namespace
 
 NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray<Interaction2D>& contacts,
@@ -829,11 +837,25 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
   // one more relaxed sweep, then the final local velocities and statuses.
   v = bodies.velocity_free;
   inject_all();
+  // With Stored_Delassus_Loops, LMGC90's post sweep updates the reactions without injecting them
+  // (mod_nlgs solve_nlgs: injj_ only when not SDLactif): the bodies end the step with the
+  // impulses and velocities of the reactions before it. Exchange_Local_Global injects them.
+  const bool stored_delassus = options.storage == NlgsStorage::stored_delassus_loops;
+  thread_local std::vector<Vector3d> velocity_before_post;
+  if (stored_delassus) {
+    velocity_before_post = v;
+    std::fill(bodies.impulse.begin(), bodies.impulse.end(), Vector3d::Zero());
+    for (std::size_t a = 0; a < count; ++a) {
+      const SweepContact2D& k = hot[slot[a]];
+      const ContactReaction2D& s = reaction[slot[a]];
+      add_impulses(k, s.rt, s.rn, bodies.impulse);
+    }
+  }
   if (count > 0) sweep(std::true_type{}, std::false_type{});
   // The achieved error is the one of the reactions actually returned (after the post sweep).
   double residual2 = 0.0;
   result.active = 0;
-  std::fill(bodies.impulse.begin(), bodies.impulse.end(), Vector3d::Zero());
+  if (!stored_delassus) std::fill(bodies.impulse.begin(), bodies.impulse.end(), Vector3d::Zero());
   LawState2D unused_law_state;  // the state handed to a law without internals, which does not touch it
   for (std::size_t a = 0; a < count; ++a) {
     prefetch_ahead<true>(contacts, a);  // the records the end writes, as in the reorder
@@ -855,13 +877,11 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     c.status =
         (s.rt == 0.0 && s.rn == 0.0 && !wet_or_cohesive) ? ContactStatus::noctc : final_status[slot[a]];
     // Contact impulses of every body (Ireac = Σ H r), driven dofs included (TORQUE EVOLUTION).
-    const double tx = k.ny(), ty = -k.nx();
-    const Vector3d f(s.rt * tx + s.rn * k.nx(), s.rt * ty + s.rn * k.ny(), 0.0);
-    bodies.impulse[static_cast<std::size_t>(k.cd)] += f + Vector3d(0, 0, s.rt * k.gcd_t() + s.rn * k.gcd_n());
-    bodies.impulse[static_cast<std::size_t>(k.an)] -= f + Vector3d(0, 0, s.rt * k.gan_t() + s.rn * k.gan_n());
+    if (!stored_delassus) add_impulses(k, s.rt, s.rn, bodies.impulse);
     finish_step_2d(scene.laws[static_cast<std::size_t>(c.law)].law, c,
                    keeps_law_state ? law_states[a] : unused_law_state, h, time);
   }
+  if (stored_delassus) v = velocity_before_post;
   result.residual_absolute = std::sqrt(residual2);
   result.residual_relative = result.free_velocity_norm > 0.0
                                  ? result.residual_absolute / result.free_velocity_norm
