@@ -16,8 +16,8 @@
 namespace lmgc::spatial {
 
 // The cell index of coordinate x, clamped so that absurd coordinates cannot overflow. Floor by
-// truncation: std::floor is a library call on the baseline x86-64 target, and it was a sixth of the
-// candidate-pair loop of a 64k-disk box in perf.
+// truncation: std::floor is a library call on the baseline x86-64 target, and this runs in the
+// candidate-pair loop.
 inline std::int64_t grid_index(double x, double cell) {
   constexpr double kLimit = 1099511627776.0;  // 2^40
   const double q = x / cell;
@@ -66,8 +66,8 @@ class MultilevelGrid {
       }
     for (Level& l : levels_) l.sort_entries();
     // Levels are powers of two of the radius: a scene with a few long walls has many empty ones
-    // between its grains' and its walls' (a 64k-disk layer: 11 levels, 3 of them occupied), and
-    // each item looked into every one above its own.
+    // between its grains' and its walls', so each item looks only into the occupied ones above
+    // its own.
     occupied_.clear();
     for (std::size_t l = 0; l < levels_.size(); ++l)
       if (!levels_[l].entries.empty()) occupied_.push_back(l);
@@ -177,14 +177,14 @@ class MultilevelGrid {
     std::vector<Entry> entries;
     // When the occupied cells' bounding box is small against the entries (a packing, not a few
     // items far apart), first_entry[k] is the first entry of dense cell k (x-major, then y, z; or
-    // y-major, then x, z): a lookup is one read instead of a binary search (the searches were most
-    // of the candidate-pair loop, itself a third to two fifths of a disk-box step in perf).
+    // y-major, then x, z): a lookup is one read instead of a binary search, at every query of the
+    // candidate-pair loop.
     Cell low{}, high{};
     std::int64_t nx = 0, ny = 0, nz = 0;
     // The table's order follows the items': y-major when, in a plane, the cell's x changes from
     // item to item more often than its y (bodies numbered row by row), so that the table is filled
     // in sequence and the queries of items in order walk it in sequence. In the x-major order, a
-    // 64k-disk layer numbered row by row scattered its entries over 2 MB and walked the whole table
+    // layer numbered row by row would scatter its entries over the table and walk the whole table
     // once per row.
     bool y_major = false;
     std::vector<std::uint32_t> first_entry;

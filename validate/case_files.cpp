@@ -1,5 +1,5 @@
 // Loading a case folder: which DATBOX files LMGC90 reads and how each is parsed and echoed.
-// spec: state-and-outputs.md §0 (layout), §1.6 (echo files); datbox-inputs.md §5 (evolution).
+// docs/lmgc90-facts/state-and-outputs.md §0 (layout), §1.6 (echo files); datbox-inputs.md §5 (evolution).
 #include "validate/case_files.hpp"
 
 #include <algorithm>

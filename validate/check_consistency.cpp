@@ -1,7 +1,7 @@
 // Consistency of a case beyond names: one dimension for every body, node, element and contactor;
 // elements and their models; models and the options LMGC90's own finite elements need; bulk
 // behaviours and what their users need; contact laws and the interactions they may serve;
-// evolution files. spec: datbox-inputs.md §1, §2, §4, §5; contact-laws.md §0, §4; facts from
+// evolution files. docs/lmgc90-facts/datbox-inputs.md §1, §2, §4, §5; contact-laws.md §0, §4; facts from
 // LMGC90's mod_models.f90 (init_models), mod_nlgs.f90 and mod_nlgs_3D.f90 (prep_nlgs) cited per table.
 #include <fmt/format.h>
 
@@ -138,7 +138,7 @@ std::string_view option5(const grammar::Word& value) {
 // ---- the checks ------------------------------------------------------------------------------
 
 // L2013: a case runs in one dimension (LMGC90 reads RBDY2 bodies in 2D, RBDY3 bodies in 3D,
-// datbox-inputs.md §1, §13); MAILx nodes, elements and contactors follow it.
+// datbox-inputs.md §1, §9 item 13); MAILx nodes, elements and contactors follow it.
 void check_dimensions(const CaseFiles& files, grammar::DiagnosticSink& sink) {
   const std::string path = datbox_path(files, "BODIES.DAT");
   const int dimension = case_dimension(files);

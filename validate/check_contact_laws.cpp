@@ -1,5 +1,5 @@
 // Physical sanity of TACT_BEHAV.DAT: friction, restitution, stiffnesses, alert distances.
-// spec: contact-laws.md §0 (parameters), §1.2 (alert).
+// docs/lmgc90-facts/contact-laws.md §0 (parameters), §1.2 (alert).
 #include <fmt/format.h>
 
 #include <algorithm>

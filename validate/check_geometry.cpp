@@ -1,5 +1,5 @@
 // Physical sanity of BODIES.DAT: sizes, polygon orientation and simplicity, closed polyhedra,
-// finite elements with positive Jacobian. spec: datbox-inputs.md §1.4-1.5.
+// finite elements with positive Jacobian. docs/lmgc90-facts/datbox-inputs.md §1.4-1.5.
 #include <fmt/format.h>
 
 #include <Eigen/Core>

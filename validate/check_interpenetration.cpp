@@ -3,7 +3,7 @@
 // LMGC90 never pushes an initial overlap out; with GAP laws it removes it in one step, as a
 // burst. Candidate pairs come from the solver's own spatial grid (spatial/multilevel_grid.hpp:
 // uniform grids, one per power-of-two level of radius): linear in the number of contactors.
-// spec: contact-laws.md §3.1 (IQS and GAP forms), datbox-inputs.md §1.4.
+// docs/lmgc90-facts/contact-laws.md §3.1 (IQS and GAP forms), datbox-inputs.md §1.4.
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // Physical sanity of BULK_BEHAV.DAT and of what loads a case: densities, elastic constants,
-// gravity and driven dofs. spec: datbox-inputs.md §2 (laws, ELAS block), §5 (driven dofs).
+// gravity and driven dofs. docs/lmgc90-facts/datbox-inputs.md §2 (laws, ELAS block), §5 (driven dofs).
 #include <fmt/format.h>
 
 #include <unordered_map>

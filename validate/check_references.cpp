@@ -1,6 +1,6 @@
 // Cross references between the files of a case: bulk behaviours and models named by bodies, laws
 // of visibility rows, element nodes, bodies, nodes and dofs named by DRV_DOF.DAT and DOF.INI,
-// nicknames defined twice, body numbers. spec: datbox-inputs.md §1-§6.
+// nicknames defined twice, body numbers. docs/lmgc90-facts/datbox-inputs.md §1-§6.
 #include <fmt/format.h>
 
 #include <unordered_map>

@@ -1,6 +1,6 @@
 // What the initial state files, PTPT3_NETWORK.DAT and POSTPRO.DAT name: the bodies and contactors
 // of the interactions of Vloc_Rloc.INI, the bodies and elements of GPV.INI, the points of the
-// PTPT3 network, the bodies and nodes of POSTPRO.DAT's commands. spec: datbox-inputs.md §7
+// PTPT3 network, the bodies and nodes of POSTPRO.DAT's commands. docs/lmgc90-facts/datbox-inputs.md §7
 // (Vloc_Rloc.INI, GPV.INI), §8 (POSTPRO.DAT); PTPT3_NETWORK.DAT: grammar/ptpt3_network/ast.hpp.
 #include <fmt/format.h>
 

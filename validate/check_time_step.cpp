@@ -9,7 +9,7 @@
 //    distance per step.
 // The fall height of a disk or sphere is measured down to the first contactor below it that a
 // visibility row lets it touch (per-column search over a grid of columns: n log n).
-// spec: contact-laws.md §1.2 (alert), §3.3 (penalty laws); numerics.md §6 (detection).
+// docs/lmgc90-facts/contact-laws.md §1.2 (alert), §3.3 (penalty laws); numerics.md §5.1 (detection).
 #include <fmt/format.h>
 
 #include <Eigen/Geometry>

@@ -1,6 +1,6 @@
 // The '$seety' table against the contactors present: pairs LMGC90 can detect, rows that never
 // match, colours no row mentions, conflicting rows, alert distances against contactor sizes.
-// spec: contact-laws.md §1.2, numerics.md §5.1.
+// docs/lmgc90-facts/contact-laws.md §1.2, numerics.md §5.1.
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -3,7 +3,7 @@
 // DOF.INI displacement of each body, and the contactor's own offset and frame. Shared by the
 // interpenetration and time-step checks. 2D bodies turn by coo3 + X(3); RBDY3 bodies by the frame
 // a, b, c of DOF.INI (contactor offsets and frames are taken as given in that body frame).
-// spec: datbox-inputs.md §1.2-1.4 (contactors), §6 (DOF.INI).
+// docs/lmgc90-facts/datbox-inputs.md §1.2-1.4 (contactors), §6 (DOF.INI).
 #include <Eigen/Core>
 #include <cstdint>
 #include <string>

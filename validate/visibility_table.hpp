@@ -1,7 +1,7 @@
 #pragma once
 // The '$seety' vocabulary shared by the checks: LMGC90's interaction families (which candidate
 // and antagonist contactors a row may name), the contactor names rows use, and the lookup of the
-// row that applies to two contactor classes. spec: contact-laws.md §1.2,
+// row that applies to two contactor classes. docs/lmgc90-facts/contact-laws.md §1.2,
 // state-and-outputs.md §1.4.1-1.4.2.
 #include <string>
 #include <string_view>

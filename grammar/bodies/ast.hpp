@@ -1,6 +1,6 @@
 #pragma once
 // BODIES.DAT as data: one struct per card, in LMGC90's vocabulary.
-// spec: datbox-inputs.md §1 (block structure, rigid and MAILx cards, echo).
+// docs/lmgc90-facts/datbox-inputs.md §1 (block structure, rigid and MAILx cards, echo).
 #include <array>
 #include <cstdint>
 #include <optional>

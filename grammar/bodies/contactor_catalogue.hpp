@@ -1,7 +1,7 @@
 #pragma once
 // The closed list of contactor kinds of BODIES.DAT: one row per keyword with the body types
 // that accept it and its card layout. Parser and writer both read this table.
-// spec: datbox-inputs.md §1.4 (rigid), §1.5 (MAILx), §10 (guide vs source).
+// docs/lmgc90-facts/datbox-inputs.md §1.4 (rigid), §1.5 (MAILx), §10 (guide vs source).
 #include <array>
 #include <span>
 #include <string_view>

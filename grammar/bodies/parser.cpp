@@ -1,4 +1,4 @@
-// BODIES.DAT reader. spec: datbox-inputs.md §1 (structure, cards), §0 (record rules), §9, §10.
+// BODIES.DAT reader. docs/lmgc90-facts/datbox-inputs.md §1 (structure, cards), §0 (record rules), §9, §10.
 #include "grammar/bodies/parser.hpp"
 
 #include <algorithm>

@@ -5,7 +5,7 @@
 
 namespace lmgc::grammar {
 
-// Reads BODIES.DAT (spec: datbox-inputs.md §1). Never throws; problems go to `sink`.
+// Reads BODIES.DAT (docs/lmgc90-facts/datbox-inputs.md §1). Never throws; problems go to `sink`.
 BodiesFile parse_bodies(const SourceText& source, DiagnosticSink& sink);
 
 }  // namespace lmgc::grammar

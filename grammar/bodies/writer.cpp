@@ -1,4 +1,4 @@
-// BODIES.OUT writer. spec: datbox-inputs.md §1.6 (order, header, separators), §1.3-1.5 (formats).
+// BODIES.OUT writer. docs/lmgc90-facts/datbox-inputs.md §1.6 (order, header, separators), §1.3-1.5 (formats).
 #include "grammar/bodies/writer.hpp"
 
 #include "grammar/bodies/contactor_catalogue.hpp"

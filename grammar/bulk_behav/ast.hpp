@@ -1,5 +1,5 @@
 #pragma once
-// BULK_BEHAV.DAT: gravity and bulk behaviour laws. spec: datbox-inputs.md §2.
+// BULK_BEHAV.DAT: gravity and bulk behaviour laws. docs/lmgc90-facts/datbox-inputs.md §2.
 // The AST holds what LMGC90 reads (values and option words); the labels LMGC90 writes come from
 // the catalogue (grammar/bulk_behav/catalogue.hpp), so the AST never repeats them.
 #include <array>

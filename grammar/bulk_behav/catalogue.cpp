@@ -1,4 +1,4 @@
-// The bulk law catalogue. spec: datbox-inputs.md §2; formats and labels are those of LMGC90's
+// The bulk law catalogue. docs/lmgc90-facts/datbox-inputs.md §2; formats and labels are those of LMGC90's
 // read_*/write_* sub-block routines of mod_bulk_behav (file-format facts, not code).
 #include "grammar/bulk_behav/catalogue.hpp"
 

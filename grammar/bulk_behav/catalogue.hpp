@@ -1,6 +1,6 @@
 #pragma once
 // The closed list of bulk behaviour law types and of their sub-blocks: ONE table, walked by
-// both the parser and the writer. spec: datbox-inputs.md §2 (table of law types, sub-blocks,
+// both the parser and the writer. docs/lmgc90-facts/datbox-inputs.md §2 (table of law types, sub-blocks,
 // echo formats).
 //
 // A law is its first line (Umas, or values for DISCRETE / JOINT_*) and an ordered list of

@@ -1,5 +1,5 @@
 // BULK_BEHAV.DAT reader: walks the law catalogue (grammar/bulk_behav/catalogue.hpp).
-// spec: datbox-inputs.md §2, §0 (line reader), §10 ($gravity).
+// docs/lmgc90-facts/datbox-inputs.md §2, §0 (line reader), §10 ($gravity).
 #include "grammar/bulk_behav/parser.hpp"
 
 #include <algorithm>
@@ -103,7 +103,7 @@ class BulkBehavParser {
     }
     const Line* values = next_line("the gravity values (grv1= at 25-38, grv2= at 46-59, grv3= at 67-80)");
     if (!values) return;
-    // spec: datbox-inputs.md §2: grv1 25-38, grv2 46-59, grv3 67-80.
+    // docs/lmgc90-facts/datbox-inputs.md §2: grv1 25-38, grv2 46-59, grv3 67-80.
     file.gravity[0] = reader_.real(*values, 25, 38);
     file.gravity[1] = reader_.real(*values, 46, 59);
     file.gravity[2] = reader_.real(*values, 67, 80);
@@ -287,7 +287,7 @@ class BulkBehavParser {
     }
     third_columns_blank_ = true;
     if (kind->first_line == BulkFirstLine::umas) {
-      // spec: datbox-inputs.md §2 read_UMASS: 'field' at 46-50, else Umas at 46-59.
+      // docs/lmgc90-facts/datbox-inputs.md §2 read_UMASS: 'field' at 46-50, else Umas at 46-59.
       if (columns(line->text, 46, 50) == "field")
         law.density_field = true;
       else

@@ -5,7 +5,7 @@
 
 namespace lmgc::grammar {
 
-// Reads BULK_BEHAV.DAT (spec: datbox-inputs.md §2). Never throws; problems go to `sink`.
+// Reads BULK_BEHAV.DAT (docs/lmgc90-facts/datbox-inputs.md §2). Never throws; problems go to `sink`.
 BulkBehavFile parse_bulk_behav(const SourceText& source, DiagnosticSink& sink);
 
 }  // namespace lmgc::grammar

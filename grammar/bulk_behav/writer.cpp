@@ -1,5 +1,5 @@
 // BULK_BEHAV.OUT writer: walks the law catalogue, as LMGC90's write_behaviours walks its
-// sub-block writers. spec: datbox-inputs.md §2 "Echo BULK_BEHAV.OUT".
+// sub-block writers. docs/lmgc90-facts/datbox-inputs.md §2 "Echo BULK_BEHAV.OUT".
 #include "grammar/bulk_behav/writer.hpp"
 
 #include <algorithm>

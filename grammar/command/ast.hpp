@@ -1,7 +1,7 @@
 #pragma once
 // COMMAND.DAT, the legacy CHIC driver: every line of the file, classified as LMGC90's CHIC
 // interpreter reads it, with what it ignores kept for a byte-exact echo.
-// spec: state-and-outputs.md §2.1.
+// docs/lmgc90-facts/state-and-outputs.md §2.1.
 #include <cstdint>
 #include <optional>
 #include <string>

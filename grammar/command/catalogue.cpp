@@ -20,7 +20,7 @@ constexpr std::span<const A> kNone{};
 
 // Module commands: chic_command_overall, chic_command_RBDY2/RBDY3/mecaMAILx/..., chic_command_nlgs,
 // postpro and display handlers of the v2-era wrappers; CHIC's own words at the end.
-// spec: state-and-outputs.md §2.1.2-2.1.3.
+// docs/lmgc90-facts/state-and-outputs.md §2.1.2-2.1.3.
 constexpr CommandKeyword kKeywords[] = {
     // Time, integrator, global (overall).
     {"DIME", "overall", M::prefix, I::none, kWord},

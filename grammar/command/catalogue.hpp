@@ -1,7 +1,7 @@
 #pragma once
 // The COMMAND.DAT keywords: one table, keyword -> module -> argument lines. Dispatch is by
 // prefix (each handler tests INDEX(line,'KEYWORD')==1); a few CHIC words are exact. The parser
-// classifies a line by the longest keyword that prefixes it. spec: state-and-outputs.md §2.1.3.
+// classifies a line by the longest keyword that prefixes it. docs/lmgc90-facts/state-and-outputs.md §2.1.3.
 #include <cstdint>
 #include <span>
 #include <string_view>

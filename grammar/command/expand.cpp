@@ -1,5 +1,5 @@
 // CHIC's compilation and execution of COMMAND.DAT (module CHIC: CHIC_comp, REPETE, STOPREP,
-// IOKEGAL, FLAGEGAL, CAPSUR). spec: state-and-outputs.md §2.1.2.
+// IOKEGAL, FLAGEGAL, CAPSUR). docs/lmgc90-facts/state-and-outputs.md §2.1.2.
 #include "grammar/command/expand.hpp"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 #pragma once
 // Running COMMAND.DAT: CHIC's compilation (APPELLE inlined, occurrences, REPETE loops resolved)
 // and its execution into the flat list of module commands a bounded run executes.
-// spec: state-and-outputs.md §2.1.2.
+// docs/lmgc90-facts/state-and-outputs.md §2.1.2.
 #include <cstdint>
 #include <functional>
 #include <map>

@@ -1,4 +1,4 @@
-// COMMAND.DAT reader. spec: state-and-outputs.md §2.1 (lexical rules, control structures,
+// COMMAND.DAT reader. docs/lmgc90-facts/state-and-outputs.md §2.1 (lexical rules, control structures,
 // keyword reference).
 #include "grammar/command/parser.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Reading fixed-column cards: the record rules shared by every LMGC90 reader
-// (spec: datbox-inputs.md §0): comment lines ('!' or '#' in column 1) and blank lines are
+// (docs/lmgc90-facts/datbox-inputs.md §0): comment lines ('!' or '#' in column 1) and blank lines are
 // skipped, keywords sit in columns 2-6, values are read from fixed column ranges.
 #include <optional>
 #include <string>

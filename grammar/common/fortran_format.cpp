@@ -11,7 +11,7 @@ namespace lmgc::grammar {
 namespace {
 
 // printf's "%.*e" of `value` into `buffer` (std::to_chars writes the same digits, several times
-// faster: POSTPRO's per-step lines spent most of a small case's run in snprintf); returns the length.
+// faster, and POSTPRO writes its lines at every step); returns the length.
 std::size_t scientific(char (&buffer)[64], double value, int digits_after_point) {
   const auto [end, error] =
       std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::scientific, digits_after_point);

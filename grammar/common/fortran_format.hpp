@@ -1,6 +1,6 @@
 #pragma once
 // Fortran formatted output, as gfortran prints it: the only way numbers reach LMGC90 files.
-// spec: state-and-outputs.md (notation), datbox-inputs.md §0 "Writers".
+// docs/lmgc90-facts/state-and-outputs.md (notation), datbox-inputs.md §0 "Writers".
 #include <cstdint>
 #include <string>
 #include <string_view>

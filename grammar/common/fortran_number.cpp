@@ -17,7 +17,7 @@ namespace {
 namespace x3 = boost::spirit::x3;
 using Range = boost::iterator_range<const char*>;
 
-// Grammar of a real with blanks removed (spec: datbox-inputs.md §0):
+// Grammar of a real with blanks removed (docs/lmgc90-facts/datbox-inputs.md §0):
 //   real     = [sign] mantissa [exponent]
 //   mantissa = digit+ ['.' digit*] | '.' digit+
 //   exponent = ('D'|'d'|'E'|'e') [sign] digit+ | sign digit+

@@ -1,6 +1,6 @@
 #pragma once
 // Fortran formatted input of numbers (gfortran, BLANK='NULL'): the lexical grammar of every
-// numeric field of every LMGC90 file. spec: datbox-inputs.md §0 "Semantics of a numeric field".
+// numeric field of every LMGC90 file. docs/lmgc90-facts/datbox-inputs.md §0 "Semantics of a numeric field".
 #include <cstdint>
 #include <optional>
 #include <string_view>

@@ -1,6 +1,6 @@
 #pragma once
 // Source text of one input file, split into Fortran records (lines), and positions in it.
-// spec: datbox-inputs.md §0 (records of 180 characters, CRLF accepted, comments in column 1).
+// docs/lmgc90-facts/datbox-inputs.md §0 (records of 180 characters, CRLF accepted, comments in column 1).
 #include <cstdint>
 #include <string>
 #include <string_view>

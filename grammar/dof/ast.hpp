@@ -1,6 +1,6 @@
 #pragma once
 // DOF.INI / DOF.OUT.n / DOF.LAST: the state of every body's nodes at one step.
-// spec: state-and-outputs.md §1.2 (header), §1.3 (blocks); datbox-inputs.md §6 (reading rules).
+// docs/lmgc90-facts/state-and-outputs.md §1.2 (header), §1.3 (blocks); datbox-inputs.md §6 (reading rules).
 #include <optional>
 #include <string>
 #include <vector>

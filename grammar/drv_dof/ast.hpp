@@ -1,6 +1,6 @@
 #pragma once
 // DRV_DOF.DAT (driven degrees of freedom) and the evolution files it names.
-// spec: datbox-inputs.md §5.
+// docs/lmgc90-facts/datbox-inputs.md §5.
 #include <array>
 #include <string>
 #include <vector>
@@ -43,7 +43,7 @@ struct DrvDofFile {
 };
 
 // An evolution file: list-directed `t v` pairs, one per record, t strictly increasing.
-// spec: datbox-inputs.md §5 "Evolution file".
+// docs/lmgc90-facts/datbox-inputs.md §5 "Evolution file".
 struct EvolutionPoint {
   Real time;
   Real value;

@@ -14,7 +14,7 @@
 namespace lmgc::grammar {
 namespace {
 
-// The six D14.7 fields of a dof line (spec: datbox-inputs.md §5).
+// The six D14.7 fields of a dof line (docs/lmgc90-facts/datbox-inputs.md §5).
 constexpr int kParameterColumns[6][2] = {{15, 28}, {30, 43}, {45, 58}, {60, 73}, {75, 88}, {90, 103}};
 
 int line_end_column(const Line& line) {

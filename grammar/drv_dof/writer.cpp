@@ -16,7 +16,7 @@
 namespace lmgc::grammar {
 namespace {
 
-// Fixed text of LMGC90's echo (spec: datbox-inputs.md §5 "Echo DRV_DOF.OUT").
+// Fixed text of LMGC90's echo (docs/lmgc90-facts/datbox-inputs.md §5 "Echo DRV_DOF.OUT").
 constexpr std::string_view kHeader = "     \n! DOF\n     \n";
 constexpr std::string_view kTemplate =
     "$dofty  numbr "

@@ -6,7 +6,7 @@
 namespace lmgc::grammar {
 
 // What LMGC90's DRV_DOF.OUT echo depends on beyond DRV_DOF.DAT: which modules of the run write
-// a section (spec: datbox-inputs.md §5 "Echo DRV_DOF.OUT"). A 2D run always has the RBDY2 module
+// a section (docs/lmgc90-facts/datbox-inputs.md §5 "Echo DRV_DOF.OUT"). A 2D run always has the RBDY2 module
 // (it writes its dashed line even with no driven body), a 3D run the RBDY3 module (no dashed
 // line); each MAILx module that holds bodies writes its driven bodies and a dashed line.
 struct DrvDofEchoSetup {

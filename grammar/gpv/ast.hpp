@@ -1,5 +1,5 @@
 #pragma once
-// GPV.INI / .LAST / .OUT.n: Gauss-point values of MAILx bodies. spec: state-and-outputs.md §1.5,
+// GPV.INI / .LAST / .OUT.n: Gauss-point values of MAILx bodies. docs/lmgc90-facts/state-and-outputs.md §1.5,
 // datbox-inputs.md §7. Each vector of a Gauss point is written with '(9D14.7)': consecutive
 // 14-column fields, wrapping after 9 values, an empty line for an empty vector. Per Gauss point:
 //   MECAx: stress, strain, [internal variables]   THERM: T, [grad, flux], [internal variables]

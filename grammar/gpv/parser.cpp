@@ -1,4 +1,4 @@
-// GPV reader. spec: state-and-outputs.md §1.2, §1.5; datbox-inputs.md §0, §7.
+// GPV reader. docs/lmgc90-facts/state-and-outputs.md §1.2, §1.5; datbox-inputs.md §0, §7.
 #include "grammar/gpv/parser.hpp"
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 
 namespace lmgc::grammar {
 
-// spec: state-and-outputs.md §1.2 (header), §1.5 (blocks).
+// docs/lmgc90-facts/state-and-outputs.md §1.2 (header), §1.5 (blocks).
 std::string write_gpv(const GpvFile& file) {
   std::string out = "     \n! Gauss Point Values\n      \n$steps  ";
   append_fortran_i(out, file.step.value, 7);

@@ -1,5 +1,5 @@
 #pragma once
-// MODELS.DAT: finite-element models of MAILx bodies. spec: datbox-inputs.md §4.
+// MODELS.DAT: finite-element models of MAILx bodies. docs/lmgc90-facts/datbox-inputs.md §4.
 #include <vector>
 
 #include "grammar/common/field.hpp"

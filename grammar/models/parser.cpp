@@ -1,4 +1,4 @@
-// MODELS.DAT reader. spec: datbox-inputs.md §4 (read_models of mod_models).
+// MODELS.DAT reader. docs/lmgc90-facts/datbox-inputs.md §4 (read_models of mod_models).
 #include "grammar/models/parser.hpp"
 
 #include <algorithm>

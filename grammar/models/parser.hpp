@@ -5,7 +5,7 @@
 
 namespace lmgc::grammar {
 
-// Reads MODELS.DAT (spec: datbox-inputs.md §4). Never throws; problems go to `sink`.
+// Reads MODELS.DAT (docs/lmgc90-facts/datbox-inputs.md §4). Never throws; problems go to `sink`.
 ModelsFile parse_models(const SourceText& source, DiagnosticSink& sink);
 
 }  // namespace lmgc::grammar

@@ -1,4 +1,4 @@
-// MODELS.OUT writer. spec: datbox-inputs.md §4 "Echo MODELS.OUT" (write_models of mod_models).
+// MODELS.OUT writer. docs/lmgc90-facts/datbox-inputs.md §4 "Echo MODELS.OUT" (write_models of mod_models).
 #include "grammar/models/writer.hpp"
 
 #include "grammar/common/fortran_format.hpp"

@@ -1,12 +1,13 @@
 #pragma once
-// POSTPRO.DAT: the post-processing commands of a run. spec: datbox-inputs.md §8.
+// POSTPRO.DAT: the post-processing commands of a run. docs/lmgc90-facts/datbox-inputs.md §8.
 #include <vector>
 
 #include "grammar/common/field.hpp"
 
 namespace lmgc::grammar {
 
-// How one argument line is read (the Fortran format of its READ). spec: datbox-inputs.md §8 table.
+// How one argument line is read (the Fortran format of its READ). docs/lmgc90-facts/datbox-inputs.md §8
+// table.
 enum class PostproLineFormat {
   i5,                 // one integer, columns 1-5
   i7,                 // one integer, columns 1-7

@@ -11,7 +11,7 @@ using F = PostproLineFormat;
 using R = PostproRepeat;
 
 // Argument layouts, from the READ statements of reading_data (mod_postpro_2D.f90:833-1999,
-// mod_postpro_3D.f90:735-1813). spec: datbox-inputs.md §8.
+// mod_postpro_3D.f90:735-1813). docs/lmgc90-facts/datbox-inputs.md §8.
 constexpr PostproStep kColour[] = {{F::a5, "the colour"}};
 constexpr PostproStep kSpecies[] = {{F::i5, "the number of species", R::last_integer, 1},
                                     {F::a5, "a species nickname"}};

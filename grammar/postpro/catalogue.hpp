@@ -1,7 +1,7 @@
 #pragma once
 // The POSTPRO.DAT commands LMGC90 knows (mod_postpro_2D: 40, mod_postpro_3D: 36), each with the
 // layout of the argument lines that follow its STEP line. One table, used by the parser (what
-// to read) and by tests and generators (what to build). spec: datbox-inputs.md §8 table.
+// to read) and by tests and generators (what to build). docs/lmgc90-facts/datbox-inputs.md §8 table.
 #include <span>
 #include <string>
 #include <string_view>

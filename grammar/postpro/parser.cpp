@@ -1,4 +1,4 @@
-// POSTPRO.DAT reader. spec: datbox-inputs.md §8 (reading rules and arguments).
+// POSTPRO.DAT reader. docs/lmgc90-facts/datbox-inputs.md §8 (reading rules and arguments).
 #include "grammar/postpro/parser.hpp"
 
 #include <string>

@@ -6,7 +6,7 @@
 namespace lmgc::grammar {
 namespace {
 
-// spec: datbox-inputs.md §8: only columns 1-30 are read; the ':' of column 31 is decoration.
+// docs/lmgc90-facts/datbox-inputs.md §8: only columns 1-30 are read; the ':' of column 31 is decoration.
 // A longer list-directed line (four integers) keeps a blank before its ':' so the last value
 // stays a separate item (the read stops after its last value and never reaches the ':').
 void line(std::string& out, std::string_view text) {

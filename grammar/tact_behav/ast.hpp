@@ -1,6 +1,6 @@
 #pragma once
 // TACT_BEHAV.DAT: contact laws (`$behav` cards) and the visibility table (`$seety` blocks).
-// spec: contact-laws.md §1.1-1.2, datbox-inputs.md §3.
+// docs/lmgc90-facts/contact-laws.md §1.1-1.2, datbox-inputs.md §3.
 #include <optional>
 #include <vector>
 

@@ -10,7 +10,7 @@ namespace {
 
 // Rows transcribed from LMGC90's reader (read_xxx_tact_behav), writer (write_xxx_tact_behav)
 // and info table (tact_behav_info_by_id), src/Core/shared/mod_tact_behav.f90; ids from
-// mod_parameters.f90. spec: contact-laws.md §0. Parameter names keep their 5 columns
+// mod_parameters.f90. docs/lmgc90-facts/contact-laws.md §0. Parameter names keep their 5 columns
 // ("cn   "), internal names their 14 (or 11) columns, as LMGC90 prints them.
 // Quirks reproduced on purpose (see each row's `quirk` text):
 //   PERIO_DOF        reads the same field three times (reads {0,1,0},{0,1,1},{0,1,2});

@@ -2,7 +2,7 @@
 // The catalogue of contact-law keywords of TACT_BEHAV.DAT: one row per LMGC90 law id, with the
 // parameter names LMGC90 prints, where the reader takes each value from, where the writer puts
 // it, and the law's internal variables (written later in Vloc_Rloc files).
-// spec: contact-laws.md §0 (catalogue), §1.1 (cards); state-and-outputs.md §1.4.4 (internals).
+// docs/lmgc90-facts/contact-laws.md §0 (catalogue), §1.1 (cards); state-and-outputs.md §1.4.4 (internals).
 #include <cstdint>
 #include <span>
 #include <string>
@@ -70,7 +70,7 @@ std::span<const LawKind> law_catalogue();
 const LawKind* find_law_kind(std::string_view keyword);
 
 // Keywords of LMGC90's 2012 user's guide that the current reader rejects, with the keyword
-// that replaced them (empty when there is none). spec: contact-laws.md §0 "Guide-only names".
+// that replaced them (empty when there is none). docs/lmgc90-facts/contact-laws.md §0 "Guide-only names".
 struct GuideOnlyLawName {
   std::string_view guide_name;
   std::string_view current_keyword;

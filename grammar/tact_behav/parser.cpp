@@ -14,7 +14,7 @@
 namespace lmgc::grammar {
 namespace {
 
-// Columns of the value fields of a law line (spec: contact-laws.md §1.1): read_single takes
+// Columns of the value fields of a law line (docs/lmgc90-facts/contact-laws.md §1.1): read_single takes
 // (7X,D14.7) from columns 39-59, read_double 2(7X,D14.7) from 39-80.
 constexpr int kValueColumns[2][2] = {{46, 59}, {67, 80}};
 
@@ -42,7 +42,8 @@ class TactBehavParser {
     TactBehavFile file;
     if (!reader_.check_records()) return file;
     read_laws(file);
-    // LMGC90 rewinds and fishes for `seety` independently of the law pass (spec: datbox-inputs.md §0).
+    // LMGC90 rewinds and fishes for `seety` independently of the law pass (docs/lmgc90-facts/datbox-inputs.md
+    // §0).
     reader_.rewind_to(0);
     reader_.skip_insignificant();
     read_sees(file);
@@ -57,7 +58,7 @@ class TactBehavParser {
     return reader_.next();
   }
 
-  // spec: contact-laws.md §1.1. A card starts at a line whose columns 2-6 are `behav`; the
+  // docs/lmgc90-facts/contact-laws.md §1.1. A card starts at a line whose columns 2-6 are `behav`; the
   // next significant line is the law line, whatever it holds.
   void read_laws(TactBehavFile& file) {
     while (!reader_.at_end()) {  // bounded: every iteration consumes a line
@@ -126,7 +127,7 @@ class TactBehavParser {
     file.laws.push_back(std::move(law));
   }
 
-  // spec: datbox-inputs.md §3, contact-laws.md §1.2.
+  // docs/lmgc90-facts/datbox-inputs.md §3, contact-laws.md §1.2.
   void read_sees(TactBehavFile& file) {
     while (!reader_.at_end()) {
       if (keyword_of(reader_.peek().text) != "seety") {
@@ -186,7 +187,7 @@ class TactBehavParser {
     return see;
   }
 
-  // spec: contact-laws.md §1.2 (remove_bad_see_links).
+  // docs/lmgc90-facts/contact-laws.md §1.2 (remove_bad_see_links).
   void check_duplicate_sees(const TactBehavFile& file) {
     const std::vector<std::size_t> duplicate_of = see_duplicate_of(file.sees);
     for (std::size_t j = 0; j < file.sees.size(); ++j) {

@@ -33,7 +33,7 @@ bool same_see_pair(const SeeEntry& a, const SeeEntry& b) {
             a_an = see_contactor_id(a.antagonist_contactor.value);
   const int b_cd = see_contactor_id(b.candidate_contactor.value),
             b_an = see_contactor_id(b.antagonist_contactor.value);
-  // spec: contact-laws.md §1.2 (remove_bad_see_links): same pair, or the same pair swapped.
+  // docs/lmgc90-facts/contact-laws.md §1.2 (remove_bad_see_links): same pair, or the same pair swapped.
   const bool same = a_an == b_an && a_cd == b_cd &&
                     padded(a.antagonist_colour) == padded(b.antagonist_colour) &&
                     padded(a.candidate_colour) == padded(b.candidate_colour) &&

@@ -1,7 +1,7 @@
 #pragma once
 // What LMGC90 does to the `$seety` entries once read (close_see_ll): merge duplicates, then
 // sort. The result is the order of LMGC90's `see` array: the order of TACT_BEHAV.OUT and the
-// search order of get_isee. spec: contact-laws.md §1.2.
+// search order of get_isee. docs/lmgc90-facts/contact-laws.md §1.2.
 #include <cstddef>
 #include <string_view>
 #include <vector>

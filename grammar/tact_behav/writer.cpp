@@ -11,7 +11,7 @@ namespace lmgc::grammar {
 namespace {
 
 // The fixed comment block LMGC90 writes first (write_comment, 96 lines; one line starts with a
-// blank instead of '!', the last is 72 blanks). spec: datbox-inputs.md §3 "Echo TACT_BEHAV.OUT".
+// blank instead of '!', the last is 72 blanks). docs/lmgc90-facts/datbox-inputs.md §3 "Echo TACT_BEHAV.OUT".
 constexpr std::array<std::string_view, 96> kHeader = {
     "! File BEHAVIOUR                                                        ",
     "!                                                                       ",
@@ -123,7 +123,8 @@ void append_value(std::string& out, const LawKind& kind, const TactLaw& law, std
 
 void append_law(std::string& out, const TactLaw& law) {
   out += "$behav  lawty\n";
-  // (1X,A5,2X,A30) on the first line, 38 blanks on the following ones (spec: datbox-inputs.md §3).
+  // (1X,A5,2X,A30) on the first line, 38 blanks on the following ones (docs/lmgc90-facts/datbox-inputs.md
+  // §3).
   std::string first;
   append_blanks(first, 1);
   append_fortran_a(first, law.nickname.value, 5);

@@ -1,6 +1,6 @@
 #pragma once
 // Vloc_Rloc.INI / .LAST / .OUT.n: the interactions of a step (local reactions, velocities, gaps,
-// frames, internal variables). spec: state-and-outputs.md §1.2, §1.4; datbox-inputs.md §7.
+// frames, internal variables). docs/lmgc90-facts/state-and-outputs.md §1.2, §1.4; datbox-inputs.md §7.
 #include <string>
 #include <vector>
 
@@ -19,7 +19,7 @@ struct VlocRlocInteraction {
   Word type;       // interaction module: DKDKx, PLPLx, PRPRx, ... (columns 9-13 of '$icdan')
   Integer number;  // icdan
   // The "xxl" layout (DKDKx, DKJCx, SPSPx with more than 99999 verlet contacts: wider number
-  // fields), recognised by its title line. spec: state-and-outputs.md §1.4.1, §1.4.2.
+  // fields), recognised by its title line. docs/lmgc90-facts/state-and-outputs.md §1.4.1, §1.4.2.
   bool xxl = false;
   std::string title;  // the title line, verbatim (LMGC90 skips it on reading; it depends on the module)
   // The data line, split by the module's format (interaction_catalogue.cpp): its A5 words

@@ -8,7 +8,7 @@ namespace {
 using L = VectorLineKind;
 using I = InternalLayout2D;
 
-// Vector lines (spec: state-and-outputs.md §1.4).
+// Vector lines (docs/lmgc90-facts/state-and-outputs.md §1.4).
 constexpr L kRlTns{{"rlt/H", "rln/H", "rls/H"}, 3};
 constexpr L kRlTnsBlank{{"rlt/H", "rln/H", "rls ="}, 3};
 constexpr L kRlStn{{"rls/H", "rlt/H", "rln/H"}, 3};

@@ -2,7 +2,7 @@
 // The interaction modules of LMGC90 and how each writes its Vloc_Rloc block: title line, data-line
 // format, the labelled vector lines in their order, the layout of internal variables. One table,
 // used by the parser, the writer and the solver's state writer.
-// spec: state-and-outputs.md §1.4.1 (2D), §1.4.2 (3D); docs/lmgc90-facts/rigid-2d.md §3.4.
+// docs/lmgc90-facts/state-and-outputs.md §1.4.1 (2D), §1.4.2 (3D); docs/lmgc90-facts/rigid-2d.md §3.4.
 #include <span>
 #include <string_view>
 #include <vector>

@@ -1,4 +1,4 @@
-// Vloc_Rloc reader. spec: state-and-outputs.md §1.2, §1.4; datbox-inputs.md §0, §7.
+// Vloc_Rloc reader. docs/lmgc90-facts/state-and-outputs.md §1.2, §1.4; datbox-inputs.md §0, §7.
 #include "grammar/vloc_rloc/parser.hpp"
 
 #include <string>

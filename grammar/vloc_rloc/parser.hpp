@@ -5,7 +5,7 @@
 
 namespace lmgc::grammar {
 
-// Reads Vloc_Rloc.INI / .LAST / .OUT.n (spec: state-and-outputs.md §1.4). Never throws.
+// Reads Vloc_Rloc.INI / .LAST / .OUT.n (docs/lmgc90-facts/state-and-outputs.md §1.4). Never throws.
 VlocRlocFile parse_vloc_rloc(const SourceText& source, DiagnosticSink& sink);
 
 }  // namespace lmgc::grammar

@@ -1,7 +1,7 @@
 #pragma once
 // A convex polyhedron contactor (POLYR) as LMGC90 holds it: a closed triangulated surface whose
 // vertices are expressed about a reference point, faces oriented outward.
-// spec: datbox-inputs.md §1.4 (POLYR), state-and-outputs.md (BODIES.OUT rewrites the vertices in
+// docs/lmgc90-facts/datbox-inputs.md §1.4 (POLYR), state-and-outputs.md (BODIES.OUT rewrites the vertices in
 // the inertia frame); docs/lmgc90-facts/polyhedra.md.
 #include <Eigen/Core>
 #include <array>

@@ -2,7 +2,7 @@
 // What LMGC90 computes from an RBDY2 body of BODIES.DAT before anything runs: equivalent radius
 // avrd and gyration radius gyrd when given as 0, the centre of inertia when the node is at the
 // origin, contactor shifts relative to it, polygon vertices relative to their centroid.
-// spec: datbox-inputs.md §1.4 "Read vs written"; LMGC90 mod_RBDY2 read_bodies, mod_a_BDARY_*.
+// docs/lmgc90-facts/datbox-inputs.md §1.4 "Read vs written"; LMGC90 mod_RBDY2 read_bodies, mod_a_BDARY_*.
 #include <Eigen/Core>
 #include <vector>
 

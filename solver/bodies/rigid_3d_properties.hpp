@@ -2,7 +2,7 @@
 // What LMGC90 computes for an RBDY3 body of BODIES.DAT before anything runs: its volume, mass,
 // equivalent radius avrd, principal inertia and principal frame, the centre of inertia (as a shift
 // of the BODIES.DAT node), and the contactor shifts/frames re-expressed about that centre and in
-// that frame. spec: datbox-inputs.md §1.2 (RBDY3 `PLAIN`), §1.4 (contactors, "Read vs written"),
+// that frame. docs/lmgc90-facts/datbox-inputs.md §1.2 (RBDY3 `PLAIN`), §1.4 (contactors, "Read vs written"),
 // numerics.md §1.2. LMGC90 (src/Core): rigid_3D/mod_RBDY3.f90 read_bodies (:941-1237), read_PLAIN
 // (:3073-3099), comp_mass_RBDY3 (:3731-3807); rigid_3D/mod_a_BDARY_SPHER.f90, mod_a_BDARY_PLANx.f90,
 // mod_a_BDARY_PT3Dx.f90; shared/mod_algebra.f90 diagonalise33 (:338-453).

@@ -1,6 +1,6 @@
 #pragma once
 // Rigid 2D bodies (RBDY2) as flat arrays indexed by body id. Degrees of freedom (x, y, θ) of the
-// centre of inertia. spec: numerics.md §1.1.
+// centre of inertia. docs/lmgc90-facts/numerics.md §1.1.
 #include <Eigen/Core>
 #include <string>
 #include <vector>

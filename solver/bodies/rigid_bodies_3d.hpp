@@ -2,7 +2,7 @@
 // Rigid 3D bodies (RBDY3) as flat arrays indexed by body id. Translation dofs of the centre of
 // inertia in the global frame; rotation velocity in the body's principal inertia frame, whose
 // orientation is carried by `frame` (columns = principal axes in global coordinates).
-// spec: numerics.md §1.2.
+// docs/lmgc90-facts/numerics.md §1.2.
 #include <Eigen/Core>
 #include <cstdint>
 #include <vector>
@@ -34,8 +34,8 @@ struct RigidBodies3D {
   void resize(std::size_t n);
 };
 
-// Frame update of `update_inertia_frame33` (spec: numerics.md §1.2): w = Σ spin_i e_i (spin in body
-// axes, e_i the columns of `frame`).
+// Frame update of `update_inertia_frame33` (docs/lmgc90-facts/numerics.md §1.2): w = Σ spin_i e_i (spin in
+// body axes, e_i the columns of `frame`).
 //   linearised: e_i' = e_i + h w × e_i, then Gram–Schmidt (LMGC90's default scheme, method 1);
 //   cayley:     e_i' = (I - h/2 [w]×)⁻¹ (I + h/2 [w]×) e_i (Hughes–Winget, `new_rotation_scheme`, method 2).
 enum class FrameUpdate : std::uint8_t { linearised, cayley };

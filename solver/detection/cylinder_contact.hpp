@@ -2,7 +2,8 @@
 // Fine detection of the rigid 3D cylinder (CYLND) families: a sphere against a cylinder (SPCDx), a
 // cylinder against a cylinder (CDCDx: capsules, i.e. segments swept by their radius) and a cylinder
 // against a PLANx (CDPLx: the two cap spheres). n points from the antagonist to the candidate.
-// spec: numerics.md §5.3; the facts and where we differ from LMGC90: docs/lmgc90-facts/cylinders.md.
+// docs/lmgc90-facts/numerics.md §5.3; the facts and where we differ from LMGC90:
+// docs/lmgc90-facts/cylinders.md.
 #include <Eigen/Core>
 #include <array>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Contact detection of a rigid 2D scene: rough detection on a uniform grid of bounding circles
 // (linear in the number of contactors), then fine detection per pair family.
-// spec: numerics.md §5.1-5.3.
+// docs/lmgc90-facts/numerics.md §5.1-5.3.
 #include <Eigen/Core>
 #include <array>
 #include <span>
@@ -23,9 +23,8 @@ struct VisibilityIndex2D {
   // (class_count²) pair family of (candidate class, antagonist class), -1 when LMGC90 has none.
   std::vector<std::int8_t> family;
   double max_alert = 0.0;
-  // The contactors' fixed data that detection reads at every step, compact (by contactor): from
-  // the 136-byte Contactor2D records, a 64k-disk layer's detection streamed 8.7 MB at every step
-  // for these few fields.
+  // The contactors' fixed data that detection reads at every step, compact (by contactor), so that
+  // detection does not stream the 136-byte Contactor2D records for these few fields.
   std::vector<std::int32_t> contactor_body;
   std::vector<ContactorShape2D> contactor_shape;
   std::vector<double> contactor_radius, contactor_bounding_radius;

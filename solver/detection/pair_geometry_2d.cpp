@@ -1,4 +1,4 @@
-// spec: docs/lmgc90-facts/rigid-2d.md §4.1-4.8.
+// docs/lmgc90-facts/rigid-2d.md §4.1-4.8.
 #include "solver/detection/pair_geometry_2d.hpp"
 
 #include <algorithm>

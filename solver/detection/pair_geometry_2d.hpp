@@ -1,7 +1,7 @@
 #pragma once
 // Fine detection of each 2D pair family, as LMGC90 computes it: gap, normal (from antagonist to
 // candidate), the point written to Vloc_Rloc, and the lever arms of both sides.
-// spec: docs/lmgc90-facts/rigid-2d.md §4 (numerics.md §5.3 for the summary).
+// docs/lmgc90-facts/rigid-2d.md §4 (numerics.md §5.3 for the summary).
 #include <Eigen/Core>
 #include <array>
 #include <span>

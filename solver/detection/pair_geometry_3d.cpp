@@ -1,4 +1,4 @@
-// spec: numerics.md §2 (comp_rep, SPSPx tangents), §5.3 (SPSPx, SPPLx). Operation order follows
+// docs/lmgc90-facts/numerics.md §2 (comp_rep, SPSPx tangents), §5.3 (SPSPx, SPPLx). Operation order follows
 // LMGC90's (mod_algebra cross_product/length3) so that the results match it to the last bit.
 #include "solver/detection/pair_geometry_3d.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Fine detection of the 3D rigid pair families, with LMGC90's local frames (t, n, s): n points from
-// the antagonist to the candidate, s = t × n. spec: numerics.md §2 (frames), §5.3 (SPSPx, SPPLx).
+// the antagonist to the candidate, s = t × n. docs/lmgc90-facts/numerics.md §2 (frames), §5.3 (SPSPx, SPPLx).
 #include <Eigen/Core>
 
 namespace lmgc::solver {

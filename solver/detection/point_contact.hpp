@@ -1,8 +1,9 @@
 #pragma once
 // PTPT3: links between PT3Dx points of different RBDY3 bodies (wires, rods, glue). Which points
 // are linked is decided once, in the reference configuration or by PTPT3_NETWORK.DAT; each step
-// the link's geometry is the segment between the two points. spec: contact-laws.md §3.4, numerics.md §5.3
-// (PTPT: gap = distance); LMGC90 contact_3D/mod_PTPT3.f90 compute_box (:340-693), compute_contact
+// the link's geometry is the segment between the two points. docs/lmgc90-facts/contact-laws.md §3.4,
+// numerics.md §5.3 (PTPT: gap = distance); LMGC90 contact_3D/mod_PTPT3.f90 compute_box (:340-693),
+// compute_contact
 // (:1018-1524).
 #include <Eigen/Core>
 #include <array>

@@ -1,7 +1,7 @@
 #pragma once
 // Fine detection of convex polyhedra (POLYR): against a PLANx (PRPLx) and against another POLYR
 // (PRPRx, Cundall's common plane). Up to four contact points per pair, all sharing one local frame
-// (t, n, s) with n from the antagonist to the candidate. spec: numerics.md §5.3 (PRPRx CpCundall,
+// (t, n, s) with n from the antagonist to the candidate. docs/lmgc90-facts/numerics.md §5.3 (PRPRx CpCundall,
 // PRPLx); the facts and where we differ from LMGC90: docs/lmgc90-facts/polyhedra.md.
 #include <Eigen/Core>
 #include <array>

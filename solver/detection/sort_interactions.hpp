@@ -1,8 +1,8 @@
 #pragma once
 // Detection's interactions in LMGC90's order (numerics.md §4 step 2: family by family, then by
 // candidate), 2D and 3D. Sorted through 24-byte keys: an interaction is 256 (2D) or 504 (3D) bytes,
-// and comparing or moving whole records in a sort was an eighth of a 64k-disk step and more than
-// the fine detection of a 64k-sphere one. Equal keys keep their detection order.
+// and a sort that compares or moves whole records streams them from memory over and over. Equal
+// keys keep their detection order.
 #include <algorithm>
 #include <cstdint>
 #include <tuple>
@@ -26,8 +26,6 @@ struct InteractionSortKey {
 // candidate's pairs interleave, and its antagonists come in cell order. So: a counting pass by family,
 // then an insertion sort of each family, which is linear for such a list; a family that needs more
 // than kMovesPerKey moves per key falls back to std::sort, as does a list with larger family values.
-// Replacing std::sort (n log n) took the ordering of a 64k-sphere step's points from 7.2 to 4.0-4.2 ms
-// (1k: 0.078 to 0.031-0.037 ms; timers around detection's stages, two runs each).
 inline void sort_nearly_ordered(std::vector<InteractionSortKey>& keys) {
   constexpr std::uint64_t kFamilies = 64;
   constexpr std::size_t kMovesPerKey = 16;

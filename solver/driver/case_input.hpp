@@ -1,7 +1,7 @@
 #pragma once
 // From a loaded case folder (validate::CaseFiles) to what a rigid 2D run needs: the Scene, the
 // POSTPRO commands, the warm start of Vloc_Rloc.INI, the run parameters of COMMAND.DAT, and the
-// echo files LMGC90 writes when it reads the case. spec: state-and-outputs.md §1, §2, §4.
+// echo files LMGC90 writes when it reads the case. docs/lmgc90-facts/state-and-outputs.md §1, §2, §4.
 #include <vector>
 
 #include "grammar/common/diagnostic.hpp"

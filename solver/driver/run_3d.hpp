@@ -1,6 +1,6 @@
 #pragma once
 // The run loop of a rigid 3D case: steps, OUTBOX state files (DOF, Vloc_Rloc .OUT.n and .LAST), the
-// run report, progress on a terminal, clean stop on Ctrl-C. spec: state-and-outputs.md §1, §2.2.
+// run report, progress on a terminal, clean stop on Ctrl-C. docs/lmgc90-facts/state-and-outputs.md §1, §2.2.
 #include <filesystem>
 #include <vector>
 

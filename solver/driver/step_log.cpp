@@ -13,8 +13,8 @@ namespace {
 
 // On small cases a step takes a few microseconds, and a line of numbers formatted through printf
 // (fmt 9 formats a given precision that way) about as long: std::to_chars writes the same digits as
-// printf's %.Ne / %.Ng, several times faster. (clusterDKPL_GroundJC's wall time was 2.9× the sum of
-// its steps, mostly its POSTPRO lines, which grammar/common/fortran_format.cpp now writes the same way.)
+// printf's %.Ne / %.Ng, several times faster. (POSTPRO lines are written the same way,
+// grammar/common/fortran_format.cpp.)
 constexpr double kFlushSeconds = 0.25;
 constexpr double kProgressSeconds = 0.1;
 

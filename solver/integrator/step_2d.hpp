@@ -1,6 +1,6 @@
 #pragma once
 // One Moreau–Jean θ-scheme step of a rigid 2D scene, as the stages of LMGC90's step
-// (spec: numerics.md §1.1, state-and-outputs.md §2.2): each stage is a plain function over the
+// (docs/lmgc90-facts/numerics.md §1.1, state-and-outputs.md §2.2): each stage is a plain function over the
 // scene's flat arrays, so a driver can call them one by one as LMGC90's command.py does.
 #include <span>
 #include <vector>
@@ -21,7 +21,7 @@ struct RunState2D {
   // The stored list the warm start reads (LMGC90's verlet list). stock_rloc stores `contacts` by
   // marking them (contacts_stored: until the next detection, `contacts` is the stored list and
   // `previous` an older one); the next detection swaps them in here before it writes the new list,
-  // so the store copies nothing (64k-disk layer: copying took stock_rloc 2.0-2.3 ms of a step).
+  // so the store copies nothing.
   LargeArray<Interaction2D> previous;
   // The interactions' internal variables, index for index with `contacts` and `previous`; both empty
   // in a scene whose laws have none (keeps_law_state_2d).

@@ -512,8 +512,8 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     return c;
   };
   // By (family, candidate, antagonist); the points of a pair stay in detection order. Each interaction
-  // is written once, in that order, from its point: detection wrote whole interactions and a gather
-  // moved them into order, and at 64k spheres that copy of 640-byte records was 11% of the step.
+  // is written once, in that order, from its point, so that no gather copies the large records into
+  // order afterwards.
   const std::vector<std::uint32_t> order = interaction_order(found, [](const DetectedPoint3D& d) {
     return std::pair{(std::uint64_t(d.family) << 32) | std::uint32_t(d.candidate),
                      std::uint64_t(std::uint32_t(d.antagonist)) << 32};
@@ -552,8 +552,8 @@ auto recup_key(const Interaction& c) {
 }
 
 // The stored list is built in one pass over the interactions, which also notes whether they come in
-// key order (detection's): at 64k spheres a second pass to check the order, and one to set the
-// statuses, each read the whole stored or interaction list from memory again.
+// key order (detection's): on a large scene a second pass to check the order, and one to set the
+// statuses, would each read the whole stored or interaction list from memory again.
 struct StoredListBuilder {
   LargeArray<StoredInteraction3D>& stored;
   bool sorted = true;
@@ -588,8 +588,8 @@ void recup_rloc(RunState3D& state) {
   // told apart by position (numerics.md §4, recup_rloc_PRPRx / recup_rloc_PRPLx). `previous` is
   // sorted by pair (store_interactions); the first entry of the pair that matches is taken.
   // Detection lists the contacts by the same key, so the pairs are found by walking both lists
-  // together; a contact out of that order is looked up by bisection. (A bisection per contact read
-  // some 18 scattered entries of the 22 MB list at 64k spheres.)
+  // together; a contact out of that order is looked up by bisection. (A bisection per contact would
+  // read about log2(n) scattered entries of the list.)
   const LargeArray<StoredInteraction3D>& previous = state.previous;
   const auto key_below = [](const StoredInteraction3D& p, const auto& k) { return recup_key(p) < k; };
   auto cursor = previous.begin();  // the first entry not below the last contact's key
@@ -638,8 +638,8 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
     return state.law_states.empty() ? unused_law_state : state.law_states[k];
   };
   // Whether each contact is without reaction, beside its visits: a sweep passes most open contacts
-  // by on these 12 bytes without reading their 504-byte interaction (open_contact_visits.hpp). In a
-  // 64k-sphere box 98% of the contacts are open, and each pass-by read two cache lines of it.
+  // by on these 12 bytes without reading their 504-byte interaction (open_contact_visits.hpp): in a
+  // packing most contacts are open, and a pass-by would read two cache lines of it.
   struct OpenContact {
     OpenContactSchedule visits;
     bool no_reaction = true;
@@ -665,19 +665,15 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
   // Inexact local solves in the sweeps: a Newton solve also stops at 1/100 of the residual of its
   // start (mostly the previous reaction), so sweeps far from convergence do not pay for 1e-10; near
   // convergence the start is already close and the tolerance rules. The check pass solves exactly.
-  // Measured against exact solves on LMGC90's examples (bench/rigid_examples.py, same hour):
-  // 100_PR_PerioBox 0.64 -> 0.58 ms/step (sweeps per step 425 -> 412, capped steps 9 -> 13, median
-  // residual 9.5e-11 -> 6.1e-11), Beam_ClusterPR 0.117 -> 0.096 ms/step, 945_SP_Box_PL (150 steps)
-  // 700 -> 686 sweeps per step.
   constexpr double sweep_forcing = 1e-2;
   // A sticking contact keeps its previous reaction when that solves its problem within 1/20 of the
   // local tolerance (local_solver_3d.hpp): converged sweeps then repeat their reactions bit for bit
   // and the rest of the block is skipped (below), where exact solves traded round-off for hundreds of
   // sweeps (100_PR_PerioBox checks every 400). 1/20 keeps the achieved residual at or below the exact
-  // solves' (100_PR_PerioBox, 10000 steps: median 1.3e-11 against 6.1e-11; with 1/1 it was 2.3e-10).
+  // solves'.
   const double keep_tolerance = local_tolerance / 20.0;
   // Each block's inverse in the local solver's order, once per step, when its contact first meets a
-  // compressive free velocity: a contact that stays open never needs it (98% of a 64k-sphere box's).
+  // compressive free velocity: a contact that stays open, as most of a packing's do, never needs it.
   std::vector<Matrix3d> W_inverse(contacts.size());
   std::vector<std::uint8_t> inverted(contacts.size(), 0);
   const auto inverse_of = [&](std::size_t k) -> const Matrix3d& {
@@ -712,8 +708,8 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
       Vector3d r = -q_local.cwiseQuotient(law_block(c).diagonal());  // invWnn = 1/WWnn
       const double bound = c.mu * r(1), tangential_squared = r(0) * r(0) + r(2) * r(2);
       // Inside the cone by a margin far above the sum of squares' round-off, |r_T| > bound cannot hold,
-      // and std::hypot (17% of Bridge_PR's run, called at every update) is only taken near or outside
-      // it: the same decisions and reactions bit for bit.
+      // and std::hypot (costly, and called at every update) is only taken near or outside it: the
+      // same decisions and reactions bit for bit.
       if (bound >= 0.0 && tangential_squared < bound * bound * (1.0 - 1e-12)) return with_cohesion(c, r);
       const double tangential = std::hypot(r(0), r(2));
       if (tangential > bound && tangential > 1e-18) {

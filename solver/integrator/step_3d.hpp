@@ -1,6 +1,6 @@
 #pragma once
 // One Moreau–Jean θ-scheme step of a rigid 3D scene, as the stages of LMGC90's step
-// (spec: numerics.md §1.2, §2-§5): each stage a plain function over the scene's flat arrays.
+// (docs/lmgc90-facts/numerics.md §1.2, §2-§5): each stage a plain function over the scene's flat arrays.
 #include <span>
 #include <vector>
 
@@ -21,9 +21,8 @@ struct RunState3D {
   // (keeps_law_state_3d).
   LargeArray<LawState3D> law_states;
   LargeArray<StoredInteraction3D> previous;  // last step's, by recup_rloc's key (store_interactions)
-  // Detection's points before sorting, kept from step to step for its memory: a list built afresh took
-  // new pages from the system at every step on large scenes (64k spheres: 9-12% of a step in kernel
-  // page handling, perf).
+  // Detection's points before sorting, kept from step to step for its memory: a list built afresh
+  // would take new pages from the system, for the kernel to fault in, at every step on large scenes.
   LargeArray<DetectedPoint3D> detected;
   bool laws_initialized = false;  // a step with interactions has been solved (LawStep::first_step)
   QuickScramble scramble;         // the sweep order's random lists, step after step

@@ -1,6 +1,6 @@
 #pragma once
 // POSTPRO time series of a rigid 2D run, in LMGC90's file names and line formats.
-// spec: state-and-outputs.md §4; docs/lmgc90-facts/rigid-2d.md §8.
+// docs/lmgc90-facts/state-and-outputs.md §4; docs/lmgc90-facts/rigid-2d.md §8.
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -34,8 +34,7 @@ struct PostproCommand2D {
 bool postpro_kind_of(std::string_view name, PostproKind2D& kind);
 
 // When the POSTPRO files are next flushed: at most kSeconds apart, so that an interrupted run keeps
-// nearly all it wrote without a write system call per line and step (12% of clusterDKPL_GroundJC's
-// run time when each line was flushed, perf).
+// nearly all it wrote without a write system call per line and step.
 class PostproFlushClock {
  public:
   static constexpr double kSeconds = 0.25;

@@ -1,7 +1,7 @@
 #pragma once
 // POSTPRO time series of a rigid 3D run, in LMGC90's file names and line formats: BODY TRACKING and
 // SOLVER INFORMATIONS; the other commands of POSTPRO.DAT are skipped (no file is written for them).
-// spec: state-and-outputs.md §4 (mod_postpro_3D.f90).
+// docs/lmgc90-facts/state-and-outputs.md §4 (mod_postpro_3D.f90).
 #include <cstdint>
 #include <filesystem>
 #include <fstream>

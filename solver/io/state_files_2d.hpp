@@ -1,6 +1,6 @@
 #pragma once
 // DOF and Vloc_Rloc state of a rigid 2D run in LMGC90's layout (through the grammar writers).
-// spec: state-and-outputs.md §1.2-1.4.
+// docs/lmgc90-facts/state-and-outputs.md §1.2-1.4.
 #include <string>
 
 #include "grammar/dof/ast.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // DOF and Vloc_Rloc state of a rigid 3D run in LMGC90's layout (through the grammar writers).
-// spec: state-and-outputs.md §1.2-1.4 (§1.4.2 for the 3D blocks).
+// docs/lmgc90-facts/state-and-outputs.md §1.2-1.4 (§1.4.2 for the 3D blocks).
 #include <vector>
 
 #include "grammar/dof/ast.hpp"

@@ -2,7 +2,7 @@
 // The contact-law catalogue: one header per law (its parameters, TACT_BEHAV keyword, reader, and
 // the derived Signorini–Coulomb problem it poses in 2D and/or 3D), gathered here into one table,
 // the ContactLaw variant. Adding a law: its header, one entry in the variant, its test.
-// spec: contact-laws.md §0 (catalogue), §2 (derived problem), §3 (laws one by one).
+// docs/lmgc90-facts/contact-laws.md §0 (catalogue), §2 (derived problem), §3 (laws one by one).
 #include <string_view>
 #include <variant>
 

@@ -1,4 +1,4 @@
-// spec: contact-laws.md §2 (derived Signorini–Coulomb), §3.1-3.4 (laws one by one).
+// docs/lmgc90-facts/contact-laws.md §2 (derived Signorini–Coulomb), §3.1-3.4 (laws one by one).
 #include "solver/laws/law_local_problem_2d.hpp"
 
 namespace lmgc::solver {

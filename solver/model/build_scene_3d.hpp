@@ -1,6 +1,6 @@
 #pragma once
 // Builds a rigid 3D Scene from the checked ASTs of a case (BODIES, TACT_BEHAV, DRV_DOF, DOF.INI,
-// evolution files) and the bulk data it needs (densities, gravity). spec: numerics.md §1.2.
+// evolution files) and the bulk data it needs (densities, gravity). docs/lmgc90-facts/numerics.md §1.2.
 #include <map>
 #include <string>
 

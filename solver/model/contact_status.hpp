@@ -1,5 +1,5 @@
 #pragma once
-// Contact statuses, written as LMGC90's 5-character names. spec: state-and-outputs.md §1.4.3.
+// Contact statuses, written as LMGC90's 5-character names. docs/lmgc90-facts/state-and-outputs.md §1.4.3.
 #include <cstdint>
 #include <string_view>
 

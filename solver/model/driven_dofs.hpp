@@ -1,6 +1,6 @@
 #pragma once
 // Reading DRV_DOF.DAT and DOF.INI for rigid bodies of one type, shared by the 2D and 3D scene
-// builders. spec: datbox-inputs.md §5 (driven dofs), §6 (DOF.INI).
+// builders. docs/lmgc90-facts/datbox-inputs.md §5 (driven dofs), §6 (DOF.INI).
 #include <cstdint>
 #include <map>
 #include <span>

@@ -1,6 +1,6 @@
 #pragma once
 // A 2D interaction (one contact point between a candidate and an antagonist contactor), with
-// its local frame, its Delassus block and the unknowns of the step. spec: numerics.md §2-§4.
+// its local frame, its Delassus block and the unknowns of the step. docs/lmgc90-facts/numerics.md §2-§4.
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
@@ -82,8 +82,8 @@ struct LocalProblem2D : Interaction2D {
 
 // A 2D law's internal variables (contact-laws.md, state-and-outputs §1.4.4), warm started and
 // written to Vloc_Rloc. Kept beside the interaction list, index for index, only in a scene with a
-// law that has some (keeps_law_state_2d): in every record they were 48 of the bytes each pass over
-// a 64k-disk list streamed, for laws (IQS_CLB, ...) that have none.
+// law that has some (keeps_law_state_2d): in every record they would be 48 bytes that each pass over
+// a large list streams, for laws (IQS_CLB, ...) that have none.
 struct LawState2D {
   std::array<double, 6> internal{};
 };

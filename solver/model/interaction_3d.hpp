@@ -1,7 +1,7 @@
 #pragma once
 // A 3D interaction (one contact point between a candidate and an antagonist contactor): its local
 // frame (t, n, s), lever arms, Delassus block, the law's local problem and the unknowns of the
-// step; and the 3D pair families. spec: numerics.md §2-§4.
+// step; and the 3D pair families. docs/lmgc90-facts/numerics.md §2-§4.
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
@@ -14,8 +14,7 @@ namespace lmgc::solver {
 
 // 3D interaction families (the order interactions are kept and swept in). LMGC90 sweeps SPSPx,
 // SPPLx, SPPRx, SPCDx, SPDCx, PRPLx, PRPRx, PTPT3, CDCDx, CDPLx (mod_nlgs_3D :670-682); sweeping in
-// that order moved Bridge_PR 6× farther from LMGC90 (4.5e-4 m against 7.7e-5 m over 130 steps), so
-// this order stays.
+// that order takes Bridge_PR farther from LMGC90's results, so this order stays.
 enum class PairFamily3D : std::uint8_t {
   SPSPx,
   SPPLx,
@@ -136,8 +135,8 @@ static_assert(sizeof(Interaction3D) == 504);
 
 // What only some laws keep or read per interaction: their internal variables, the contact surface and
 // reference length they use, the cohesive zone's terms. Kept beside the interaction list, index for
-// index, and only in a scene with such a law (keeps_law_state_3d): each of these 120 bytes in every
-// interaction was streamed by every pass over a 64k-sphere box's list, whose law uses none of them.
+// index, and only in a scene with such a law (keeps_law_state_3d): in every interaction these 120
+// bytes would be streamed by every pass over a large list whose law uses none of them.
 struct LawState3D {
   std::array<double, 6> internal{};  // the law's internal variables (Vloc_Rloc's, warm started)
   // A law's value that the step's convergence checks may change before the end of the step stores

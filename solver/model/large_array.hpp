@@ -2,10 +2,9 @@
 // Flat arrays that a large scene's step streams through (interactions, detection's points, the
 // stored verlet list, the 2D sweep arrays): from 2 MB up, each is allocated on 2 MB boundaries and the
 // kernel is asked to back it with transparent huge pages (madvise, the mode Debian's kernels default
-// to). With 4 KB pages, every pass over a 120 MB list of interactions and every body lookup of a
-// sweep walked the page tables: at 64k spheres a step took 0.28-0.34 s with ordinary pages and
-// 0.24-0.28 s with huge ones for every allocation (glibc.malloc.hugetlb=1, same binary). The advice
-// is only a hint: where the kernel has no huge page to give, or THP is off, the pages are ordinary.
+// to). With 4 KB pages, every pass over a large list of interactions and every body lookup of a
+// sweep walks the page tables. The advice is only a hint: where the kernel has no huge page to
+// give, or THP is off, the pages are ordinary.
 #include <sys/mman.h>
 
 #include <cstddef>
@@ -54,9 +53,8 @@ template <class T>
 using LargeArray = std::vector<T, HugePageAllocator<T>>;
 
 // A pass that goes through a large array in order asks for the element kPrefetchAhead places on (for
-// writing when `write`), nothing past the end: at 64k disks the passes over the interactions waited
-// on each record from memory (warm start 0.034-0.037 -> 0.030 ms per 1968 contacts; wavefront
-// reorder 39 -> 17 and end of the step 44 -> 39 ns per contact).
+// writing when `write`), nothing past the end: on a large scene the passes over the interactions
+// would otherwise wait on each record from memory.
 inline constexpr std::size_t kPrefetchAhead = 16;
 template <bool write, class T>
 [[gnu::always_inline]] inline void prefetch_ahead(const LargeArray<T>& array, std::size_t index) {

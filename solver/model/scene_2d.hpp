@@ -45,7 +45,7 @@ struct NamedLaw {
 };
 
 // v(t) = (CT + AMP cos(OMEGA t + PHI)) min(1, RAMPI + RAMP t), or an evolution table
-// (linear interpolation and extrapolation). spec: datbox-inputs.md §5.
+// (linear interpolation and extrapolation). docs/lmgc90-facts/datbox-inputs.md §5.
 struct DrivenDof2D {
   std::int32_t body = 0;
   std::int32_t dof = 0;   // 0, 1, 2

@@ -1,7 +1,7 @@
 #pragma once
 // Everything a rigid 3D run needs, as flat arrays: RBDY3 bodies, sphere and plane contactors,
 // laws, visibility rows, and the ScenePlan3D saying which pair families the scene uses.
-// spec: numerics.md §1.2, §2, §5.3. Local vectors are in LMGC90's order (t, n, s).
+// docs/lmgc90-facts/numerics.md §1.2, §2, §5.3. Local vectors are in LMGC90's order (t, n, s).
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>

@@ -1,8 +1,8 @@
 #pragma once
 // The local problems of the 3D laws that are not plain Signorini–Coulomb on rr (rods, wires,
 // cohesive zones; the LocalForm3D of an interaction, set by its law's `prepare`), their solve with
-// the other contacts frozen, and the natural-map residual of each. spec: contact-laws.md §3.4, §3.5;
-// LMGC90 mod_nlgs_3D solve_nlgs (:3937-4060), post (:4239-4290).
+// the other contacts frozen, and the natural-map residual of each. docs/lmgc90-facts/contact-laws.md §3.4,
+// §3.5; LMGC90 mod_nlgs_3D solve_nlgs (:3937-4060), post (:4239-4290).
 #include <Eigen/Core>
 
 #include "solver/model/contact_status.hpp"

@@ -10,18 +10,15 @@ namespace lmgc::solver {
 namespace {
 
 constexpr int kMaxLineSearchHalvings = 40;
-// Merits the non-monotone line search compares with. Measured with a single Newton phase from r = 0,
-// 20 s cap: monotone (1) solves 13 of the 17 FCLIB problems; of the three hardest (RockPile,
-// spheres-in-a-box, fc2d_granularflowonwall_02020) 5 solves 1, 10 solves 2, 20 all three; 20 solves
-// all 17 in 8 s, 40 all 17 in 26 s.
+// Merits the non-monotone line search compares with: a monotone search (1) leaves the hardest FCLIB
+// problems (RockPile, spheres-in-a-box, fc2d_granularflowonwall_02020) unsolved from r = 0, a shorter
+// memory leaves some of them, and a longer one is slower.
 constexpr std::size_t kNonmonotoneMemory = 20;
 // The LU keeps a diagonal pivot unless it is smaller than this share of its column's largest entry
 // (SuperLU's symmetric mode): J's pattern is symmetric, the fill-reducing ordering assumes diagonal
-// pivots, and J + shift I has a strong diagonal. cachegrind on KaplasTower and spheres-in-a-box,
-// Newton alone: 1.99e9 instructions with partial pivoting, 1.61e9 at 0.1, 1.42e9 at 0.01, with the
-// same steps and errors. But RockPile, ill-conditioned, needs accurate pivots: from 0 to 14 opening
-// sweeps (10 s cap) the default method solved it 13 times of 15 with partial pivoting, 14 at 0.1
-// and 9 at 0.01.
+// pivots, and J + shift I has a strong diagonal, so kept diagonal pivots cost fewer instructions
+// for the same steps and errors. But RockPile, ill-conditioned, needs accurate pivots: 0.1 solves it as
+// reliably as partial pivoting, a smaller threshold does not.
 constexpr double kDiagonalPivotThreshold = 0.1;
 
 // phi_a and its derivatives with respect to r_a (A) and u_a (B), normal first:

@@ -30,7 +30,7 @@ constexpr int kNewtonStallWindow = 400;
 // Opening Newton phases, each from the caller's reactions after one more sweep than the last.
 constexpr int kOpeningNewtonAttempts = 4;
 // The exact error of an iterate costs a product with the whole Delassus operator, nearly a sweep's
-// work (Confeti-ex13's sweeps alone: 43% of their time went to it). A sweep measures instead, for
+// work. A sweep measures instead, for
 // free, the natural map of each contact just before its local solve: the Gauss–Seidel residual of
 // the iterate it works on, one sweep behind. The error after the sweep is predicted from the last
 // three estimates: the last rate, times its own improvement where the convergence speeds up (the last
@@ -185,7 +185,7 @@ LocalProblemNlgsResult solve_local_problem_nlgs(const FrictionalContactProblem<D
   // alone would finish first (NESpheres in one sweep, FrictionContactProblem00727 in 679), they do, at the
   // price of up to a quarter more time where Newton wins (the race waits after a Newton step that cut
   // the error a hundredfold); where they win, the Newton steps they waited for
-  // cost up to 4 times their own time (FrictionContactProblem00727: 0.038 s, sweeps alone 0.0067 s).
+  // can cost several times their own time.
   // The budget is wall-clock time, so how many race sweeps run (not what the solve converges to
   // within its tolerance) varies from run to run.
   Eigen::VectorXd race = r;

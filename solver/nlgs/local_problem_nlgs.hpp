@@ -19,7 +19,7 @@ struct LocalProblemNlgsOptions {
   double tolerance = 1e-8;  // on the natural-map error ÷ |q|
   int max_sweeps = 100000;
   double max_seconds = 60.0;  // wall-clock cap per problem
-  double relax = 1.0;         // r <- relax r_local + (1 - relax) r (spec: contact-laws.md §2.4)
+  double relax = 1.0;         // r <- relax r_local + (1 - relax) r (docs/lmgc90-facts/contact-laws.md §2.4)
   ContactOrder order = ContactOrder::natural;
   // Open with up to four phases of semismooth Newton (local_problem_newton.hpp) from the given
   // reactions, raced by sweeps on a copy, before the sweeps take over.

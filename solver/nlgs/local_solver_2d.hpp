@@ -1,6 +1,6 @@
 #pragma once
 // The 2D Signorini–Coulomb problem of one contact, solved exactly by enumerating the cases of
-// the friction cone. spec: contact-laws.md §2.1 ("mu_SC_std_solver").
+// the friction cone. docs/lmgc90-facts/contact-laws.md §2.1 ("mu_SC_std_solver").
 //   u = W r + q,  u_n >= 0, r_n >= 0, u_n r_n = 0,  |r_t| <= mu r_n, Coulomb on (u_t, r_t)
 // Vectors are ordered (t, n) as in LMGC90.
 #include <Eigen/Core>
@@ -65,7 +65,7 @@ inline bool solve_signorini_coulomb_2d(double wtt, double wtn, double wnn, doubl
 }
 
 // The reciprocals of the block that the enumeration divides by: the NLGS sweeps compute them once
-// per contact and step and multiply at every visit (siloDK_hoperJC: 6.9e7 -> 8.4e7 contact updates/s).
+// per contact and step and multiply at every visit, instead of dividing.
 // 0 where the division is not taken (a singular block, a slide denominator <= 1e-18).
 struct SignoriniCoulombReciprocals2D {
   double det = 0.0, forward = 0.0, backward = 0.0;

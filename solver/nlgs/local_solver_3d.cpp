@@ -17,8 +17,8 @@ constexpr double kRoundOff = 1e-14;
 constexpr int kMaxLineSearchHalvings = 30;
 constexpr int kMaxFixedPointIterations = 2000;
 
-// Alart–Curnier map of one contact in its "radius mu r_n" form (spec: contact-laws.md §2.2) and its
-// generalised Jacobian.
+// Alart–Curnier map of one contact in its "radius mu r_n" form (docs/lmgc90-facts/contact-laws.md §2.2) and
+// its generalised Jacobian.
 struct AlartCurnier {
   const Eigen::Matrix3d& W;
   const Eigen::Vector3d& q;
@@ -225,8 +225,8 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
   }
 
   // The residual round-off allows at the scale of this contact: a tolerance below it (heavy bodies:
-  // r of 1e4 against u of 1) cannot be met, and chasing it through the fallbacks below costs 10× a
-  // Newton solve for nothing.
+  // r of 1e4 against u of 1) cannot be met, and chasing it through the fallbacks below costs many
+  // Newton solves for nothing.
   const auto bound_of = [&](const Eigen::Vector3d& r, const Eigen::Vector3d& Wr) {
     return std::max(tolerance, kRoundOff * (r.norm() + Wr.norm() + q.norm()));
   };
@@ -255,8 +255,8 @@ LocalSolution3D solve_signorini_coulomb_3d(const Eigen::Matrix3d& W, const Eigen
   if (r(0) > 0.0 && answers(r, best_residual, best_bound)) return s;
   // A block without normal–tangential coupling and with an isotropic tangential part (a sphere
   // against a sphere or a plane: W_nT = 0, W_TT = α I up to round-off) slides in closed form:
-  // r_n = -q_n / W_nn and r_T on the cone's edge against q_T. Checked like any answer; it replaces
-  // sliding Newton solves (945_SP_Box_PL: 0.222 -> 0.154 s/step).
+  // r_n = -q_n / W_nn and r_T on the cone's edge against q_T. Checked like any answer; it spares
+  // those contacts a sliding Newton solve.
   if (uncoupled_isotropic(W) && W(0, 0) > 0.0) {
     const double rn = -q(0) / W(0, 0);
     const double qt_norm = q.tail<2>().norm();

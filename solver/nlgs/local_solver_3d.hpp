@@ -6,7 +6,7 @@
 //
 // Method: the two closed-form cases first (take-off: q_n >= 0; sticking: -W⁻¹q inside the cone),
 // then a generalised Newton on the Alart–Curnier map with LMGC90's augmentation parameters
-// (spec: contact-laws.md §2.2, "mu_NG_solver") made globally convergent by a backtracking line
+// (docs/lmgc90-facts/contact-laws.md §2.2, "mu_NG_solver") made globally convergent by a backtracking line
 // search, then (when Newton stalls) a bisection over the sliding direction angle, and a projected
 // fixed-point fallback. Every answer is checked with the natural map.
 #include <Eigen/Core>

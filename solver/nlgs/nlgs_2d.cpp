@@ -1,11 +1,11 @@
-// NLGS over 2D interactions. spec: numerics.md §3-§4, docs/lmgc90-facts/rigid-2d.md §5.
+// NLGS over 2D interactions. docs/lmgc90-facts/numerics.md §3-§4, docs/lmgc90-facts/rigid-2d.md §5.
 // The sweeps read a compact array of contacts (bodies, local frame, levers, Delassus block, free
 // velocity shift, μ, the block's reciprocals: 128 bytes) and write a separate one of reactions (24 bytes).
 // A visit to a contact without reaction, which mostly ends in passing it by, reads a 48-byte record of
 // its own (OpenContactTest2D) instead of the contact's. Laws that modify the block or add a correction
-// (cohesive, wet, glued, elastic...) keep those terms in an array that only they read. On a 64k-disk box the
-// sweeps stream these arrays from memory: one 192-byte record read and written back per update was nearly
-// twice the traffic. The full Interaction2D records are read before and written after.
+// (cohesive, wet, glued, elastic...) keep those terms in an array that only they read. On a large scene the
+// sweeps stream these arrays from memory, and only the small reaction record is written back per update.
+// The full Interaction2D records are read before and written after.
 #include "solver/nlgs/nlgs_2d.hpp"
 
 #include <Eigen/LU>
@@ -36,8 +36,8 @@ using Eigen::Vector3d;
 // packed operation each (Eigen's 2-double packets), lane by lane in the order the scalar formulas
 // take: the same values bit for bit, in fewer instructions (the sweep is bound by its instruction count).
 // Two whole cache lines: a sweep of a large scene streams these records from memory at the memory's
-// bandwidth, and the 144-byte record it replaced (W_tn stored twice, the tangential law shift of
-// every contact) touched three lines per visit.
+// bandwidth, so W_tn is stored once and a tangential law shift other than a plain contact's ±0 is kept
+// with the law terms, which keeps a visit to two lines.
 struct alignas(64) SweepContact2D {
   Eigen::Vector2d normal = Eigen::Vector2d::Zero();  // (nx, ny); t = (ny, -nx)
   Eigen::Vector2d lever_cd = Eigen::Vector2d::Zero(), lever_an = Eigen::Vector2d::Zero();  // (ℓ×t, ℓ×n)
@@ -73,9 +73,8 @@ static_assert(sizeof(SweepContact2D) == 128);
 // What a sweep reads to pass by a contact without reaction that is due for a visit: the normal part
 // of its relative velocity and its normal law shift, from the normal, the levers' normal parts and the
 // bodies. Most visits of a packing's open contacts end there. In its own 48-byte record, so that they
-// no longer bring in the 128-byte sweep record, which at 64k disks came from beyond the caches at every
-// visit (disk layer, six alternated runs, fastest: 64k sweeps 26.1 -> 19.8 ms per step, 1k 0.244 ->
-// 0.227 ms).
+// do not bring in the 128-byte sweep record, which on a large scene comes from beyond the caches at
+// every visit.
 struct OpenContactTest2D {
   double nx = 0, ny = 0, lever_cd_n = 0, lever_an_n = 0;
   // −∞ for a contact that is never passed by on this test (law terms, inactive): u_n − ∞ < 0.
@@ -119,8 +118,7 @@ struct LawTerms2D {
 };
 
 // The cohesive zone's fixed matrices (contact-laws.md §3.5), once per contact and step, and again
-// after a check that changed β: inverting and multiplying them at every visit took
-// BridgePL_GroundJC's sweeps 0.226 s instead of 0.186 s.
+// after a check that changed β, so that a visit does not invert and multiply them.
 void prepare_cohesive_terms(double wtn, LawTerms2D& l) {
   Matrix2d WW;
   WW << l.wwtt, wtn, wtn, l.wwnn;
@@ -263,12 +261,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
 
   // The sweeps run the updates in wavefront order (sweep_wavefront.hpp: the same result bit for bit,
   // consecutive updates seldom sharing a body), and the two sweep arrays are laid out in that order,
-  // so that a sweep reads memory in sequence (1024DK_BoxJC with its quick scramble, 500 steps: 5.29
-  // -> 4.25 s). The set-up writes each contact's records at its slot, and the passes in contact
-  // order (the checks, the end of the step) read them there, so their sums keep their order; the
-  // arrays are permuted only when the quick scramble changes the order. They used to be gathered
-  // into the order before every block and the reactions scattered back after it (disk layer, 50
-  // sweeps: 1k 0.45 -> 0.41 ms of sweeps per step, 64k 48.6 -> 46.0 ms).
+  // so that a sweep reads memory in sequence. The set-up writes each contact's records at its slot,
+  // and the passes in contact order (the checks, the end of the step) read them there, so their sums
+  // keep their order; the arrays are permuted only when the quick scramble changes the order, not
+  // gathered into the order before every block and scattered back after it.
   std::vector<std::uint32_t> order(count), execution, slot(count);
   std::iota(order.begin(), order.end(), 0u);
   SweepWavefront wavefront;
@@ -276,10 +272,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     wavefront.reorder(
         order,
         [&](std::uint32_t a) {
-          // A long list's records come from beyond the caches (detection wrote them); a sampled profile
-          // had put three quarters of the reorder's time on this load. The record kPrefetchAhead on in
-          // contact order is the one that many places on in `order`, which is the contact order; after
-          // a quick scramble it is not, and the prefetch only guesses wrong.
+          // A long list's records come from beyond the caches (detection wrote them), and the reorder
+          // waits on this load. The record kPrefetchAhead on in contact order is the one that many
+          // places on in `order`, which is the contact order; after a quick scramble it is not, and
+          // the prefetch only guesses wrong.
           prefetch_ahead<false>(contacts, a);
           return std::pair(contacts[a].candidate_body, contacts[a].antagonist_body);
         },
@@ -303,13 +299,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
   // The passes in contact order (the set-up, the injections, the checks, the end of the step) read
   // the sweep records at each contact's slot. In a square box of disks a window's wavefront levels
   // interleave two or three rows, so from one contact to the next the slot moves on by 1, 3 or 5
-  // records (a 64k-disk layer, one row per window: by 1 for 94% of them), and the hardware prefetcher
-  // no longer keeps up: a sampled profile of the 64k-disk box at rest put 13% of the function's own
-  // samples on the end pass's first read of a record and 10% on the set-up's first store (layer: 5.5%
-  // and 4.5%). So those passes ask for the records kPrefetchAhead contacts on, once the sweep records
-  // outgrow half of a core's L2. In-process A/B at rest, alternated halves of 5 steps, medians of 16
-  // rounds, step with/without: box 64k 0.942 and 0.949, 16k 0.928, 4k 0.971; layer 64k 0.984 and 0.977;
-  // 1k 1.025 (in L2, left out).
+  // records, a pattern the hardware prefetcher does not keep up with: the end pass's first read of a
+  // record and the set-up's first store wait on memory. So those passes ask for the records
+  // kPrefetchAhead contacts on, once the sweep records outgrow half of a core's L2 (below that they
+  // are in L2, and the prefetches are instructions spent).
   constexpr std::size_t kPrefetchSlotsFrom = (512 * 1024) / sizeof(SweepContact2D);
   const bool prefetch_slots = count >= kPrefetchSlotsFrom;
   std::vector<LawTerms2D> terms;
@@ -350,8 +343,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     k.mu = c.mu;
     k.inverse = signorini_coulomb_reciprocals_2d(k.wtt(), k.wtn(), k.wnn(), k.mu);
     // The flags tested below from these locals: read back from `l`, whose three bytes were just
-    // stored one by one, they were loaded as one word that had to wait for the stores (a sampled
-    // profile put 8% of the function's time on that load).
+    // stored one by one, they would be loaded as one word that has to wait for the stores.
     const bool glued = std::holds_alternative<CoupledDof>(law),
                wet = std::holds_alternative<IqsWetDsClb>(law);
     LawTerms2D l;
@@ -468,14 +460,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
   const bool due_visits_fit =
       count >= options.due_visits_from && options.gs_it1 > 0 && DueVisits::ring_length(options.gs_it1) <= 64;
   thread_local std::vector<SweepGroup2D> groups;
-  // A sweep reads the groups in sequence (then 736 bytes each, now 640), and its first load of a group missed
-  // the caches once they no longer held the array: a sampled profile of the 64k-disk layer at rest, half its
-  // contacts loaded, put 14% of the group kernel's samples on that load. So the group kGroupsAhead on is
-  // prefetched, once the array outgrows what a core's L2 keeps beside the bodies and the reactions.
-  // In-process A/B (alternated halves of 5 steps, medians of 10-16 rounds), sweeps with the prefetch against
-  // without, 736-byte groups: 64k disks 0.72-0.73 at 10 groups ahead, 0.75-0.78 at 2, 3, 6, 16 and 32; at 8,
-  // 4k 1.007 and 1k 1.048 (its array is in L2, the prefetches are instructions spent). At 8 ahead with the
-  // 640-byte groups kept from block to block, in a heavily loaded hour: 64k 0.781 and 0.828.
+  // A sweep reads the groups in sequence, and its first load of a group misses the caches once they
+  // no longer hold the array. So the group kGroupsAhead on is prefetched, once the array outgrows what
+  // a core's L2 keeps beside the bodies and the reactions (below that the array is in L2, and the
+  // prefetches are instructions spent).
   constexpr std::size_t kGroupsAhead = 8;
   constexpr std::size_t kPrefetchGroupsFrom = (512 * 1024) / sizeof(SweepGroup2D);
   bool prefetch_groups = false;
@@ -579,8 +567,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
   // is not counted as an iteration.
   // Instantiated once per kind (std::bool_constant): the post pass's tests fold away in the sweeps.
   // The sweeps by due visits are an instantiation of their own, so that the walk of every contact
-  // compiles as it did without them (with both in one body, the walk of a 1k-disk layer was 8% slower,
-  // 30 paired runs).
+  // compiles as it would without them (one body for both slows the walk).
   auto sweep = [&](auto post_kind, auto due_visits_kind) {
     constexpr bool post = decltype(post_kind)::value;
     constexpr bool by_due = decltype(due_visits_kind)::value;
@@ -605,8 +592,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
         s.visits.count_solve(sweep_number);
         // A plain contact without reaction stays without one while u_n + cov_n >= 0 (its local solve
         // returns r = 0, and the update would inject nothing): decided on the relative velocity alone,
-        // without the solve and the update. Most open contacts of a packing stay open at their visits
-        // (disk layer, 50 sweeps: 1k 0.38-0.39 -> 0.29 ms of sweeps per step).
+        // without the solve and the update. Most open contacts of a packing stay open at their visits.
         if (sweep_open_test[index].stays_open(velocity)) return;
       }
       const SweepContact2D& c = sweep_hot[index];
@@ -639,7 +625,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
       if (std::fabs(rt) < 1e-24) rt = 0.0;
       if (std::fabs(rn) < 1e-24) rn = 0.0;
       // Injected even when zero: whether a reaction changed is as good as random in a sweep of
-      // active contacts, and the mispredicted test cost more than the update (200DK_BoxJC_MD 15%).
+      // active contacts, and the mispredicted test costs more than the update.
       inject(c, rt - s.rt, rn - s.rn, inverse_masses, velocity);
       s.rt = rt;
       s.rn = rn;
@@ -793,18 +779,15 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
       if (options.quick_scramble) scramble_order();
       // Where less than a quarter of the updates form groups, the plain loop: forming the groups (a
       // pass over every contact's record) and running the others through the segment lists cost more
-      // than the groups save (BridgePL_GroundJC, whose contacts all have law terms, 1200 steps: 0.17
-      // -> 0.19 s; the 64k-disk layer, a tenth of its contacts loaded: sweeps 31-34 -> 40-51 ms per
-      // step, groups then formed level by level). Only loaded contacts form groups: with fewer than a
-      // quarter loaded, none are formed.
+      // than the groups save. Only loaded contacts form groups: with fewer than a quarter loaded, none
+      // are formed.
       constexpr std::size_t quarter = 4;  // share of the updates below which the plain loop runs
       // The previous block's groups serve again while the contacts with a reaction are about as
       // many as when they were formed (within 1/16) and the order has not changed (no quick
       // scramble): which contacts share a body does not change within a step, so a group still runs
       // updates that commute with the ones between, and a lane that has lost its reaction is left to
       // the scalar update, as within a block; a contact that has gained one runs alone. The same
-      // iterates bit for bit; forming them again took, on the 64k-disk layer at rest (gs_it2 = 2),
-      // 6% of the step (in-process A/B, 12 rounds: step 0.938; 1k: 0.986).
+      // iterates bit for bit, without a pass over every contact's record to form them again.
       const bool reuse_groups =
           grouped && !options.quick_scramble &&
           16 * std::max(loaded, loaded_at_formation) <= 17 * std::min(loaded, loaded_at_formation);

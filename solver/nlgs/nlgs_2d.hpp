@@ -1,5 +1,5 @@
 #pragma once
-// Non-linear Gauss–Seidel over the 2D interactions of a step. spec: numerics.md §3-§4.
+// Non-linear Gauss–Seidel over the 2D interactions of a step. docs/lmgc90-facts/numerics.md §3-§4.
 #include <span>
 #include <string>
 #include <vector>

@@ -25,10 +25,8 @@ struct NlgsOptions {
   // 2D: from this many contacts up, the sweeps that run no groups visit only the contacts their
   // open-contact schedules make due, found in bitmaps (open_contact_visits.hpp), instead of walking
   // every contact and branching on its schedule. The same iterates bit for bit (tests compare both:
-  // 0 always, SIZE_MAX never). Below it the walk is as fast or faster: this processor's branch
-  // predictor learns a short list's pattern, repeated at every sweep. Disk layer, sweeps with the
-  // bitmaps against the walk, medians of paired runs: 1968 contacts 1.9% slower (8 runs of an earlier
-  // build), 7968 1.7% slower, 31968 1.8% faster, 127968 4.5% faster (10 runs).
+  // 0 always, SIZE_MAX never). Below it the walk is as fast or faster: the branch predictor learns
+  // a short list's pattern, repeated at every sweep.
   std::size_t due_visits_from = 16384;
   // 3D: nlgs_3D_DiagonalResolution — each contact solved with the diagonal of its block only (its
   // own off-diagonal couplings kept at the previous iterate), then projected on the Coulomb cone.

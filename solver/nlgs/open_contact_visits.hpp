@@ -6,10 +6,9 @@
 // skipped contact that closes meanwhile from passing as converged.
 //
 // The schedule is kept as the sweep at which the contact is solved next, so that a sweep that passes
-// a contact by reads it and writes nothing. Counting the passes instead (the schedule's first form,
-// kept in its unit test as the reference) wrote every record at every sweep: on a 64k-disk layer,
-// whose contacts are mostly open, the whole 3 MB reaction array (layer sweeps at 64k: 42-46 -> 33-37
-// ms per step; siloDK_hoperJC 800 steps: 7.02-7.11 -> 6.62-6.80 s).
+// a contact by reads it and writes nothing. Counting the passes instead (kept in its unit test as
+// the reference) would write every record at every sweep: in a packing, whose contacts are mostly
+// open, the whole reaction array.
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -93,8 +92,7 @@ class DueVisits {
   // contact's schedule after the visit, which files it for its next one. ahead(position) is called
   // `lookahead` visits before visit(position), so that the caller can prefetch what that visit will
   // read: in a long list the due contacts' records are beyond the caches, and each visit waited for
-  // its own. Inlined into the caller's sweep, whose arrays then stay in registers (called, a
-  // 64k-disk layer's sweeps were 9% slower, 16 paired runs).
+  // its own. Inlined into the caller's sweep, whose arrays then stay in registers.
   static constexpr int lookahead = 8;
   template <typename Visit, typename Ahead>
   [[gnu::always_inline]] void sweep(std::int32_t sweep, Visit&& visit, Ahead&& ahead) {

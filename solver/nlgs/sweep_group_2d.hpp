@@ -33,7 +33,7 @@ struct alignas(32) SweepGroup2D {
   double mu[4];
   double inverse_det[4], inverse_forward[4], inverse_backward[4];  // SignoriniCoulombReciprocals2D
   // Each body's inverse mass, translation (the same along x and y: a lane whose body has one of the
-  // two driven is left to the scalar update) and rotation. 16 bytes a lane, where (x, y, ω) took 24.
+  // two driven is left to the scalar update) and rotation: 16 bytes a lane, not 24 for (x, y, ω).
   double inverse_mass_cd[4], inverse_inertia_cd[4], inverse_mass_an[4], inverse_inertia_an[4];
   std::int32_t cd[4], an[4];  // body indices
   std::uint32_t position[4];

@@ -10,9 +10,8 @@
 // A body that no update moves (every inverse mass 0: walls, driven bodies) orders nothing.
 // The levels are formed within windows of consecutive updates of the sweep order, run one window
 // after the other. Over a whole scene the chains of a packing in detection order run across its
-// width (a 64k-disk layer 2000 disks wide: 2092 levels of about 60 updates each, spread over the
-// whole layer), so each level walked the whole body array, from L3 at 64k disks; within a window
-// the bodies a level touches stay in L2 (64k-disk layer, 50 sweeps: 82-113 -> 44-50 ms per step).
+// width, so a level's few updates spread over the whole packing and each level would walk the whole
+// body array, beyond L2 on a large scene; within a window the bodies a level touches stay in L2.
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -23,11 +22,10 @@ class SweepWavefront {
  public:
   // Updates per window. A list of up to 4096 is one window (every RIGID_2D example: 1024DK_BoxJC
   // has about 2000 contacts), so that a level holds as many independent updates as it can; a longer
-  // one is cut every 1024. Windows of 1024 to 4096 sweep a 64k-disk box and layer equally fast
-  // (16384: the box 1.8x slower), but the set-up, the checks and the end of the step read the
-  // sweep arrays in contact order, at each contact's place in its window: in the 64k-disk box, where
-  // a 4096-update window's levels spread over eight rows of disks, those passes took 34-38 ms per
-  // step with windows of 4096 and 28-29 ms with 1024 (layer: 23-28 -> 21-23 ms).
+  // one is cut every 1024. Windows of 1024 to 4096 sweep a large box equally fast (much larger ones
+  // do not), but the set-up, the checks and the end of the step read the sweep arrays in contact
+  // order, at each contact's place in its window: a smaller window's levels spread over fewer rows
+  // of disks, which keeps those places closer together.
   static constexpr std::size_t single_window_limit = 4096, long_list_window = 1024;
   static std::size_t window_for(std::size_t updates) {
     return updates <= single_window_limit ? single_window_limit : long_list_window;

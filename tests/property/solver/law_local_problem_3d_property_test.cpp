@@ -1,6 +1,7 @@
 // Properties of the 3D law local problems that are not plain Signorini–Coulomb
 // (solver/nlgs/law_local_problem_3d): tension-only wires, bilateral rods and cohesive zones, each
-// solved with random Delassus blocks, free velocities and law data. spec: contact-laws.md §3.4, §3.5.
+// solved with random Delassus blocks, free velocities and law data. docs/lmgc90-facts/contact-laws.md §3.4,
+// §3.5.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 

@@ -1,7 +1,7 @@
 // Torque-free rotation of an asymmetric rigid body (I = (1, 2, 3) kg·m², m = 1 kg) with the RBDY3
 // θ-scheme as LMGC90 runs it without contact (θ = ½, h = 1e-3): the kinetic energy and the angular
 // momentum vector in the global frame are conserved up to the first-order error of the explicit
-// gyroscopic torque. spec: numerics.md §1.2.
+// gyroscopic torque. docs/lmgc90-facts/numerics.md §1.2.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>

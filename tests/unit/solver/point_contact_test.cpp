@@ -1,5 +1,5 @@
 // PTPT3 links (solver/detection/point_contact): which PT3Dx pairs are linked, and the frame of a
-// link as mod_PTPT3 builds it. spec: contact-laws.md §3.4; mod_PTPT3.f90 compute_box,
+// link as mod_PTPT3 builds it. docs/lmgc90-facts/contact-laws.md §3.4; mod_PTPT3.f90 compute_box,
 // compute_contact.
 #include "solver/detection/point_contact.hpp"
 

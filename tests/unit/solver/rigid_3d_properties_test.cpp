@@ -1,5 +1,5 @@
 // RBDY3 mass, principal inertia, principal frame and centre of inertia from BODIES.DAT data, as
-// LMGC90's read_bodies / comp_mass_RBDY3 compute them. spec: datbox-inputs.md §1.2, §1.4,
+// LMGC90's read_bodies / comp_mass_RBDY3 compute them. docs/lmgc90-facts/datbox-inputs.md §1.2, §1.4,
 // numerics.md §1.2; LMGC90 src/Core/rigid_3D/mod_RBDY3.f90 :941-1237, :3731-3807.
 #include "solver/bodies/rigid_3d_properties.hpp"
 

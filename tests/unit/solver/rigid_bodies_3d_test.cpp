@@ -1,5 +1,5 @@
 // RBDY3 kinematics: principal-frame update (linearised + Gram–Schmidt, Cayley), explicit
-// gyroscopic torque, kinetic energy. spec: numerics.md §1.2.
+// gyroscopic torque, kinetic energy. docs/lmgc90-facts/numerics.md §1.2.
 #include "solver/bodies/rigid_bodies_3d.hpp"
 
 #include <gtest/gtest.h>

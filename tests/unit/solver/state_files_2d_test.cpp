@@ -1,7 +1,7 @@
 // Vloc_Rloc files of a rigid 2D run whose law has internal variables (solver/io/state_files_2d): the
 // internals, kept beside the interactions (LawState2D), are written, read back as a warm start
 // beside the interactions they belong to, and a run restarted from them takes the step the run
-// itself takes next. spec: state-and-outputs.md §1.4.
+// itself takes next. docs/lmgc90-facts/state-and-outputs.md §1.4.
 #include "solver/io/state_files_2d.hpp"
 
 #include <gtest/gtest.h>

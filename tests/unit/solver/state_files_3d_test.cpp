@@ -1,7 +1,7 @@
 // DOF and Vloc_Rloc files of a rigid 3D run (solver/io/state_files_3d): built from a small scene
 // run with step_3d, written by the grammar writers, read back by the grammar parsers (round trip),
 // checked field by field against the run state, and read back as a warm start.
-// spec: state-and-outputs.md §1.2-1.4.2.
+// docs/lmgc90-facts/state-and-outputs.md §1.2-1.4.2.
 #include "solver/io/state_files_3d.hpp"
 
 #include <gtest/gtest.h>

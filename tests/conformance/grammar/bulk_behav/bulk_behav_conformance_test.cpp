@@ -1,5 +1,5 @@
 // Every example BULK_BEHAV.DAT parses without error and round-trips; our echo equals LMGC90's
-// reference_lmgc90/OUTBOX/BULK_BEHAV.OUT byte for byte. spec: datbox-inputs.md §2.
+// reference_lmgc90/OUTBOX/BULK_BEHAV.OUT byte for byte. docs/lmgc90-facts/datbox-inputs.md §2.
 #include <gtest/gtest.h>
 
 #include <map>

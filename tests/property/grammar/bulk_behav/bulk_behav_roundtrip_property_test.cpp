@@ -1,6 +1,6 @@
 // Round trip of BULK_BEHAV: parse(write(ast)) == ast for generated files of every law type and
 // every option case of the catalogue; write(parse(text)) == text for canonical text.
-// spec: datbox-inputs.md §2.
+// docs/lmgc90-facts/datbox-inputs.md §2.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 

@@ -1,5 +1,5 @@
 // BULK_BEHAV.DAT: laws and their sub-blocks, the echo of each law family, and broken files with
-// their exact diagnostic. spec: datbox-inputs.md §2, §10.
+// their exact diagnostic. docs/lmgc90-facts/datbox-inputs.md §2, §10.
 #include <gtest/gtest.h>
 
 #include "grammar/bulk_behav/parser.hpp"
