@@ -218,13 +218,19 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     if (it == classes.end()) classes.push_back(name);
   }
   const std::size_t class_count = classes.size();
+  // Two contactors of one type (SPSPx, PRPRx, CDCDx) read a row either way round, the first that
+  // names their colours (mod_tact_behav get_isee_specific), and the lower index stays the candidate.
   std::vector<std::int32_t> row_table(class_count * class_count, -1);
   for (std::size_t a = 0; a < class_count; ++a)
     for (std::size_t c = 0; c < class_count; ++c)
       for (std::size_t r = 0; r < scene.visibility.size(); ++r) {
         const Visibility3D& v = scene.visibility[r];
-        if (classes[a].first == v.candidate_type && classes[a].second == v.candidate_color &&
-            classes[c].first == v.antagonist_type && classes[c].second == v.antagonist_color) {
+        const bool direct = classes[a].first == v.candidate_type && classes[a].second == v.candidate_color &&
+                            classes[c].first == v.antagonist_type && classes[c].second == v.antagonist_color;
+        const bool turned = v.candidate_type == v.antagonist_type && classes[a].first == v.candidate_type &&
+                            classes[c].first == v.candidate_type && classes[a].second == v.antagonist_color &&
+                            classes[c].second == v.candidate_color;
+        if (direct || turned) {
           row_table[a * class_count + c] = static_cast<std::int32_t>(r);
           break;
         }
