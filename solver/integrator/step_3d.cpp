@@ -176,6 +176,186 @@ void compute_free_velocity(Scene3D& scene, const RunState3D& state) {
   b.velocity = b.velocity_free;
 }
 
+namespace {
+
+// LMGC90's sweep order of the 3D families (mod_nlgs_3D prep_nlgs): SPSPx, SPPLx, SPPRx, SPCDx, SPDCx,
+// PRPLx, PRPRx, PTPT3, CDCDx, CDPLx.
+constexpr std::array<std::uint8_t, kPairFamily3DCount> kSweepRank = [] {
+  std::array<std::uint8_t, kPairFamily3DCount> rank{};
+  const PairFamily3D order[] = {PairFamily3D::SPSPx, PairFamily3D::SPPLx, PairFamily3D::SPPRx,
+                                PairFamily3D::SPCDx, PairFamily3D::SPDCx, PairFamily3D::PRPLx,
+                                PairFamily3D::PRPRx, PairFamily3D::PTPT3, PairFamily3D::CDCDx,
+                                PairFamily3D::CDPLx};
+  for (std::size_t k = 0; k < std::size(order); ++k)
+    rank[static_cast<std::size_t>(order[k])] = static_cast<std::uint8_t>(k);
+  return rank;
+}();
+
+// The sort key of a detected point in LMGC90's enumeration (rigid-3d.md §3.1). The box families
+// (SPSPx, SPPLx, PRPRx, CDCDx, CDPLx) cut space into boxes of side Lbox from the lowest contactor
+// centres (x and y from 0 when periodic) and visit the boxes z, then y, then x outermost, a box's
+// candidates by index, for each the 3 x 3 x 3 boxes around in the same nesting and their
+// antagonists by index; PRPRx's big polyhedra and the periodic images come after. PRPLx pairs come
+// by candidate then antagonist, SPCDx and SPDCx by antagonist then candidate, PTPT3 links as listed.
+class LmgcOrder3D {
+ public:
+  LmgcOrder3D(const Scene3D& scene, const std::vector<Vector3d>& centre,
+              const std::vector<std::uint8_t>& placed)
+      : scene_(scene), centre_(centre) {
+    const std::size_t n = scene.contactors.size();
+    big_.assign(n, 0);
+    // Radii as each LMGC90 module takes them.
+    double sphere = 0.0, polyhedron = 0.0, polyhedron_min = std::numeric_limits<double>::infinity(),
+           polyhedron_sum = 0.0, plane = 0.0, cylinder = 0.0;
+    std::size_t polyhedra = 0;
+    for (const Contactor3D& c : scene.contactors) switch (c.shape) {
+        case ContactorShape3D::sphere:
+          sphere = std::max(sphere, c.radius);
+          break;
+        case ContactorShape3D::polyhedron: {
+          const double r = scene.polyhedra[static_cast<std::size_t>(c.polyhedron)].radius;
+          polyhedron_sum += r;
+          ++polyhedra;
+          break;
+        }
+        case ContactorShape3D::plane:
+          plane = std::max(plane, c.half_axes.norm());  // mod_PLANx: sqrt(ax1² + ax2² + ax3²)
+          break;
+        case ContactorShape3D::cylinder:
+          cylinder = std::max(cylinder, c.half_axes.z() + c.radius);  // mod_CYLND: half-length + radius
+          break;
+        default:
+          break;
+      }
+    // Big polyhedra (mod_PRPRx threshold_big_POLYR 4): out of the grid, and of its radii.
+    for (std::size_t k = 0; k < n; ++k) {
+      const Contactor3D& c = scene.contactors[k];
+      if (c.shape != ContactorShape3D::polyhedron) continue;
+      const double r = scene.polyhedra[static_cast<std::size_t>(c.polyhedron)].radius;
+      if (polyhedra > 0 && r > 4.0 * polyhedron_sum / static_cast<double>(polyhedra))
+        big_[k] = 1;
+      else
+        polyhedron = std::max(polyhedron, r), polyhedron_min = std::min(polyhedron_min, r);
+    }
+    std::array<double, kPairFamily3DCount> alert{};
+    for (const Visibility3D& v : scene.visibility)
+      alert[static_cast<std::size_t>(v.family)] =
+          std::max(alert[static_cast<std::size_t>(v.family)], v.alert);
+    const auto grid = [&](PairFamily3D f, double ray, double factor) {
+      Grid& g = grids_[static_cast<std::size_t>(f)];
+      g.on = true;
+      double box = factor * (2.0 * ray + alert[static_cast<std::size_t>(f)]);
+      if (f == PairFamily3D::PRPRx && std::abs(polyhedron - polyhedron_min) < 1e-4) box *= 2.0;
+      g.inverse = box > 0.0 ? 1.0 / box : 0.0;
+      g.low = Vector3d::Constant(std::numeric_limits<double>::infinity());
+      for (std::size_t k = 0; k < n; ++k)
+        if (placed[k] && !big_[k] && in_family(f, scene.contactors[k].shape))
+          g.low = g.low.cwiseMin(centre[k]);
+      if (scene.x_period > 0.0) g.low.x() = 0.0;
+      if (scene.y_period > 0.0) g.low.y() = 0.0;
+    };
+    grid(PairFamily3D::SPSPx, sphere, 1.01);
+    grid(PairFamily3D::SPPLx, std::max(sphere, plane), 1.01);
+    grid(PairFamily3D::PRPRx, polyhedron, 1.05);
+    const double cylinder_reach = 1.005 * cylinder + alert[static_cast<std::size_t>(PairFamily3D::CDCDx)];
+    grid(PairFamily3D::CDCDx, cylinder_reach, 1.01);
+    grid(PairFamily3D::CDPLx, std::max(cylinder, plane), 1.01);
+    // Each candidate's place in its family's box enumeration: boxes z, y, x outermost, then index.
+    for (int f = 0; f < kPairFamily3DCount; ++f) {
+      const Grid& g = grids_[static_cast<std::size_t>(f)];
+      if (!g.on) continue;
+      std::vector<std::pair<std::array<std::int64_t, 4>, std::uint32_t>> keys;
+      for (std::size_t k = 0; k < n; ++k) {
+        if (!placed[k] || big_[k] || !in_family(static_cast<PairFamily3D>(f), scene.contactors[k].shape))
+          continue;
+        const auto b = box(g, k);
+        keys.push_back({{b[2], b[1], b[0], static_cast<std::int64_t>(k)}, static_cast<std::uint32_t>(k)});
+      }
+      std::sort(keys.begin(), keys.end());
+      std::vector<std::uint32_t>& rank = rank_[static_cast<std::size_t>(f)];
+      rank.assign(n, std::numeric_limits<std::uint32_t>::max());
+      for (std::size_t p = 0; p < keys.size(); ++p) rank[keys[p].second] = static_cast<std::uint32_t>(p);
+    }
+  }
+
+  // (high, low): family, section (grid pairs, big polyhedra's, periodic), candidate's rank; then the
+  // antagonist's box around the candidate's and the antagonist. Points of a pair keep their order.
+  std::pair<std::uint64_t, std::uint64_t> key(const DetectedPoint3D& d) const {
+    const auto f = static_cast<std::size_t>(d.family);
+    const std::uint64_t family = kSweepRank[f];
+    const auto cd = static_cast<std::size_t>(d.candidate), an = static_cast<std::size_t>(d.antagonist);
+    const auto pack = [&](std::uint64_t section, std::uint64_t first, std::uint64_t around,
+                          std::uint64_t second) {
+      return std::pair{(family << 56) | (section << 48) | (first & 0xffffffffffffull),
+                       (around << 40) | (second & 0xffffffffffull)};
+    };
+    switch (d.family) {
+      case PairFamily3D::PRPLx:
+      case PairFamily3D::SPPRx:
+        return pack(0, cd, 0, an);
+      case PairFamily3D::SPCDx:
+      case PairFamily3D::SPDCx:
+        return pack(0, an, 0, cd);
+      case PairFamily3D::PTPT3:
+        return pack(0, 0, 0, 0);  // the links' own order
+      default:
+        break;
+    }
+    const Grid& g = grids_[f];
+    if (big_[cd] || big_[an]) return pack(1, big_[an] ? an : cd, 0, big_[an] ? cd : an);
+    const std::uint64_t rank = rank_[f][cd];
+    if (!d.image.isZero()) {
+      // Periodic passes after the grid's: x, then y, then both (LMGC90's x, y, (+x, +y), (+x, -y)).
+      const bool x = d.image.x() != 0.0, y = d.image.y() != 0.0;
+      const std::uint64_t pass = x && y ? (d.image.x() * d.image.y() > 0.0 ? 4 : 5) : x ? 2 : 3;
+      const auto b = box(g, an);
+      return pack(pass, rank, static_cast<std::uint64_t>(b[2] * 4096 * 4096 + b[1] * 4096 + b[0]) & 0xffffff,
+                  an);
+    }
+    const auto bc = box(g, cd), ba = box(g, an);
+    const std::int64_t d3 = ba[2] - bc[2] + 1, d2 = ba[1] - bc[1] + 1, d1 = ba[0] - bc[0] + 1;
+    const bool near = d1 >= 0 && d1 <= 2 && d2 >= 0 && d2 <= 2 && d3 >= 0 && d3 <= 2;
+    return pack(0, rank, near ? static_cast<std::uint64_t>(d3 * 9 + d2 * 3 + d1) : 27, an);
+  }
+
+ private:
+  struct Grid {
+    bool on = false;
+    double inverse = 0.0;
+    Vector3d low = Vector3d::Zero();
+  };
+  static bool in_family(PairFamily3D f, ContactorShape3D shape) {
+    switch (f) {
+      case PairFamily3D::SPSPx:
+        return shape == ContactorShape3D::sphere;
+      case PairFamily3D::SPPLx:
+        return shape == ContactorShape3D::sphere || shape == ContactorShape3D::plane;
+      case PairFamily3D::PRPRx:
+        return shape == ContactorShape3D::polyhedron;
+      case PairFamily3D::CDCDx:
+        return shape == ContactorShape3D::cylinder;
+      case PairFamily3D::CDPLx:
+        return shape == ContactorShape3D::cylinder || shape == ContactorShape3D::plane;
+      default:
+        return false;
+    }
+  }
+  // Box indices as LMGC90 computes them: 1 + int((x - low) / Lbox), by the inverse.
+  std::array<std::int64_t, 3> box(const Grid& g, std::size_t k) const {
+    std::array<std::int64_t, 3> b{};
+    for (int a = 0; a < 3; ++a)
+      b[static_cast<std::size_t>(a)] = 1 + static_cast<std::int64_t>((centre_[k](a) - g.low(a)) * g.inverse);
+    return b;
+  }
+  const Scene3D& scene_;
+  const std::vector<Vector3d>& centre_;
+  std::vector<std::uint8_t> big_;
+  std::array<Grid, kPairFamily3DCount> grids_{};
+  std::array<std::vector<std::uint32_t>, kPairFamily3DCount> rank_;
+};
+
+}  // namespace
+
 void select_prox_tactors(Scene3D& scene, RunState3D& state) {
   RigidBodies3D& b = scene.bodies;
   const double h = state.h, theta = state.theta;
@@ -517,13 +697,13 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     c.W = delassus_block(c, b);
     return c;
   };
-  // By (family, candidate, antagonist); the points of a pair stay in detection order. Each interaction
-  // is written once, in that order, from its point, so that no gather copies the large records into
-  // order afterwards.
-  const std::vector<std::uint32_t> order = interaction_order(found, [](const DetectedPoint3D& d) {
-    return std::pair{(std::uint64_t(d.family) << 32) | std::uint32_t(d.candidate),
-                     std::uint64_t(std::uint32_t(d.antagonist)) << 32};
-  });
+  // In LMGC90's order (docs/lmgc90-facts/rigid-3d.md §3.1): the families as mod_nlgs_3D sweeps
+  // them, in a family the pairs as its rough detection enumerates them, the points of a pair as the
+  // fine detection finds them. Each interaction is written once, in that order, from its point, so
+  // that no gather copies the large records into order afterwards.
+  const LmgcOrder3D lmgc_order(scene, centre, placed);
+  const std::vector<std::uint32_t> order =
+      interaction_order(found, [&](const DetectedPoint3D& d) { return lmgc_order.key(d); });
   state.contacts.clear();
   state.law_states.clear();
   // With room to grow: a packing that gains a few contacts would otherwise take a new buffer, which
@@ -550,34 +730,14 @@ bool scene_keeps_law_state_3d(const Scene3D& scene) {
 }
 
 namespace {
-// The pair (its family first, as detection sorts interactions: the verlet list of a step is then
-// stored without sorting); the PRPLx vertex and the PRPRx point are matched within the pair.
-template <class Interaction>
-auto recup_key(const Interaction& c) {
-  return std::tuple(c.family, c.candidate, c.antagonist);
-}
-
-// The stored list is built in one pass over the interactions, which also notes whether they come in
-// key order (detection's): on a large scene a second pass to check the order, and one to set the
-// statuses, would each read the whole stored or interaction list from memory again.
+// The stored list: the interactions' verlet entries, in their order (detection's).
 struct StoredListBuilder {
   LargeArray<StoredInteraction3D>& stored;
-  bool sorted = true;
   explicit StoredListBuilder(LargeArray<StoredInteraction3D>& list) : stored(list) {
     stored.clear();  // keeps its buffer
   }
-  void append(const Interaction3D& c, const LawState3D* law_state) {
-    if (!stored.empty() && recup_key(c) < recup_key(stored.back())) sorted = false;
-    stored.emplace_back(c, law_state);
-  }
-  // Sorted by key (a stable sort: equal keys keep their order) when they did not come in order.
-  void finish() {
-    if (sorted) return;
-    std::stable_sort(stored.begin(), stored.end(),
-                     [](const StoredInteraction3D& a, const StoredInteraction3D& b) {
-                       return recup_key(a) < recup_key(b);
-                     });
-  }
+  void append(const Interaction3D& c, const LawState3D* law_state) { stored.emplace_back(c, law_state); }
+  void finish() {}
 };
 }  // namespace
 
@@ -591,27 +751,34 @@ void store_interactions(RunState3D& state, std::span<const Interaction3D> intera
 
 void recup_rloc(RunState3D& state) {
   // Key: the contactor pair and, for PRPLx, the candidate vertex; PRPRx points of a pair are then
-  // told apart by position (numerics.md §4, recup_rloc_PRPRx / recup_rloc_PRPLx). `previous` is
-  // sorted by pair (store_interactions); the first entry of the pair that matches is taken.
-  // Detection lists the contacts by the same key, so the pairs are found by walking both lists
-  // together; a contact out of that order is looked up by bisection. (A bisection per contact would
-  // read about log2(n) scattered entries of the list.)
+  // told apart by position (numerics.md §4, recup_rloc_PRPRx / recup_rloc_PRPLx); the first stored
+  // entry that matches is taken. The stored entries of each candidate contactor are listed together
+  // (LMGC90's verlet lists are by candidate too), so a lookup reads its candidate's few entries.
   const LargeArray<StoredInteraction3D>& previous = state.previous;
-  const auto key_below = [](const StoredInteraction3D& p, const auto& k) { return recup_key(p) < k; };
-  auto cursor = previous.begin();  // the first entry not below the last contact's key
+  std::size_t contactors = 0;
+  for (const StoredInteraction3D& p : previous)
+    contactors = std::max<std::size_t>(contactors, static_cast<std::size_t>(p.candidate) + 1);
+  thread_local std::vector<std::uint32_t> first, by_candidate, next;
+  first.assign(contactors + 1, 0);
+  for (const StoredInteraction3D& p : previous) ++first[static_cast<std::size_t>(p.candidate) + 1];
+  for (std::size_t k = 1; k < first.size(); ++k) first[k] += first[k - 1];
+  by_candidate.resize(previous.size());
+  next.assign(first.begin(), first.end() - 1);
+  for (std::size_t k = 0; k < previous.size(); ++k)
+    by_candidate[next[static_cast<std::size_t>(previous[k].candidate)]++] = static_cast<std::uint32_t>(k);
   const bool keeps_law_state = !state.law_states.empty();
   for (std::size_t k = 0; k < state.contacts.size(); ++k) {
     Interaction3D& c = state.contacts[k];
     const StoredInteraction3D* match = nullptr;
-    const auto wanted = recup_key(c);
-    if (cursor != previous.begin() && !key_below(*std::prev(cursor), wanted))
-      cursor = std::lower_bound(previous.begin(), cursor, wanted, key_below);
-    while (cursor != previous.end() && key_below(*cursor, wanted)) ++cursor;
-    for (auto it = cursor; it != previous.end() && recup_key(*it) == wanted && !match; ++it)
-      if (it->vertex == c.vertex &&
-          (c.family != PairFamily3D::PRPRx ||
-           (it->candidate_point - c.candidate_point).squaredNorm() < kRecupSquaredDistance))
-        match = &*it;
+    const auto cd = static_cast<std::size_t>(c.candidate);
+    if (cd + 1 < first.size())
+      for (std::uint32_t m = first[cd]; m < first[cd + 1] && !match; ++m) {
+        const StoredInteraction3D& p = previous[by_candidate[m]];
+        if (p.family == c.family && p.antagonist == c.antagonist && p.vertex == c.vertex &&
+            (c.family != PairFamily3D::PRPRx ||
+             (p.candidate_point - c.candidate_point).squaredNorm() < kRecupSquaredDistance))
+          match = &p;
+      }
     if (!match) {
       c.r.setZero();
       c.status_begin = ContactStatus::nknow;

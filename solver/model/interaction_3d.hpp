@@ -12,9 +12,9 @@
 
 namespace lmgc::solver {
 
-// 3D interaction families (the order interactions are kept and swept in). LMGC90 sweeps SPSPx,
-// SPPLx, SPPRx, SPCDx, SPDCx, PRPLx, PRPRx, PTPT3, CDCDx, CDPLx (mod_nlgs_3D :670-682); sweeping in
-// that order takes Bridge_PR farther from LMGC90's results, so this order stays.
+// 3D interaction families. Detection lists the interactions in LMGC90's sweep order of the families
+// (SPSPx, SPPLx, SPPRx, SPCDx, SPDCx, PRPLx, PRPRx, PTPT3, CDCDx, CDPLx: mod_nlgs_3D :670-682), not in
+// this enumeration's.
 enum class PairFamily3D : std::uint8_t {
   SPSPx,
   SPPLx,
