@@ -4,48 +4,22 @@
 #include <span>
 #include <vector>
 
-#include "solver/model/large_array.hpp"
+#include "solver/detection/detection_3d.hpp"
+#include "solver/model/run_state_3d.hpp"
 #include "solver/model/scene_3d.hpp"
-#include "solver/nlgs/nlgs_check.hpp"
-#include "solver/nlgs/quick_scramble.hpp"
+#include "solver/nlgs/nlgs_3d.hpp"
 
 namespace lmgc::solver {
-
-struct RunState3D {
-  double time = 0.0;
-  long step = 0;
-  double h = 1e-3;
-  double theta = 0.5;
-  LargeArray<Interaction3D> contacts;
-  // The interactions' law states, index for index; empty in a scene whose laws keep none
-  // (keeps_law_state_3d).
-  LargeArray<LawState3D> law_states;
-  LargeArray<StoredInteraction3D> previous;  // last step's, by recup_rloc's key (store_interactions)
-  // Detection's points before sorting, kept from step to step for its memory: a list built afresh
-  // would take new pages from the system, for the kernel to fault in, at every step on large scenes.
-  LargeArray<DetectedPoint3D> detected;
-  bool laws_initialized = false;  // a step with interactions has been solved (LawStep::first_step)
-  QuickScramble scramble;         // the sweep order's random lists, step after step
-};
 
 void increment_step(Scene3D& scene, RunState3D& state);
 // Gravity, the explicit gyroscopic torque at t_begin, driven forces.
 void compute_external_forces(Scene3D& scene, const RunState3D& state);
 void compute_free_velocity(Scene3D& scene, const RunState3D& state);
-// Detection on the θ configuration: centre = reference + X_begin + (1-θ) h v_begin, frame turned
-// from the begin frame by (1-θ) ω_begin.
-void select_prox_tactors(Scene3D& scene, RunState3D& state);
 void recup_rloc(RunState3D& state);
-// The verlet list the next recup_rloc reads: `interactions` stored by pair (family, candidate,
-// antagonist), equal pairs in their order (a step's interactions are already in that order), with the
-// internals of `law_states` (index for index, or empty: internals 0).
+// The verlet list the next recup_rloc reads: `interactions` in their order, with the internals of
+// `law_states` (index for index, or empty: internals 0).
 void store_interactions(RunState3D& state, std::span<const Interaction3D> interactions,
                         std::span<const LawState3D> law_states);
-// Whether a law of the scene's visibility rows keeps a LawState3D per interaction.
-bool scene_keeps_law_state_3d(const Scene3D& scene);
-// NLGS in LMGC90's Exchange_Local_Global form: every local solve sees the bodies' current velocities
-// and injects its impulse increment at once (numerics.md §3).
-NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& options);
 // X = X_begin + h((1-θ) V_begin + θ V); frame per the scene's rotation scheme.
 void compute_dof(Scene3D& scene, const RunState3D& state);
 void update_step(Scene3D& scene, RunState3D& state);

@@ -7,7 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "solver/integrator/step_3d.hpp"
+#include "solver/model/run_state_3d.hpp"
+#include "solver/model/scene_3d.hpp"
 
 namespace lmgc::solver {
 

@@ -11,7 +11,8 @@
 
 #include "grammar/common/exact_state_header.hpp"
 #include "solver/integrator/step_2d.hpp"
-#include "solver/integrator/step_3d.hpp"
+#include "solver/model/run_state_3d.hpp"
+#include "solver/model/scene_3d.hpp"
 
 namespace lmgc::solver {
 

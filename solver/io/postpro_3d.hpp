@@ -9,8 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "solver/integrator/step_3d.hpp"
 #include "solver/io/postpro_2d.hpp"  // PostproCommand2D, PostproKind2D: the same commands in 3D
+#include "solver/model/run_state_3d.hpp"
+#include "solver/model/scene_3d.hpp"
+#include "solver/nlgs/nlgs_check.hpp"
 
 namespace lmgc::solver {
 

@@ -5,7 +5,8 @@
 
 #include "grammar/dof/ast.hpp"
 #include "grammar/vloc_rloc/ast.hpp"
-#include "solver/integrator/step_3d.hpp"
+#include "solver/model/run_state_3d.hpp"
+#include "solver/model/scene_3d.hpp"
 
 namespace lmgc::solver {
 
@@ -26,8 +27,8 @@ grammar::VlocRlocFile vloc_rloc_file_3d(const Scene3D& scene, const RunState3D& 
 // (warm start): reactions (rl/H × h, stored (t, n, s)), relative velocities, statuses and internal
 // variables, matched to the scene's contactors by (body number, contactor rank). Interactions
 // naming contactors that do not exist (or of another shape) are skipped, as LMGC90 does. Sorted
-// as select_prox_tactors sorts its contacts (family, candidate, antagonist). The internals are in
-// `law_states`, index for index.
+// by (family, candidate, antagonist), so that the links of one PTPT3 pair come together and take
+// their ranks. The internals are in `law_states`, index for index.
 struct WarmStart3D {
   std::vector<Interaction3D> interactions;
   std::vector<LawState3D> law_states;

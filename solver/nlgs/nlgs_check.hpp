@@ -65,7 +65,7 @@ struct NlgsResult {
   // so that sweep rates compare like with like.
   double sweep_seconds = 0.0;
   // The 3D Signorini–Coulomb local solves run (solve_signorini_coulomb_3d from the sweeps, the test
-  // that they stand still and the checks; step_3d.cpp; the diagonal variant and the laws' own forms
+  // that they stand still and the checks; nlgs_3d.cpp; the diagonal variant and the laws' own forms
   // are not counted): the work of a 3D step, which a state near convergence cuts by skipping the rest
   // of its blocks and by passing open contacts by. 0 in 2D.
   std::int64_t local_solves = 0;

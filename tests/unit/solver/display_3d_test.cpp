@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "solver/integrator/step_3d.hpp"
 #include "solver/model/scene_builder_3d.hpp"
 #include "tests/support/nlgs_options.hpp"
 #include "tests/support/run_tool.hpp"

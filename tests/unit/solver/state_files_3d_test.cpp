@@ -19,6 +19,7 @@
 #include "grammar/vloc_rloc/parser.hpp"
 #include "grammar/vloc_rloc/writer.hpp"
 #include "solver/detection/point_contact.hpp"
+#include "solver/integrator/step_3d.hpp"
 #include "solver/model/scene_builder_3d.hpp"
 #include "tests/support/nlgs_options.hpp"
 
