@@ -1,6 +1,7 @@
 #include "solver/laws/contact_law.hpp"
 
 #include <concepts>
+#include <span>
 #include <utility>
 
 #include "grammar/tact_behav/law_catalogue.hpp"
@@ -61,12 +62,47 @@ const grammar::LawKind* catalogue_kind() {
   return kind;
 }
 
+// The position of parameter `name` among the catalogue's parameters of a law, or -1.
+int catalogue_position(const grammar::LawKind& kind, std::string_view name) {
+  for (std::size_t i = 0; i < kind.parameters.size(); ++i) {
+    std::string_view listed = kind.parameters[i];
+    listed = listed.substr(0, listed.find_last_not_of(' ') + 1);  // catalogue names are padded to 5
+    if (listed == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+// Each parameter of the law's table from the card's value at its name's catalogue position (0 past
+// the values given); false when a name is not the catalogue's for the keyword.
+template <class Law>
+bool fill(std::span<const double> values, Law& law) {
+  const grammar::LawKind* kind = catalogue_kind<Law>();
+  if (!kind) return false;
+  for (const LawParameter<Law>& parameter : Law::parameters) {
+    const int k = catalogue_position(*kind, parameter.name);
+    if (k < 0) return false;
+    law.*(parameter.member) =
+        static_cast<std::size_t>(k) < values.size() ? values[static_cast<std::size_t>(k)] : 0.0;
+  }
+  return true;
+}
+
+// A law states the dimensions it has, and has the operations of each: a law that declares a
+// dimension without its `prepare` (or the reverse) does not compile.
+template <class Law>
+constexpr bool forms_as_declared = Law::in_2d == HasForm2D<Law>&& Law::in_3d == HasForm3D<Law>;
+
 template <std::size_t... I>
-bool from_card(std::string_view keyword, const LawParameters& p, ContactLaw& law, std::index_sequence<I...>) {
+bool from_card(std::string_view keyword, std::span<const double> values, ContactLaw& law,
+               std::index_sequence<I...>) {
+  static_assert((forms_as_declared<std::variant_alternative_t<I, ContactLaw>> && ...),
+                "a law's in_2d / in_3d must match the prepare overloads it has");
   const auto try_one = [&]<std::size_t K>() {
     using Law = std::variant_alternative_t<K, ContactLaw>;
     if (Law::keyword != keyword) return false;
-    law = Law::from_card(p);
+    Law typed{};
+    if (!fill(values, typed)) return false;
+    law = typed;
     return true;
   };
   return (try_one.template operator()<I>() || ...);
@@ -82,12 +118,12 @@ int law_internal_count(const ContactLaw& law) {
   return std::visit([](const auto& p) { return std::decay_t<decltype(p)>::internals_2d; }, law);
 }
 
-bool law_from_card(std::string_view keyword, const LawParameters& parameters, ContactLaw& law) {
-  return from_card(keyword, parameters, law, std::make_index_sequence<std::variant_size_v<ContactLaw>>{});
+bool law_from_card(std::string_view keyword, std::span<const double> values, ContactLaw& law) {
+  return from_card(keyword, values, law, std::make_index_sequence<std::variant_size_v<ContactLaw>>{});
 }
 
 bool provided_in_2d(const ContactLaw& law) {
-  return std::visit([](const auto& p) { return HasForm2D<std::decay_t<decltype(p)>>; }, law);
+  return std::visit([](const auto& p) { return std::decay_t<decltype(p)>::in_2d; }, law);
 }
 
 void prepare_law(const ContactLaw& law, LocalProblem2D& c, const LawStep& step) {
@@ -126,7 +162,7 @@ void finish_law(const ContactLaw& law, Interaction2D& c, LawState2D& state, cons
 }
 
 bool provided_in_3d(const ContactLaw& law) {
-  return std::visit([](const auto& p) { return HasForm3D<std::decay_t<decltype(p)>>; }, law);
+  return std::visit([](const auto& p) { return std::decay_t<decltype(p)>::in_3d; }, law);
 }
 
 bool keeps_law_state_3d(const ContactLaw& law) {

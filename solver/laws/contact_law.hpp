@@ -1,8 +1,10 @@
 #pragma once
 // The contact-law catalogue: one header per law (its parameters, TACT_BEHAV keyword, reader, and
 // the derived Signorini–Coulomb problem it poses in 2D and/or 3D), gathered here into one table,
-// the ContactLaw variant. Adding a law: its header, one entry in the variant, its test.
+// the ContactLaw variant. Adding a law: its header (keyword, dimensions, parameter table, the
+// operations of each dimension it has), one entry in the variant, its test.
 // docs/lmgc90-facts/contact-laws.md §0 (catalogue), §2 (derived problem), §3 (laws one by one).
+#include <span>
 #include <string_view>
 #include <variant>
 
@@ -37,10 +39,12 @@ std::string_view law_keyword(const ContactLaw& law);
 // Number of internal variables LMGC90 stores per interaction for this law (2D).
 int law_internal_count(const ContactLaw& law);
 
-// The law of a TACT_BEHAV keyword with its parameters; false for a keyword not in the table.
-bool law_from_card(std::string_view keyword, const LawParameters& parameters, ContactLaw& law);
+// The law of a TACT_BEHAV card: its keyword's entry of the table, each of its parameters filled from
+// `values` (the card's, in the law catalogue's order: grammar::TactLaw::parameters). False for a
+// keyword not in the table.
+bool law_from_card(std::string_view keyword, std::span<const double> values, ContactLaw& law);
 
-// 2D: whether the law has a 2D form (false for the 3D-only ones: rods, wires).
+// Whether the law has a 2D form (false for the 3D-only ones: rods, wires): the law's in_2d.
 bool provided_in_2d(const ContactLaw& law);
 // 2D: the derived problem of the law (c.covfree, c.correction, c.WW, c.mu, c.inactive, statuses, the
 // internals in c.internal), after the caller has reset them; and the end-of-step statuses and

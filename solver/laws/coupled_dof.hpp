@@ -7,8 +7,9 @@ namespace lmgc::solver {
 
 struct CoupledDof {
   static constexpr std::string_view keyword = "COUPLED_DOF";
+  static constexpr bool in_2d = true, in_3d = true;
   static constexpr int internals_2d = 0;
-  static CoupledDof from_card(const LawParameters&) { return {}; }
+  static constexpr std::array<LawParameter<CoupledDof>, 0> parameters{};
 };
 
 inline void prepare(const CoupledDof&, LocalProblem2D& c, const LawStep&) {

@@ -7,9 +7,11 @@ namespace lmgc::solver {
 
 struct ElasticRepellClb {
   static constexpr std::string_view keyword = "ELASTIC_REPELL_CLB";
+  static constexpr bool in_2d = true, in_3d = true;
   static constexpr int internals_2d = 0;
-  static ElasticRepellClb from_card(const LawParameters& p) { return {p("F/gap"), p("sfric")}; }
   double stiffness, sfric;
+  static constexpr LawParameter<ElasticRepellClb> parameters[] = {{"F/gap", &ElasticRepellClb::stiffness},
+                                                                  {"sfric", &ElasticRepellClb::sfric}};
 };
 
 // r_n = -h k γ_end gives WWnn = Wnn + 1/(k h²), covfree = γ/h.

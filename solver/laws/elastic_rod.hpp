@@ -7,9 +7,11 @@ namespace lmgc::solver {
 
 struct ElasticRod {
   static constexpr std::string_view keyword = "ELASTIC_ROD";
+  static constexpr bool in_2d = false, in_3d = true;
   static constexpr int internals_2d = 1;
-  static ElasticRod from_card(const LawParameters& p) { return {p("F/str"), p("prstr")}; }
   double force_per_strain, prestrain;
+  static constexpr LawParameter<ElasticRod> parameters[] = {{"F/str", &ElasticRod::force_per_strain},
+                                                            {"prstr", &ElasticRod::prestrain}};
 };
 
 inline void prepare(const ElasticRod& law, Interaction3D& c, LawState3D& s, const LawStep& step) {

@@ -8,9 +8,11 @@ namespace lmgc::solver {
 
 struct ElasticWire {
   static constexpr std::string_view keyword = "ELASTIC_WIRE";
+  static constexpr bool in_2d = false, in_3d = true;
   static constexpr int internals_2d = 1;
-  static ElasticWire from_card(const LawParameters& p) { return {p("F/str"), p("prstr")}; }
   double force_per_strain, prestrain;
+  static constexpr LawParameter<ElasticWire> parameters[] = {{"F/str", &ElasticWire::force_per_strain},
+                                                             {"prstr", &ElasticWire::prestrain}};
 };
 
 inline void prepare(const ElasticWire& law, Interaction3D& c, LawState3D& s, const LawStep& step) {

@@ -6,9 +6,10 @@ namespace lmgc::solver {
 
 struct GapSgrClb {
   static constexpr std::string_view keyword = "GAP_SGR_CLB";
+  static constexpr bool in_2d = true, in_3d = true;
   static constexpr int internals_2d = 1;  // taille_ele
-  static GapSgrClb from_card(const LawParameters& p) { return {p("sfric")}; }
   double sfric;
+  static constexpr LawParameter<GapSgrClb> parameters[] = {{"sfric", &GapSgrClb::sfric}};
 };
 
 template <class Interaction>

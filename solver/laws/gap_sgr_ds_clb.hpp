@@ -6,9 +6,11 @@ namespace lmgc::solver {
 
 struct GapSgrDsClb {
   static constexpr std::string_view keyword = "GAP_SGR_DS_CLB";
+  static constexpr bool in_2d = true, in_3d = true;
   static constexpr int internals_2d = 1;  // taille_ele
-  static GapSgrDsClb from_card(const LawParameters& p) { return {p("dfric"), p("sfric")}; }
   double dfric, sfric;
+  static constexpr LawParameter<GapSgrDsClb> parameters[] = {{"dfric", &GapSgrDsClb::dfric},
+                                                             {"sfric", &GapSgrDsClb::sfric}};
 };
 
 template <class Interaction>

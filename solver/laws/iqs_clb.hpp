@@ -6,9 +6,10 @@ namespace lmgc::solver {
 
 struct IqsClb {
   static constexpr std::string_view keyword = "IQS_CLB";
+  static constexpr bool in_2d = true, in_3d = true;
   static constexpr int internals_2d = 0;
-  static IqsClb from_card(const LawParameters& p) { return {p("sfric")}; }
   double sfric;
+  static constexpr LawParameter<IqsClb> parameters[] = {{"sfric", &IqsClb::sfric}};
 };
 
 template <class Interaction>

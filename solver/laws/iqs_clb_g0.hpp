@@ -7,9 +7,10 @@ namespace lmgc::solver {
 
 struct IqsClbG0 {
   static constexpr std::string_view keyword = "IQS_CLB_g0";
+  static constexpr bool in_2d = true, in_3d = true;
   static constexpr int internals_2d = 1;  // g_ref
-  static IqsClbG0 from_card(const LawParameters& p) { return {p("sfric")}; }
   double sfric;
+  static constexpr LawParameter<IqsClbG0> parameters[] = {{"sfric", &IqsClbG0::sfric}};
 };
 
 // g_ref = (γ)+ at the run's first preparation (mod_nlgs / mod_nlgs_3D prep, `.not. is_initialized`);

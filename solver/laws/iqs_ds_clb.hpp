@@ -6,9 +6,11 @@ namespace lmgc::solver {
 
 struct IqsDsClb {
   static constexpr std::string_view keyword = "IQS_DS_CLB";
+  static constexpr bool in_2d = true, in_3d = true;
   static constexpr int internals_2d = 0;
-  static IqsDsClb from_card(const LawParameters& p) { return {p("dfric"), p("sfric")}; }
   double dfric, sfric;
+  static constexpr LawParameter<IqsDsClb> parameters[] = {{"dfric", &IqsDsClb::dfric},
+                                                          {"sfric", &IqsDsClb::sfric}};
 };
 
 template <class Interaction>

@@ -9,11 +9,12 @@ namespace lmgc::solver {
 
 struct IqsMacCzm {
   static constexpr std::string_view keyword = "IQS_MAC_CZM";
+  static constexpr bool in_2d = true, in_3d = true;
   static constexpr int internals_2d = 5;
-  static IqsMacCzm from_card(const LawParameters& p) {
-    return {p("dfric"), p("sfric"), p("cn"), p("ct"), p("visco"), p("dupre")};
-  }
   double dfric, sfric, cn, ct, visco, dupre;
+  static constexpr LawParameter<IqsMacCzm> parameters[] = {
+      {"dfric", &IqsMacCzm::dfric}, {"sfric", &IqsMacCzm::sfric}, {"cn", &IqsMacCzm::cn},
+      {"ct", &IqsMacCzm::ct},       {"visco", &IqsMacCzm::visco}, {"dupre", &IqsMacCzm::dupre}};
 };
 
 // 2D: the local problem of damage β (iter_CZM :mod_tact_behav, get_fric_CZM): while β > 1e-12 the

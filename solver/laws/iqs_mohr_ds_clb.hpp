@@ -9,11 +9,13 @@ namespace lmgc::solver {
 
 struct IqsMohrDsClb {
   static constexpr std::string_view keyword = "IQS_MOHR_DS_CLB";
+  static constexpr bool in_2d = true, in_3d = true;
   static constexpr int internals_2d = 0;
-  static IqsMohrDsClb from_card(const LawParameters& p) {
-    return {p("cohen"), p("cohet"), p("dfric"), p("sfric")};
-  }
   double cohen, cohet, dfric, sfric;
+  static constexpr LawParameter<IqsMohrDsClb> parameters[] = {{"cohen", &IqsMohrDsClb::cohen},
+                                                              {"cohet", &IqsMohrDsClb::cohet},
+                                                              {"dfric", &IqsMohrDsClb::dfric},
+                                                              {"sfric", &IqsMohrDsClb::sfric}};
   // The Mohr cone while cohesive: μ = cohet/cohen.
   double cohesive_friction() const { return cohen > 0.0 ? cohet / cohen : sfric; }
 };

@@ -7,11 +7,14 @@ namespace lmgc::solver {
 
 struct IqsWetDsClb {
   static constexpr std::string_view keyword = "IQS_WET_DS_CLB";
+  static constexpr bool in_2d = true, in_3d = true;
   static constexpr int internals_2d = 0;
-  static IqsWetDsClb from_card(const LawParameters& p) {
-    return {p("cohen"), p("cohet"), p("Wethk"), p("dfric"), p("sfric")};
-  }
   double cohen, cohet, wethk, dfric, sfric;
+  static constexpr LawParameter<IqsWetDsClb> parameters[] = {{"cohen", &IqsWetDsClb::cohen},
+                                                             {"cohet", &IqsWetDsClb::cohet},
+                                                             {"Wethk", &IqsWetDsClb::wethk},
+                                                             {"dfric", &IqsWetDsClb::dfric},
+                                                             {"sfric", &IqsWetDsClb::sfric}};
 };
 
 inline void prepare(const IqsWetDsClb& law, LocalProblem2D& c, const LawStep& step) {

@@ -1,11 +1,11 @@
 #pragma once
-// What every contact law file builds on: the step data a law sees, the reader of a TACT_BEHAV
-// card's parameters, and the forms shared by several laws (contact-laws.md §1.3, §2). A law is
-// one header of this folder: its parameter struct (keyword, internal-variable count, reader) and
-// its `prepare` (derived Signorini–Coulomb problem, once per step) and `finish` (statuses and
-// internal variables at the end of the step) for the interactions of each dimension it has.
-// contact_law.hpp gathers them into the ContactLaw table.
-#include <functional>
+// What every contact law file builds on: the step data a law sees, the table of a law's
+// parameters, and the forms shared by several laws (contact-laws.md §1.3, §2). A law is one header
+// of this folder: its parameter struct (keyword, the dimensions it has, internal-variable count,
+// parameter table) and its `prepare` (derived Signorini–Coulomb problem, once per step) and
+// `finish` (statuses and internal variables at the end of the step) for the interactions of each
+// dimension it has. contact_law.hpp gathers them into the ContactLaw table.
+#include <array>
 #include <string_view>
 
 #include "solver/model/contact_status.hpp"
@@ -14,8 +14,16 @@
 
 namespace lmgc::solver {
 
-// A law's parameter by its TACT_BEHAV.OUT name ("sfric", "restn", ...), 0 when absent.
-using LawParameters = std::function<double(std::string_view)>;
+// One parameter of a law: the name under which the law catalogue lists it (TACT_BEHAV.OUT's,
+// "sfric", "restn", ...) and the member it fills. Each law lists its parameters in a table
+// `parameters`; law_from_card fills them from the card, and a name the catalogue does not have for
+// the law's keyword is refused there (and by the test ContactLawTable.EveryParameterIsOnItsCatalogueCard),
+// never read as 0.
+template <class Law>
+struct LawParameter {
+  std::string_view name;
+  double Law::*member;
+};
 
 struct LawStep {
   double h = 0.0;           // time step [s]

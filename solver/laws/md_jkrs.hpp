@@ -8,9 +8,10 @@ namespace lmgc::solver {
 
 struct NoNlgsBranch {
   static constexpr std::string_view keyword = "MD_JKRs";
+  static constexpr bool in_2d = true, in_3d = false;
   static constexpr int internals_2d = 0;
-  static NoNlgsBranch from_card(const LawParameters& p) { return {p("sfric")}; }
   double sfric;
+  static constexpr LawParameter<NoNlgsBranch> parameters[] = {{"sfric", &NoNlgsBranch::sfric}};
 };
 
 inline void prepare(const NoNlgsBranch& law, LocalProblem2D& c, const LawStep&) {

@@ -6,9 +6,11 @@ namespace lmgc::solver {
 
 struct RstClb {
   static constexpr std::string_view keyword = "RST_CLB";
+  static constexpr bool in_2d = true, in_3d = true;
   static constexpr int internals_2d = 0;
-  static RstClb from_card(const LawParameters& p) { return {p("restn"), p("restt"), p("sfric")}; }
   double restn, restt, sfric;
+  static constexpr LawParameter<RstClb> parameters[] = {
+      {"restn", &RstClb::restn}, {"restt", &RstClb::restt}, {"sfric", &RstClb::sfric}};
 };
 
 template <class Interaction>

@@ -6,11 +6,13 @@ namespace lmgc::solver {
 
 struct RstDsClb {
   static constexpr std::string_view keyword = "RST_DS_CLB";
+  static constexpr bool in_2d = true, in_3d = true;
   static constexpr int internals_2d = 0;
-  static RstDsClb from_card(const LawParameters& p) {
-    return {p("restn"), p("restt"), p("dfric"), p("sfric")};
-  }
   double restn, restt, dfric, sfric;
+  static constexpr LawParameter<RstDsClb> parameters[] = {{"restn", &RstDsClb::restn},
+                                                          {"restt", &RstDsClb::restt},
+                                                          {"dfric", &RstDsClb::dfric},
+                                                          {"sfric", &RstDsClb::sfric}};
 };
 
 template <class Interaction>

@@ -7,9 +7,10 @@ namespace lmgc::solver {
 
 struct VelSgrClb {
   static constexpr std::string_view keyword = "VEL_SGR_CLB";
+  static constexpr bool in_2d = true, in_3d = true;
   static constexpr int internals_2d = 1;  // taille_ele
-  static VelSgrClb from_card(const LawParameters& p) { return {p("sfric")}; }
   double sfric;
+  static constexpr LawParameter<VelSgrClb> parameters[] = {{"sfric", &VelSgrClb::sfric}};
 };
 
 template <class Interaction>

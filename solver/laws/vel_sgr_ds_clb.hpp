@@ -6,9 +6,11 @@ namespace lmgc::solver {
 
 struct VelSgrDsClb {
   static constexpr std::string_view keyword = "VEL_SGR_DS_CLB";
+  static constexpr bool in_2d = true, in_3d = true;
   static constexpr int internals_2d = 1;  // taille_ele
-  static VelSgrDsClb from_card(const LawParameters& p) { return {p("dfric"), p("sfric")}; }
   double dfric, sfric;
+  static constexpr LawParameter<VelSgrDsClb> parameters[] = {{"dfric", &VelSgrDsClb::dfric},
+                                                             {"sfric", &VelSgrDsClb::sfric}};
 };
 
 template <class Interaction>

@@ -15,23 +15,13 @@ namespace {
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 
-// Parameter `name` of a law card, by the catalogue's parameter order.
-double parameter(const grammar::TactLaw& card, const grammar::LawKind& kind, std::string_view name) {
-  for (std::size_t i = 0; i < kind.parameters.size(); ++i) {
-    std::string_view stored = kind.parameters[i];
-    stored = stored.substr(0, stored.find_last_not_of(' ') + 1);  // catalogue names are padded to 5
-    if (stored == name) return i < card.parameters.size() ? card.parameters[i].value : 0.0;
-  }
-  return 0.0;
-}
-
 }  // namespace
 
 bool contact_law_of(const grammar::TactLaw& card, ContactLaw& law) {
-  const grammar::LawKind* kind = grammar::find_law_kind(card.keyword.value);
-  if (!kind) return false;
-  return law_from_card(
-      card.keyword.value, [&](std::string_view name) { return parameter(card, *kind, name); }, law);
+  std::vector<double> values;
+  values.reserve(card.parameters.size());
+  for (const grammar::Real& v : card.parameters) values.push_back(v.value);
+  return law_from_card(card.keyword.value, values, law);
 }
 
 bool runs_contactor_2d(std::string_view type) {
@@ -158,13 +148,11 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
   }
 
   // Contact laws and visibility rows.
+  // The laws the solver has; a card of another keyword is reported when a visibility row uses it
+  // (below), and the scene is then not run.
   for (const grammar::TactLaw& card : in.tact_behav->laws) {
     ContactLaw law;
-    if (!contact_law_of(card, law)) {
-      // Reported only when a visibility row uses it (below); keep the slot so indices match.
-      law = IqsClb{0.0};
-    }
-    scene.laws.push_back({card.nickname.value, law});
+    if (contact_law_of(card, law)) scene.laws.push_back({card.nickname.value, law});
   }
   // LMGC90 looks rows up in its own order (duplicates merged, then sorted): first match wins.
   for (const grammar::SeeEntry& see : grammar::lmgc90_see_order(in.tact_behav->sees)) {

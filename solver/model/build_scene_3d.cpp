@@ -167,10 +167,11 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
   }
 
   // Contact laws and visibility rows (RBDY3 against RBDY3).
+  // The laws the solver has; a card of another keyword is reported when a visibility row uses it
+  // (below), and the scene is then not run.
   for (const grammar::TactLaw& card : in.tact_behav->laws) {
     ContactLaw law;
-    if (!contact_law_of(card, law)) law = IqsClb{0.0};
-    scene.laws.push_back({card.nickname.value, law});
+    if (contact_law_of(card, law)) scene.laws.push_back({card.nickname.value, law});
   }
   for (const grammar::SeeEntry& see : grammar::lmgc90_see_order(in.tact_behav->sees)) {
     if (see.candidate_body.value != "RBDY3" || see.antagonist_body.value != "RBDY3") continue;
@@ -192,7 +193,6 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
       const grammar::TactLaw& card = in.tact_behav->laws[k];
       if (card.nickname.value != see.law_nickname.value) continue;
       found = true;
-      v.law = static_cast<std::int32_t>(k);
       ContactLaw law;
       if (!contact_law_of(card, law) || !provided_in_3d(law)) {
         sink.report("L4002", grammar::Location{in.tact_behav_path, card.keyword.span},
@@ -206,6 +206,12 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
                         ") needs a reference length, which only PT3Dx/PT3Dx (PTPT3) links have");
         ok = false;
       }
+      // The first card of the nickname is the first law of scene.laws that has it.
+      for (std::size_t l = 0; l < scene.laws.size(); ++l)
+        if (scene.laws[l].nickname == card.nickname.value) {
+          v.law = static_cast<std::int32_t>(l);
+          break;
+        }
       break;
     }
     if (!found) {

@@ -5,7 +5,11 @@
 
 #include <map>
 #include <string>
+#include <utility>
+#include <variant>
+#include <vector>
 
+#include "grammar/tact_behav/law_catalogue.hpp"
 #include "solver/laws/contact_law.hpp"
 
 namespace lmgc::solver {
@@ -13,12 +17,36 @@ namespace {
 
 constexpr double h = 1e-3;
 
-// Parameters by name for law_from_card.
-LawParameters parameters(const std::map<std::string, double>& values) {
-  return [values](std::string_view name) {
-    const auto it = values.find(std::string(name));
-    return it == values.end() ? 0.0 : it->second;
+// A card's values in the law catalogue's order, by parameter name (0 for the others), as
+// grammar::TactLaw holds them.
+std::vector<double> card_values(std::string_view keyword, const std::map<std::string, double>& by_name = {}) {
+  std::vector<double> values;
+  const grammar::LawKind* kind = grammar::find_law_kind(keyword);
+  if (!kind) return values;
+  for (std::string_view listed : kind->parameters) {
+    listed = listed.substr(0, listed.find_last_not_of(' ') + 1);
+    const auto it = by_name.find(std::string(listed));
+    values.push_back(it == by_name.end() ? 0.0 : it->second);
+  }
+  return values;
+}
+
+// Every parameter a law's table names is one the law catalogue lists for the law's keyword, so that
+// no parameter is read from a name its card does not have.
+template <std::size_t... I>
+void expect_parameters_on_their_cards(std::index_sequence<I...>) {
+  const auto one = [&]<std::size_t K>() {
+    using Law = std::variant_alternative_t<K, ContactLaw>;
+    const grammar::LawKind* kind = grammar::find_law_kind(Law::keyword);
+    ASSERT_NE(kind, nullptr) << Law::keyword;
+    for (const LawParameter<Law>& parameter : Law::parameters) {
+      bool listed = false;
+      for (std::string_view name : kind->parameters)
+        listed = listed || name.substr(0, name.find_last_not_of(' ') + 1) == parameter.name;
+      EXPECT_TRUE(listed) << Law::keyword << " has no parameter '" << parameter.name << "'";
+    }
   };
+  (one.template operator()<I>(), ...);
 }
 
 LocalProblem2D contact_2d(double gap, ContactStatus begin = ContactStatus::nknow) {
@@ -71,16 +99,39 @@ TEST(ContactLawTable, EveryKeywordReadsBackToItsLaw) {
                             "ELASTIC_WIRE"};
   for (const char* keyword : keywords) {
     ContactLaw law;
-    ASSERT_TRUE(law_from_card(keyword, parameters({}), law)) << keyword;
+    ASSERT_TRUE(law_from_card(keyword, card_values(keyword), law)) << keyword;
     EXPECT_EQ(law_keyword(law), keyword);
   }
   ContactLaw law;
-  EXPECT_FALSE(law_from_card("NOT_A_LAW", parameters({}), law));
+  EXPECT_FALSE(law_from_card("NOT_A_LAW", {}, law));
   ASSERT_TRUE(law_from_card(
-      "RST_DS_CLB", parameters({{"restn", 0.5}, {"restt", 0.1}, {"dfric", 0.2}, {"sfric", 0.3}}), law));
+      "RST_DS_CLB",
+      card_values("RST_DS_CLB", {{"restn", 0.5}, {"restt", 0.1}, {"dfric", 0.2}, {"sfric", 0.3}}), law));
   const auto& rst = std::get<RstDsClb>(law);
   EXPECT_EQ(rst.restn, 0.5);
   EXPECT_EQ(rst.dfric, 0.2);
+}
+
+TEST(ContactLawTable, EveryParameterIsOnItsCatalogueCard) {
+  expect_parameters_on_their_cards(std::make_index_sequence<std::variant_size_v<ContactLaw>>{});
+}
+
+// Each value lands in the member its name says, whatever the order of the members: IQS_MAC_CZM's
+// card lists its six values in another order than the struct.
+TEST(ContactLawTable, EachValueFillsTheMemberOfItsName) {
+  ContactLaw law;
+  ASSERT_TRUE(law_from_card(
+      "IQS_MAC_CZM",
+      card_values("IQS_MAC_CZM",
+                  {{"dfric", 0.1}, {"sfric", 0.2}, {"cn", 3.0}, {"ct", 4.0}, {"visco", 5.0}, {"dupre", 6.0}}),
+      law));
+  const auto& czm = std::get<IqsMacCzm>(law);
+  EXPECT_EQ(czm.dfric, 0.1);
+  EXPECT_EQ(czm.sfric, 0.2);
+  EXPECT_EQ(czm.cn, 3.0);
+  EXPECT_EQ(czm.ct, 4.0);
+  EXPECT_EQ(czm.visco, 5.0);
+  EXPECT_EQ(czm.dupre, 6.0);
 }
 
 TEST(ContactLawTable, ThreeDimensionalFormsAreTheDocumentedOnes) {
