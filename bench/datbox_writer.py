@@ -1,0 +1,130 @@
+"""Writes LMGC90 case folders for the benchmarks and comparisons (bench/memory.py,
+bench/masonry_wall.py): DATBOX/ files in LMGC90's column layout (docs/grammar.md) and a
+command.py that LMGC90 runs and lmgc-solve reads. Rigid 2D bodies only."""
+import math
+import os
+
+TEMPLATE = "$dofty  numbr [CT......+......AMP..*..cos.(..OMEGA.*.time.+.PHI..)]...*...[RAMPI.....+.....RAMP.*.time]"
+
+
+def real(x):
+    """A real in LMGC90's D14.7 form: ' 0.1234567D+01'."""
+    if x == 0.0:
+        return " 0.0000000D+00"
+    exponent = math.floor(math.log10(abs(x))) + 1
+    digits = round(abs(x) / 10.0 ** exponent * 1e7)
+    if digits >= 10**7:
+        digits, exponent = digits // 10, exponent + 1
+    return f"{'-' if x < 0 else ' '}0.{digits:07d}D{exponent:+03d}"
+
+
+def rbdy2(number, behav, x, y, angle, contactor):
+    """One RBDY2 block; avrd and gyrd 0 (LMGC90 computes them from the contactor)."""
+    return (f"$bdyty\n RBDY2{number:7d}\n$blmty\n PLAIN      1  behav  {behav}  avrd={real(0.0)}  gyrd={real(0.0)}\n"
+            f"$nodty\n NO3xx      1                coo1={real(x)}  coo2={real(y)}  coo3={real(angle)}\n"
+            f"$tacty\n{contactor}$$$$$$\n")
+
+
+def disk(radius, color="BLEUx"):
+    return f" DISKx      1  color  {color}  byrd={real(radius)}\n"
+
+
+def joncx(half_length, half_width, color="WALLx"):
+    return f" JONCx      1  color  {color}  ax1 ={real(half_length)}  ax2 ={real(half_width)}\n"
+
+
+def polygon(vertices, color="BLEUx"):
+    """Vertices about the body's node, counter-clockwise."""
+    lines = f" POLYG      1  color  {color}  nb_vertex={len(vertices):7d}\n"
+    for x, y in vertices:
+        lines += f"                             coo1={real(x)}  coo2={real(y)}\n"
+    return lines
+
+
+def fixed(bodies):
+    """DRV_DOF.DAT: the three velocities of each body imposed to zero."""
+    out = ""
+    for body in bodies:
+        out += f"$bdyty\n RBDY2{body:7d}\n$nodty\n NO3xx      1\n{TEMPLATE}\n"
+        for dof in (1, 2, 3):
+            out += f" vlocy      {dof}{real(0.0)} {real(0.0)} {real(0.0)} {real(0.0)} {real(1.0)} {real(0.0)}\n"
+        out += "$$$$$$\n"
+    return out
+
+
+def bulk_behav(densities, gravity=-9.81):
+    """BULK_BEHAV.DAT with gravity along y and one RIGID law per (name, density)."""
+    out = f"$gravy\n                   grv1={real(0.0)}  grv2={real(gravity)}  grv3={real(0.0)}\n"
+    for name, density in densities:
+        out += f"\n$behav  lawty\n {name}  RIGID                           Umas={real(density)}\n"
+    return out
+
+
+def tact_behav(law, friction, rows):
+    """TACT_BEHAV.DAT: one IQS_CLB law and its '$seety' rows (cdtac, cdcol, antac, ancol, alert)."""
+    out = f"$behav  lawty\n {law}  IQS_CLB                         fric={real(friction)}\n\n"
+    for cdtac, cdcol, antac, ancol, alert in rows:
+        out += (f"$seety\n cdbdy  cdtac  cdcol  behav  anbdy  antac  ancol       alert\n"
+                f" RBDY2  {cdtac}  {cdcol}  {law}  RBDY2  {antac}  {ancol}      {real(alert)}\n\n")
+    return out
+
+
+def write_case(folder, files, script):
+    """DATBOX/<name> for each (name, text) of `files`, and command.py."""
+    datbox = os.path.join(folder, "DATBOX")
+    os.makedirs(datbox, exist_ok=True)
+    files = dict(files)
+    files.setdefault("DOF.INI", f"! DOF\n$steps      0                time={real(0.0)}\n")
+    files.setdefault("Vloc_Rloc.INI", f"! Vloc_Rloc\n$steps      0                time={real(0.0)}\n")
+    for name, text in files.items():
+        with open(os.path.join(datbox, name), "w") as f:
+            f.write(text)
+    with open(os.path.join(folder, "command.py"), "w") as f:
+        f.write(script)
+
+
+def rigid_2d_script(dt, steps, tol, gs_it1, gs_it2, norm="Quad ", write_every=0, theta=0.5, timed=False):
+    """A command.py in LMGC90's usual sequence (the rigid 2D loop of its user's guide)."""
+    write = "  chipy.WriteOut(freq_write)\n" if write_every else ""
+    timer_start = "  start = time.perf_counter()\n" if timed else ""
+    timer_stop = "  times.append(time.perf_counter() - start)\n" if timed else ""
+    timer_file = ("with open('step_seconds.txt', 'w') as f:\n"
+                  "  f.write('\\n'.join(str(t) for t in times) + '\\n')\n") if timed else ""
+    return f"""# Written by lmgc's bench/datbox_writer.py: run by LMGC90, read by lmgc-solve.
+import time
+from pylmgc90 import chipy
+
+dt = {dt!r}
+theta = {theta!r}
+nb_steps = {steps}
+solver_type = 'Stored_Delassus_Loops         '
+norm = {norm!r}
+tol = {tol!r}
+relax = 1.0
+gs_it1 = {gs_it1}
+gs_it2 = {gs_it2}
+freq_write = {write_every or 1}
+
+chipy.Initialize()
+chipy.checkDirectories()
+chipy.SetDimension(2, 1)
+chipy.TimeEvolution_SetTimeStep(dt)
+chipy.Integrator_InitTheta(theta)
+chipy.ReadDatbox(deformable=False)
+chipy.ComputeMass()
+times = []
+for k in range(0, nb_steps):
+{timer_start}  chipy.IncrementStep()
+  chipy.ComputeFext()
+  chipy.ComputeBulk()
+  chipy.ComputeFreeVelocity()
+  chipy.SelectProxTactors()
+  chipy.RecupRloc()
+  chipy.ExSolver(solver_type, norm, tol, relax, gs_it1, gs_it2)
+  chipy.StockRloc()
+  chipy.ComputeDof()
+  chipy.UpdateStep()
+{write}{timer_stop}chipy.WriteLastDof()
+chipy.WriteLastVlocRloc()
+chipy.Finalize()
+{timer_file}"""
