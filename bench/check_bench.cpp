@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "bench/scenes/generated_files.hpp"
-#include "validate/case_files.hpp"
+#include "case_folder/case_files.hpp"
 #include "validate/checks.hpp"
 
 namespace {
@@ -49,7 +49,7 @@ const fs::path& generated_case() {
 void BM_ReadCase100k(benchmark::State& state) {
   for (auto _ : state) {
     lmgc::grammar::DiagnosticSink sink(1000);
-    auto files = lmgc::validate::load_case(generated_case(), sink);
+    auto files = lmgc::case_folder::load_case(generated_case(), sink);
     benchmark::DoNotOptimize(files);
     if (!files || sink.has_errors()) state.SkipWithError("the generated case does not read cleanly");
   }
@@ -60,7 +60,7 @@ void BM_ReadAndCheckCase100k(benchmark::State& state) {
   std::size_t diagnostics = 0;
   for (auto _ : state) {
     lmgc::grammar::DiagnosticSink sink(1000);
-    auto files = lmgc::validate::load_case(generated_case(), sink);
+    auto files = lmgc::case_folder::load_case(generated_case(), sink);
     if (files) lmgc::validate::check_case(*files, sink);
     diagnostics = sink.items().size();
     benchmark::DoNotOptimize(files);

@@ -1,17 +1,19 @@
 # cmake --install: the three programs, the libraries and their headers, and a CMake package
-# (find_package(lmgc), targets lmgc::grammar, lmgc::validate, lmgc::solver, ...).
+# (find_package(lmgc), targets lmgc::grammar, lmgc::case_folder, lmgc::validate, lmgc::solver, ...).
 #
 # Layout under the prefix:
 #   bin/                      lmgc-check, lmgc-solve, lmgc-fc3d (when HDF5 was found)
 #   lib/                      the static libraries
-#   include/lmgc/             grammar/, validate/, solver/, spatial/ headers, as the sources include them
+#   include/lmgc/             grammar/, case_folder/, run/, validate/, solver/, spatial/ headers, as the sources
+#                             include them
 #   lib/cmake/lmgc/           lmgcConfig.cmake, lmgcConfigVersion.cmake, lmgcTargets.cmake
 #   share/doc/lmgc/           README.md, LICENSE, CHANGELOG.md, docs/
 # The Python module (chipy compatibility) will go to lib/python3/dist-packages/lmgc/ and
 # bin/lmgc-run.
 include(CMakePackageConfigHelpers)
 
-set(lmgc_libraries lmgc_options lmgc_spatial lmgc_grammar_common lmgc_grammar lmgc_validate lmgc_solver)
+set(lmgc_libraries lmgc_options lmgc_spatial lmgc_grammar_common lmgc_grammar lmgc_case_folder lmgc_run lmgc_validate
+                   lmgc_solver)
 foreach(kind IN LISTS LMGC_GRAMMAR_KINDS)
   list(APPEND lmgc_libraries lmgc_grammar_${kind})
 endforeach()
@@ -32,7 +34,7 @@ install(TARGETS ${lmgc_libraries} EXPORT lmgcTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lmgc)
-foreach(folder grammar validate solver spatial)
+foreach(folder grammar case_folder run validate solver spatial)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lmgc/${folder}
           FILES_MATCHING PATTERN "*.hpp")
 endforeach()

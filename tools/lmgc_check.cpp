@@ -9,13 +9,13 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "case_folder/case_files.hpp"
 #include "grammar/common/diagnostic_catalogue.hpp"
 #include "grammar/common/output_file.hpp"
 #include "lmgc_revision.hpp"
+#include "run/run_parameters.hpp"
 #include "solver/driver/case_input.hpp"
 #include "solver/driver/run_loop.hpp"
-#include "solver/driver/run_parameters.hpp"
-#include "validate/case_files.hpp"
 #include "validate/checks.hpp"
 #include "validate/render.hpp"
 
@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
 
   lmgc::solver::ignore_file_size_signal();
   lmgc::grammar::DiagnosticSink sink(5000);
-  auto files = lmgc::validate::load_case(case_dir, sink);
+  auto files = lmgc::case_folder::load_case(case_dir, sink);
   // Semantic checks (references, consistency, physics) run on whatever could be read: a file
   // with syntax errors still gets its cross references checked.
   if (files) {
@@ -84,10 +84,10 @@ int main(int argc, char** argv) {
     lmgc::solver::report_solver_support(*files, sink);
     // The run parameters of the script that drives the run: out of range (L4010) or computed (L4013).
     if (lmgc::validate::script_drives(*files, options)) {
-      lmgc::solver::RunOptions run;
-      lmgc::solver::ParameterSources sources;
-      lmgc::solver::apply_script_parameters(*files->command_script, lmgc::solver::is_rigid_3d_case(*files),
-                                            run, sources, sink);
+      lmgc::run::RunOptions run;
+      lmgc::run::ParameterSources sources;
+      lmgc::run::apply_script_parameters(*files->command_script, lmgc::solver::is_rigid_3d_case(*files), run,
+                                         sources, sink);
     }
   }
 

@@ -10,14 +10,14 @@
 #include <iostream>
 #include <set>
 
+#include "case_folder/case_files.hpp"
 #include "grammar/common/diagnostic_catalogue.hpp"
 #include "grammar/common/output_file.hpp"
 #include "lmgc_revision.hpp"
+#include "run/run_parameters.hpp"
 #include "solver/driver/case_input.hpp"
 #include "solver/driver/run_2d.hpp"
 #include "solver/driver/run_3d.hpp"
-#include "solver/driver/run_parameters.hpp"
-#include "validate/case_files.hpp"
 #include "validate/checks.hpp"
 #include "validate/render.hpp"
 
@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
   CLI::App app{
       "lmgc-solve: run an LMGC90 case folder (CASE_DIR/DATBOX/) with the Moreau-Jean scheme and NLGS"};
   std::string case_dir;
-  solver::RunOptions options;
+  run::RunOptions options;
   std::string storage = "Stored_Delassus_Loops", norm = "Quad";
   double rloc_tol = 0.0;
   bool no_command_dat = false;
@@ -175,7 +175,7 @@ int main(int argc, char** argv) {
 
   grammar::DiagnosticSink sink(5000);
   // PTPT3_NETWORK.DAT is read (and checked) only when the run uses it, as LMGC90.
-  auto files = validate::load_case(case_dir, sink, validate::LoadOptions{options.ptpt3_network});
+  auto files = case_folder::load_case(case_dir, sink, case_folder::LoadOptions{options.ptpt3_network});
   if (command_dat && no_command_dat) {
     std::cerr << "lmgc-solve: --command-dat and --no-command-dat exclude each other\n";
     return kExitUsage;
@@ -189,12 +189,12 @@ int main(int argc, char** argv) {
   // The norm: an unknown one is a usage error, except for rigid 3D cases: LMGC90's 3D NLGS ignores
   // a norm it does not know and keeps Quad (mod_nlgs_3D set_nlgs_parameter has no default branch);
   // the RIGID_3D example 1_ClusterSP_2_PL relies on it with 'MaxM '.
-  if (!solver::parse_storage(storage, options.nlgs.storage)) {
+  if (!run::parse_storage(storage, options.nlgs.storage)) {
     std::cerr << "lmgc-solve: unknown --solver '" << storage
               << "' (Stored_Delassus_Loops or Exchange_Local_Global)\n";
     return kExitUsage;
   }
-  if (!solver::parse_norm(norm, options.nlgs.norm)) {
+  if (!run::parse_norm(norm, options.nlgs.norm)) {
     if (!three_d) {
       std::cerr << "lmgc-solve: unknown --norm '" << norm << "' (Quad, QuaN, Maxm or QM/16)\n";
       return kExitUsage;
@@ -211,61 +211,38 @@ int main(int argc, char** argv) {
   bool prepared = files && !sink.has_errors() &&
                   (three_d ? solver::prepare_run_3d(*files, scene_3d, outputs_3d, sink)
                            : solver::prepare_run_2d(*files, scene, outputs, sink));
-  solver::ParameterSources sources;
+  run::ParameterSources sources;
   if (prepared) {
     // The layers: defaults, the driver's parameters (command.py or COMMAND.DAT), then the flags given
     // on the command line.
-    solver::RunOptions from_file;  // the defaults
-    solver::ParameterSources file_sources;
+    run::RunOptions from_file;  // the defaults
+    run::ParameterSources file_sources;
     if (script_drives)
-      solver::apply_script_parameters(*files->command_script, three_d, from_file, file_sources, sink);
-    else if (!no_command_dat)
-      solver::apply_command_parameters(*files, from_file, sink, &file_sources);
-    solver::RunOptions run = from_file;
-    run.quiet = options.quiet;
-    run.strict = options.strict;
-    sources = file_sources;
-    for (const solver::RunParameter& p : solver::run_parameters()) {
-      if (p.flag.empty() || !app.count(std::string(p.flag))) continue;
-      sources[std::string(p.name)] = solver::ParameterSource::flag;
-    }
-    const auto given = [&](const char* flag) { return app.count(flag) > 0; };
-    if (given("--dt")) run.dt = options.dt;
-    if (given("--theta")) run.theta = options.theta;
-    if (given("--steps")) run.steps = options.steps;
-    if (given("--solver")) run.nlgs.storage = options.nlgs.storage;
-    if (given("--norm")) run.nlgs.norm = options.nlgs.norm;
-    if (given("--tol")) run.nlgs.tolerance = options.nlgs.tolerance;
-    if (given("--relax")) run.nlgs.relax = options.nlgs.relax;
-    if (given("--gs-it1")) run.nlgs.gs_it1 = options.nlgs.gs_it1;
-    if (given("--gs-it2")) run.nlgs.gs_it2 = options.nlgs.gs_it2;
-    if (given("--quick-scramble")) run.nlgs.quick_scramble = true;
-    if (given("--scramble-seed")) run.nlgs.scramble_seed = options.nlgs.scramble_seed;
-    if (given("--diagonal-resolution")) run.nlgs.diagonal_resolution = true;
-    if (given("--residual-target")) run.nlgs.residual_target = options.nlgs.residual_target;
-    if (given("--cundall-iterations")) run.cundall_iterations = options.cundall_iterations;
-    if (given("--write-every")) run.write_every = options.write_every;
-    if (given("--display-every")) run.display_every = options.display_every;
-    if (given("--ymin-boundary")) run.y_min = options.y_min;
-    if (given("--ymax-boundary")) run.y_max = options.y_max;
-    if (given("--xmin-boundary")) run.x_min = options.x_min;
-    if (given("--xmax-boundary")) run.x_max = options.x_max;
-    if (given("--xperiod")) run.x_period = options.x_period;
-    if (given("--yperiod")) run.y_period = options.y_period;
-    if (given("--ptpt3-network")) run.ptpt3_network = true;
-    if (given("--ptpt3-current-nonuc0")) run.ptpt3_current_nonuc0 = true;
-    if (given("--new-rotation-scheme")) run.new_rotation_scheme = true;
-    if (given("--source-point")) {
+      run::apply_script_parameters(*files->command_script, three_d, from_file, file_sources, sink);
+    else if (!no_command_dat && files->command)
+      run::apply_command_parameters(*files->command, validate::datbox_path(*files, "COMMAND.DAT"), three_d,
+                                    from_file, sink, &file_sources);
+    // --source-point FIRST RADIUS X Y Z fills the source point's fields, which the table then takes.
+    if (app.count("--source-point")) {
       if (source_point[0] < 1.0 || source_point[1] <= 0.0) {
         std::cerr << "lmgc-solve: --source-point needs FIRST >= 1 and RADIUS > 0\n";
         return kExitUsage;
       }
-      run.source_first = static_cast<long>(source_point[0]);
-      run.source_radius = source_point[1];
-      for (int d = 0; d < 3; ++d) run.source_point[d] = source_point[static_cast<std::size_t>(d + 2)];
-      run.source_point_absolute = !source_point_relative;
+      options.source_first = static_cast<long>(source_point[0]);
+      options.source_radius = source_point[1];
+      for (int d = 0; d < 3; ++d) options.source_point[d] = source_point[static_cast<std::size_t>(d + 2)];
+      options.source_point_absolute = !source_point_relative;
     }
-    options = run;
+    run::RunOptions chosen = from_file;
+    chosen.quiet = options.quiet;
+    chosen.strict = options.strict;
+    sources = file_sources;
+    for (const run::RunParameter& p : run::run_parameters()) {
+      if (p.flag.empty() || !app.count(std::string(p.flag))) continue;
+      p.take(chosen, options);
+      sources[std::string(p.name)] = run::ParameterSource::flag;
+    }
+    options = chosen;
     if (!three_d && (options.y_period > 0.0 || options.source_first > 0 || options.ptpt3_network ||
                      options.ptpt3_current_nonuc0)) {
       std::cerr << "lmgc-solve: --yperiod, --source-point (YPERIODIC CONDITION, INIT SOURCE POINT) and the "
@@ -282,10 +259,10 @@ int main(int argc, char** argv) {
                           : files->command && !no_command_dat ? "COMMAND.DAT's parameters"
                                                               : "its defaults") +
               " and the flags");
-      for (const solver::ScriptDifference& d : solver::script_differences(options, *files->command_script)) {
+      for (const run::ScriptDifference& d : run::script_differences(options, *files->command_script)) {
         const auto it = sources.find(d.parameter->name);
         const std::string source(
-            solver::source_name(it == sources.end() ? solver::ParameterSource::default_value : it->second));
+            run::source_name(it == sources.end() ? run::ParameterSource::default_value : it->second));
         sink.report("L4008",
                     grammar::Location{path, grammar::SourceSpan{d.line, d.column,
                                                                 static_cast<std::uint16_t>(d.column + 1)}},
@@ -333,9 +310,9 @@ int main(int argc, char** argv) {
   const std::filesystem::path case_path(case_dir);
   for (const char* folder : {"OUTBOX", "POSTPRO", "DISPLAY"})
     grammar::remove_stale_temporaries(case_path / folder);
-  std::vector<validate::OutputFile> echo =
+  std::vector<case_folder::OutputFile> echo =
       three_d ? solver::echo_files_3d(*files) : solver::echo_files_2d(*files);
-  echo.push_back({"OUTBOX/run_parameters.csv", solver::run_parameters_csv(options, sources)});
+  echo.push_back({"OUTBOX/run_parameters.csv", run::run_parameters_csv(options, sources)});
   for (const auto& output : echo) {
     std::string error;
     if (!grammar::write_file_whole(case_path / output.relative_path, output.content, error)) {

@@ -10,14 +10,16 @@
 #include <unordered_map>
 #include <vector>
 
+#include "case_folder/case_files.hpp"
 #include "grammar/bodies/ast.hpp"
 #include "grammar/bulk_behav/ast.hpp"
 #include "grammar/dof/ast.hpp"
 #include "grammar/models/ast.hpp"
 #include "grammar/tact_behav/ast.hpp"
-#include "validate/case_files.hpp"
 
 namespace lmgc::validate {
+
+using case_folder::CaseFiles;  // the checks read the case as loaded (case_folder/)
 
 // 0 for MAILx, 1 for RBDY2, 2 for RBDY3 (the order of grammar::BodyType); -1 for another word.
 int body_type_index(std::string_view type);

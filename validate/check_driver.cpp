@@ -7,6 +7,7 @@
 #include "grammar/command/catalogue.hpp"
 #include "grammar/command/expand.hpp"
 #include "grammar/command_py/chipy_catalogue.hpp"
+#include "run/run_parameters.hpp"
 #include "validate/checks.hpp"
 
 namespace lmgc::validate {
@@ -71,35 +72,18 @@ void check_command_dat_commands(const CaseFiles& files, grammar::DiagnosticSink&
       });
 }
 
-// The run parameters COMMAND.DAT gives, against the values a run can take (L4010, with the line).
+// The run parameters COMMAND.DAT gives, against the values a run can take: the run-parameter
+// table's own test (run/run_parameters.hpp), L4010 with the line.
 void check_command_dat_parameters(const CaseFiles& files, grammar::DiagnosticSink& sink) {
   const std::string path = datbox_path(files, "COMMAND.DAT");
-  grammar::DiagnosticSink scratch(static_cast<std::size_t>(-1));
-  const grammar::CommandRunParameters p = grammar::command_run_parameters(*files.command, scratch);
-  const auto bad = [&](std::string_view name, const std::string& message) {
-    const auto it = p.lines.find(name);
-    if (it == p.lines.end()) return;
-    sink.report("L4010", Location{path, SourceSpan{it->second, 1, 2}}, message);
-  };
-  const auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
-  if (!positive(p.dt)) bad("dt", "TIME STEP must be a positive number, not " + std::to_string(p.dt));
-  if (!(p.theta >= 0.5 && p.theta <= 1.0))
-    bad("theta", "THETA must lie in [0.5, 1] (the theta-scheme is unstable below 0.5), not " +
-                     std::to_string(p.theta));
-  if (!positive(p.tolerance)) bad("tol", "the NLGS tolerance must be a positive number");
-  if (!(p.relax > 0.0 && p.relax <= 2.0)) bad("relax", "the NLGS relaxation must lie in (0, 2]");
-  if (p.gs_it1 <= 0) bad("gs_it1", "the NLGS needs at least one sweep between two checks");
-  if (p.gs_it2 <= 0) bad("gs_it2", "the NLGS needs at least one check");
-  if (p.lines.count("norm")) {
-    static const std::set<std::string, std::less<>> kNorms = {"Quad", "QuaN", "Maxm", "QM/16"};
-    std::string norm = p.norm;
-    while (!norm.empty() && norm.back() == ' ') norm.pop_back();
-    // LMGC90's 2D NLGS stops on an unknown norm; its 3D one keeps Quad (lmgc-solve does the same).
-    bool three_d = files.bodies && !files.bodies->bodies.empty();
-    if (files.bodies)
-      for (const auto& b : files.bodies->bodies) three_d &= b.type == grammar::BodyType::rbdy3;
-    if (!kNorms.count(norm) && !three_d) bad("norm", "unknown NLGS norm " + in_quotes(norm));
-  }
+  // LMGC90's 2D NLGS stops on an unknown norm; its 3D one keeps Quad (lmgc-solve does the same).
+  bool three_d = files.bodies && !files.bodies->bodies.empty();
+  if (files.bodies)
+    for (const auto& b : files.bodies->bodies) three_d &= b.type == grammar::BodyType::rbdy3;
+  run::RunOptions scratch;
+  run::apply_command_parameters(*files.command, path, three_d, scratch, sink);
+  grammar::DiagnosticSink quiet(static_cast<std::size_t>(-1));
+  const grammar::CommandRunParameters p = grammar::command_run_parameters(*files.command, quiet);
   if (p.lines.count("solver_type")) {
     std::string storage = p.storage;
     while (!storage.empty() && storage.back() == ' ') storage.pop_back();
@@ -110,23 +94,6 @@ void check_command_dat_parameters(const CaseFiles& files, grammar::DiagnosticSin
                   "EX PREP NLGS reads " + in_quotes(storage) +
                       " as its storage; lmgc-solve runs Stored_Delassus_Loops, whose iterates are those of "
                       "either storage");
-  }
-  if (p.lines.count("freq_write") && p.write_every <= 0)
-    bad("freq_write", "WRITE OUT DOF STEP must be positive");
-  if (p.lines.count("freq_display") && p.display_every <= 0)
-    bad("freq_display", "WRITE OUTPUT GMV STEP must be positive");
-  if (p.lines.count("xperiod") && !positive(p.x_period)) bad("xperiod", "the period must be positive");
-  if (p.lines.count("yperiod") && !positive(p.y_period)) bad("yperiod", "the period must be positive");
-  if (p.lines.count("cundall_iterations") && p.cundall_iterations <= 0)
-    bad("cundall_iterations", "CUNDALL ITERATION must be positive");
-  if (p.lines.count("source_point") && (p.source_first <= 0 || !positive(p.source_radius)))
-    bad("source_point", "the source point needs a first body of at least 1 and a positive radius");
-  for (std::string_view bound : {"ymin_boundary", "ymax_boundary", "xmin_boundary", "xmax_boundary"}) {
-    const double v = bound == "ymin_boundary"   ? p.y_min
-                     : bound == "ymax_boundary" ? p.y_max
-                     : bound == "xmin_boundary" ? p.x_min
-                                                : p.x_max;
-    if (!std::isfinite(v)) bad(bound, "the bound must be a finite number");
   }
 }
 

@@ -2,10 +2,12 @@
 // Semantic checks of a loaded case: cross references between files, consistency, physical sanity.
 // Each check emits diagnostics with a stable code (grammar/common/diagnostic_catalogue.cpp);
 // docs/diagnostics.md lists them with an example.
+#include "case_folder/case_files.hpp"
 #include "grammar/common/diagnostic.hpp"
-#include "validate/case_files.hpp"
 
 namespace lmgc::validate {
+
+using case_folder::CaseFiles;  // the checks read the case as loaded (case_folder/)
 
 // What the checks are told about the run.
 struct CheckOptions {

@@ -9,10 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "case_folder/case_files.hpp"
 #include "grammar/bodies/ast.hpp"
-#include "validate/case_files.hpp"
 
 namespace lmgc::validate {
+
+using case_folder::CaseFiles;  // the checks read the case as loaded (case_folder/)
 
 enum class RigidShape {
   disk,     // DISKx, DISKb: centre, radius

@@ -10,8 +10,8 @@
 #include <string>
 
 #include "grammar/common/diagnostic_catalogue.hpp"
+#include "run/run_parameters.hpp"
 #include "solver/driver/case_input.hpp"
-#include "solver/driver/run_parameters.hpp"
 #include "solver/integrator/step_2d.hpp"
 #include "solver/integrator/step_3d.hpp"
 #include "validate/checks.hpp"
@@ -43,7 +43,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       .write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));
 
   grammar::DiagnosticSink sink(5000);
-  auto files = validate::load_case(scratch, sink);
+  auto files = case_folder::load_case(scratch, sink);
   if (!files) return 0;
   const validate::CheckOptions check_options;
   validate::check_case(*files, sink, check_options);
@@ -52,13 +52,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const auto& d : sink.items())
     if (grammar::refuses_run(d.code)) return 0;
   // The run's parameters from its driver, as lmgc-solve takes them.
-  solver::RunOptions options;
-  solver::ParameterSources sources;
+  run::RunOptions options;
+  run::ParameterSources sources;
   if (validate::script_drives(*files, check_options))
-    solver::apply_script_parameters(*files->command_script, solver::is_rigid_3d_case(*files), options,
-                                    sources, sink);
-  else
-    solver::apply_command_parameters(*files, options, sink);
+    run::apply_script_parameters(*files->command_script, solver::is_rigid_3d_case(*files), options, sources,
+                                 sink);
+  else if (files->command)
+    run::apply_command_parameters(*files->command, "COMMAND.DAT", solver::is_rigid_3d_case(*files), options,
+                                  sink);
   if (sink.has_errors()) return 0;
   options.nlgs.gs_it1 = 5;
   options.nlgs.gs_it2 = 5;

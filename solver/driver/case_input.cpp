@@ -14,13 +14,13 @@ namespace lmgc::solver {
 
 namespace {
 
-std::string datbox_path(const validate::CaseFiles& files, const char* name) {
+std::string datbox_path(const case_folder::CaseFiles& files, const char* name) {
   return (files.case_dir / "DATBOX" / name).string();
 }
 
 // The POSTPRO.DAT commands the 2D post-processor provides (with three_d: those the 3D one provides);
 // the others are noted and skipped.
-std::vector<PostproCommand2D> postpro_commands_2d(const validate::CaseFiles& files,
+std::vector<PostproCommand2D> postpro_commands_2d(const case_folder::CaseFiles& files,
                                                   grammar::DiagnosticSink& sink, bool three_d = false) {
   std::vector<PostproCommand2D> commands;
   if (!files.postpro) return commands;
@@ -49,7 +49,7 @@ std::vector<PostproCommand2D> postpro_commands_2d(const validate::CaseFiles& fil
 // The parts of a scene input both dimensions read the same way: the ASTs, the densities of the
 // bulk behaviours, the paths for diagnostics (gravity is left to the caller).
 template <class SceneInput>
-void fill_scene_input(const validate::CaseFiles& files, SceneInput& input) {
+void fill_scene_input(const case_folder::CaseFiles& files, SceneInput& input) {
   static const grammar::TactBehavFile kNoLaws;
   input.bodies = &*files.bodies;
   input.tact_behav = files.tact_behav ? &*files.tact_behav : &kNoLaws;
@@ -68,7 +68,7 @@ void fill_scene_input(const validate::CaseFiles& files, SceneInput& input) {
 
 }  // namespace
 
-bool prepare_run_2d(const validate::CaseFiles& files, Scene2D& scene, RunOutputs2D& outputs,
+bool prepare_run_2d(const case_folder::CaseFiles& files, Scene2D& scene, RunOutputs2D& outputs,
                     grammar::DiagnosticSink& sink) {
   if (!files.bodies || !files.bulk_behav) return false;
   for (const grammar::Body& body : files.bodies->bodies)
@@ -98,14 +98,14 @@ bool prepare_run_2d(const validate::CaseFiles& files, Scene2D& scene, RunOutputs
   return true;
 }
 
-bool is_rigid_3d_case(const validate::CaseFiles& files) {
+bool is_rigid_3d_case(const case_folder::CaseFiles& files) {
   if (!files.bodies || files.bodies->bodies.empty()) return false;
   for (const grammar::Body& body : files.bodies->bodies)
     if (body.type != grammar::BodyType::rbdy3) return false;
   return true;
 }
 
-bool prepare_run_3d(const validate::CaseFiles& files, Scene3D& scene, RunOutputs3D& outputs,
+bool prepare_run_3d(const case_folder::CaseFiles& files, Scene3D& scene, RunOutputs3D& outputs,
                     grammar::DiagnosticSink& sink) {
   if (!files.bodies || !files.bulk_behav) return false;
   SceneInput3D input;
@@ -127,7 +127,7 @@ bool prepare_run_3d(const validate::CaseFiles& files, Scene3D& scene, RunOutputs
   return true;
 }
 
-void report_solver_support(const validate::CaseFiles& files, grammar::DiagnosticSink& sink) {
+void report_solver_support(const case_folder::CaseFiles& files, grammar::DiagnosticSink& sink) {
   // The scene builders take checked data: a case with errors is not prepared (lmgc-solve does not
   // run it either).
   if (!files.bodies || !files.bulk_behav || sink.has_errors()) return;
@@ -145,60 +145,19 @@ void report_solver_support(const validate::CaseFiles& files, grammar::Diagnostic
     if (d.code == "L4001" || d.code == "L4002" || d.code == "L4003" || d.code == "L4004") sink.report(d);
 }
 
-void apply_command_parameters(const validate::CaseFiles& files, RunOptions& options,
-                              grammar::DiagnosticSink& sink, ParameterSources* sources) {
-  if (!files.command) return;
-  const grammar::CommandRunParameters p = grammar::command_run_parameters(*files.command, sink);
-  // Only what the file sets; lmgc-check reports a value out of range (L4010), so here every value
-  // the file sets is taken as it is.
-  const auto has = [&](std::string_view name) {
-    if (!p.lines.count(name)) return false;
-    if (sources) (*sources)[std::string(name)] = ParameterSource::command_dat;
-    return true;
-  };
-  if (has("dt")) options.dt = p.dt;
-  if (has("theta")) options.theta = p.theta;
-  if (has("nb_steps")) options.steps = p.steps;
-  if (has("norm")) parse_norm(p.norm, options.nlgs.norm);
-  if (has("tol")) options.nlgs.tolerance = p.tolerance;
-  if (has("relax")) options.nlgs.relax = p.relax;
-  if (has("solver_type")) parse_storage(p.storage, options.nlgs.storage);
-  if (has("gs_it1")) options.nlgs.gs_it1 = p.gs_it1;
-  if (has("gs_it2")) options.nlgs.gs_it2 = p.gs_it2;
-  if (has("freq_write")) options.write_every = p.write_every;
-  if (has("freq_display")) options.display_every = p.display_every;
-  if (has("quick_scramble")) options.nlgs.quick_scramble = p.quick_scramble;
-  if (has("diagonal_resolution")) options.nlgs.diagonal_resolution = p.diagonal_resolution;
-  if (has("ymin_boundary")) options.y_min = p.y_min;
-  if (has("ymax_boundary")) options.y_max = p.y_max;
-  if (has("xmin_boundary")) options.x_min = p.x_min;
-  if (has("xmax_boundary")) options.x_max = p.x_max;
-  if (has("xperiod")) options.x_period = p.x_period;
-  if (has("yperiod")) options.y_period = p.y_period;
-  if (has("new_rotation_scheme")) options.new_rotation_scheme = p.new_rotation_scheme;
-  if (has("zero_initial_velocity")) options.zero_initial_velocity = p.zero_initial_velocity;
-  if (has("cundall_iterations")) options.cundall_iterations = static_cast<int>(p.cundall_iterations);
-  if (has("source_point")) {
-    options.source_first = p.source_first;
-    options.source_radius = p.source_radius;
-    for (int d = 0; d < 3; ++d) options.source_point[d] = p.source_point[d];
-    options.source_point_absolute = p.source_point_absolute;
-  }
-}
-
-std::vector<validate::OutputFile> echo_files_2d(const validate::CaseFiles& files) {
-  std::vector<validate::OutputFile> out = validate::echo_files(files);
+std::vector<case_folder::OutputFile> echo_files_2d(const case_folder::CaseFiles& files) {
+  std::vector<case_folder::OutputFile> out = case_folder::echo_files(files);
   if (!files.bodies) return out;
   grammar::BodiesFile bodies = *files.bodies;
   for (grammar::Body& body : bodies.bodies)
     if (body.type == grammar::BodyType::rbdy2) normalise_rigid_body_2d(body);
-  for (validate::OutputFile& file : out)
+  for (case_folder::OutputFile& file : out)
     if (file.relative_path == "OUTBOX/BODIES.OUT") file.content = grammar::write_bodies(bodies);
   return out;
 }
 
-std::vector<validate::OutputFile> echo_files_3d(const validate::CaseFiles& files) {
-  std::vector<validate::OutputFile> out = validate::echo_files(files);
+std::vector<case_folder::OutputFile> echo_files_3d(const case_folder::CaseFiles& files) {
+  std::vector<case_folder::OutputFile> out = case_folder::echo_files(files);
   if (!files.bodies) return out;
   // BODIES.OUT after LMGC90's RBDY3 pre-computations (mod_RBDY3): the node moved to the centre of
   // inertia, avrd and the per-density principal inertia filled in, SPHEb offsets from the centre,
@@ -243,7 +202,7 @@ std::vector<validate::OutputFile> echo_files_3d(const validate::CaseFiles& files
       }
     }
   }
-  for (validate::OutputFile& file : out)
+  for (case_folder::OutputFile& file : out)
     if (file.relative_path == "OUTBOX/BODIES.OUT") file.content = grammar::write_bodies(bodies);
   return out;
 }

@@ -24,7 +24,7 @@ std::string non_finite_2d(const Scene2D& scene, const RunState2D&) {
 
 }  // namespace
 
-RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D& outputs) {
+RunSummary run_2d(Scene2D& scene, const run::RunOptions& options, const RunOutputs2D& outputs) {
   namespace fs = std::filesystem;
   const fs::path outbox = outputs.case_dir / "OUTBOX";
   std::error_code ec;

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "grammar/vloc_rloc/ast.hpp"
+#include "run/run_options.hpp"
 #include "solver/driver/run_loop.hpp"
-#include "solver/driver/run_options.hpp"
 #include "solver/driver/step_log.hpp"
 #include "solver/integrator/step_2d.hpp"
 #include "solver/io/postpro_2d.hpp"
@@ -31,6 +31,6 @@ struct RunOutputs2D {
   const grammar::VlocRlocFile* warm_start = nullptr;
 };
 
-RunSummary run_2d(Scene2D& scene, const RunOptions& options, const RunOutputs2D& outputs);
+RunSummary run_2d(Scene2D& scene, const run::RunOptions& options, const RunOutputs2D& outputs);
 
 }  // namespace lmgc::solver

@@ -26,7 +26,7 @@ std::string non_finite_3d(const Scene3D& scene, const RunState3D&) {
 
 }  // namespace
 
-RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D& outputs) {
+RunSummary run_3d(Scene3D& scene, const run::RunOptions& options, const RunOutputs3D& outputs) {
   RunSummary summary;
   namespace fs = std::filesystem;
   const fs::path outbox = outputs.case_dir / "OUTBOX";

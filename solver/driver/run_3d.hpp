@@ -6,8 +6,8 @@
 
 #include "grammar/ptpt3_network/ast.hpp"
 #include "grammar/vloc_rloc/ast.hpp"
+#include "run/run_options.hpp"
 #include "solver/driver/run_loop.hpp"
-#include "solver/driver/run_options.hpp"
 #include "solver/integrator/step_3d.hpp"
 #include "solver/io/postpro_3d.hpp"
 
@@ -27,6 +27,6 @@ struct RunOutputs3D {
   const grammar::Ptpt3NetworkFile* ptpt3_network = nullptr;  // PTPT3_NETWORK.DAT, when present
 };
 
-RunSummary run_3d(Scene3D& scene, const RunOptions& options, const RunOutputs3D& outputs);
+RunSummary run_3d(Scene3D& scene, const run::RunOptions& options, const RunOutputs3D& outputs);
 
 }  // namespace lmgc::solver

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "grammar/common/output_file.hpp"
-#include "solver/driver/run_options.hpp"
+#include "run/run_options.hpp"
 #include "solver/driver/step_log.hpp"
 
 namespace lmgc::solver {
@@ -34,7 +34,7 @@ struct RunDimension {
 };
 
 template <class Scene, class State, class Postpro, class Display>
-RunSummary run_loop(Scene& scene, State& state, const RunOptions& options,
+RunSummary run_loop(Scene& scene, State& state, const run::RunOptions& options,
                     const std::filesystem::path& case_dir, Postpro& postpro, bool postpro_open,
                     Display& display, const RunDimension<Scene, State>& dimension) {
   namespace fs = std::filesystem;

@@ -39,7 +39,7 @@ double seconds_between(std::chrono::steady_clock::time_point a, std::chrono::ste
 
 }  // namespace
 
-StepLog::StepLog(const std::filesystem::path& outbox, const RunOptions& options)
+StepLog::StepLog(const std::filesystem::path& outbox, const run::RunOptions& options)
     : path_(outbox / "run_report.csv"),
       report_(path_, std::ios::trunc),
       total_steps_(options.steps),

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "solver/driver/run_options.hpp"
+#include "run/run_options.hpp"
 #include "solver/nlgs/nlgs_check.hpp"
 
 namespace lmgc::solver {
@@ -37,7 +37,7 @@ struct RunSummary {
 
 class StepLog {
  public:
-  StepLog(const std::filesystem::path& outbox, const RunOptions& options);
+  StepLog(const std::filesystem::path& outbox, const run::RunOptions& options);
   ~StepLog();
   void record(long step, double time, std::size_t contacts, const NlgsResult& result, double kinetic_energy,
               double step_seconds, RunSummary& summary);

@@ -5,10 +5,10 @@
 
 #include <cstdlib>
 
+#include "case_folder/case_files.hpp"
+#include "run/run_parameters.hpp"
 #include "solver/driver/case_input.hpp"
-#include "solver/driver/run_parameters.hpp"
 #include "tests/support/lmgc90_reference_runs.hpp"
-#include "validate/case_files.hpp"
 
 namespace lmgc::test {
 namespace {
@@ -22,12 +22,12 @@ TEST(CommandScriptParameters, EveryRigidExampleRunsWithItsScriptsLiterals) {
     const auto expected = script_parameters(example);
     if (expected.empty()) continue;
     grammar::DiagnosticSink sink(static_cast<std::size_t>(-1));
-    const auto files = validate::load_case(example, sink);
+    const auto files = case_folder::load_case(example, sink);
     ASSERT_TRUE(files && files->command_script) << name;
-    solver::RunOptions options;
-    solver::ParameterSources sources;
-    solver::apply_script_parameters(*files->command_script, solver::is_rigid_3d_case(*files), options,
-                                    sources, sink);
+    run::RunOptions options;
+    run::ParameterSources sources;
+    run::apply_script_parameters(*files->command_script, solver::is_rigid_3d_case(*files), options, sources,
+                                 sink);
     for (const auto& d : sink.items())
       EXPECT_TRUE(d.code != "L4013" && d.code != "L4010") << name << ": " << d.code << " " << d.message;
     const auto number = [&](const char* key) { return std::strtod(expected.at(key).c_str(), nullptr); };
@@ -52,7 +52,7 @@ TEST(CommandScriptParameters, EveryRigidExampleRunsWithItsScriptsLiterals) {
     if (expected.count("nb_steps")) {
       EXPECT_EQ(options.steps, static_cast<long>(number("nb_steps"))) << name;
     }
-    EXPECT_EQ(sources["dt"], solver::ParameterSource::command_py) << name;
+    EXPECT_EQ(sources["dt"], run::ParameterSource::command_py) << name;
     ++compared;
   }
   EXPECT_GT(compared, 10);

@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "case_folder/case_files.hpp"
 #include "grammar/common/diagnostic.hpp"
 #include "tests/support/run_tool.hpp"
 #include "tests/support/shared_data.hpp"
-#include "validate/case_files.hpp"
 #include "validate/checks.hpp"
 
 namespace lmgc::test {
@@ -44,7 +44,7 @@ TEST(ExamplesSnapshot, EveryExampleChecksWithoutErrorAndWithTheReviewedWarnings)
   for (const fs::path& dir : cases) {
     const std::string name = case_name(dir);
     grammar::DiagnosticSink sink(100000);
-    const auto files = validate::load_case(dir, sink);
+    const auto files = case_folder::load_case(dir, sink);
     ASSERT_TRUE(files.has_value()) << name;
     validate::check_case(*files, sink);
     for (const grammar::Diagnostic& d : sink.items()) {

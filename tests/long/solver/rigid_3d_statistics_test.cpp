@@ -68,7 +68,7 @@ TEST(Rigid3DStatistics, SpheresInABoxAgreeWithLmgc90Within5PercentAtTheLastStep)
   const ExampleRun r = run_example(example, reference_steps_run(example), "long_");
   ASSERT_EQ(r.run.exit_code, 0);
   grammar::DiagnosticSink sink;
-  const auto files = validate::load_case(r.case_dir, sink);
+  const auto files = case_folder::load_case(r.case_dir, sink);
   ASSERT_TRUE(files.has_value());
   solver::Scene3D scene;
   solver::RunOutputs3D outputs;

@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
+#include "case_folder/case_files.hpp"
 #include "grammar/common/diagnostic.hpp"
 #include "tests/support/run_tool.hpp"
 #include "tests/support/shared_data.hpp"
-#include "validate/case_files.hpp"
 #include "validate/checks.hpp"
 
 namespace lmgc::test {
@@ -111,7 +111,7 @@ RC_GTEST_PROP(CheckMutation, OneNumericFieldNeverCrashesAndNonsenseIsAnError, ()
   std::ofstream(path, std::ios::binary) << text;
 
   grammar::DiagnosticSink sink;
-  const auto files = validate::load_case(dir, sink);
+  const auto files = case_folder::load_case(dir, sink);
   RC_ASSERT(files.has_value());
   validate::check_case(*files, sink);
   if (target.nonsense(value.value)) RC_ASSERT(sink.has_errors());

@@ -21,7 +21,7 @@ fs::path case_copy(const std::string& reference_case, const std::string& name) {
 
 // Loads the case folder and prepares its 3D run; false when either step refuses it.
 bool prepare_case(const fs::path& dir, Scene3D& scene, grammar::DiagnosticSink& sink) {
-  const auto files = validate::load_case(dir, sink);
+  const auto files = case_folder::load_case(dir, sink);
   RunOutputs3D outputs;
   return files.has_value() && prepare_run_3d(*files, scene, outputs, sink);
 }

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <csignal>
 #include <limits>
 
@@ -54,7 +55,7 @@ const RunDimension<ToyScene, ToyState> kToy{
 
 RunSummary run_toy(ToyScene& scene, long steps, const fs::path& dir) {
   fs::create_directories(dir / "OUTBOX");
-  RunOptions options;
+  run::RunOptions options;
   options.steps = steps;
   options.write_every = 1;
   options.quiet = true;

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "case_folder/case_files.hpp"
 #include "grammar/bodies/parser.hpp"
 #include "grammar/bulk_behav/parser.hpp"
 #include "grammar/command/parser.hpp"
@@ -28,7 +29,6 @@
 #include "grammar/tact_behav/parser.hpp"
 #include "grammar/vloc_rloc/parser.hpp"
 #include "tests/support/run_tool.hpp"
-#include "validate/case_files.hpp"
 
 namespace lmgc::test {
 namespace {
@@ -563,7 +563,7 @@ std::vector<grammar::Diagnostic> read_fixture(const Fixture& f) {
       grammar::parse_command(source, sink);
       break;
     case Reader::case_folder:
-      validate::load_case(write_case("broken_file_fixtures_" + f.name, f.text), sink);
+      case_folder::load_case(write_case("broken_file_fixtures_" + f.name, f.text), sink);
       break;
   }
   return sink.items();
@@ -617,7 +617,7 @@ TEST(BrokenFileBases, BaseFilesAreClean) {
     EXPECT_TRUE(items.empty()) << text.substr(0, 40) << "\n" << describe(items);
   }
   DiagnosticSink sink;
-  EXPECT_TRUE(validate::load_case(write_case("broken_file_fixtures_base", ""), sink).has_value());
+  EXPECT_TRUE(case_folder::load_case(write_case("broken_file_fixtures_base", ""), sink).has_value());
   EXPECT_TRUE(sink.items().empty()) << describe(sink.items());
 }
 

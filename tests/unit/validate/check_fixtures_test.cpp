@@ -17,11 +17,11 @@
 #include <string>
 #include <vector>
 
+#include "case_folder/case_files.hpp"
 #include "grammar/common/diagnostic.hpp"
 #include "grammar/common/diagnostic_catalogue.hpp"
 #include "tests/support/run_tool.hpp"
 #include "tests/support/shared_data.hpp"
-#include "validate/case_files.hpp"
 #include "validate/checks.hpp"
 
 namespace lmgc::test {
@@ -198,7 +198,7 @@ struct Row {
   Severity severity;
   std::uint32_t line, column;  // 0, 0: the whole file
   // Applied to the loaded case before the checks, for what the readers do not let through.
-  std::function<void(validate::CaseFiles&)> ast_edit = {};
+  std::function<void(case_folder::CaseFiles&)> ast_edit = {};
 };
 
 void PrintTo(const Row& row, std::ostream* out) {
@@ -282,7 +282,7 @@ const std::string kFirstSphere =
 
 // The evolution reader reports a time that does not increase (L2016) and drops its point, so the
 // check sees it only in an AST made otherwise (a script); this row swaps two loaded times.
-void swap_evolution_times(validate::CaseFiles& files) {
+void swap_evolution_times(case_folder::CaseFiles& files) {
   for (auto& [name, evolution] : files.evolutions)
     if (evolution.points.size() >= 3)
       std::swap(evolution.points[1].time.value, evolution.points[2].time.value);
@@ -291,7 +291,7 @@ void swap_evolution_times(validate::CaseFiles& files) {
 // The TACT_BEHAV.DAT reader reports two rows giving different laws to one pair (L2015); the
 // check covers an AST made otherwise: this row adds the second row (swapped sides, law 'iqsc0',
 // line 13) to the loaded AST.
-void add_conflicting_row(validate::CaseFiles& files) {
+void add_conflicting_row(case_folder::CaseFiles& files) {
   grammar::SeeEntry row = files.tact_behav->sees.front();
   std::swap(row.candidate_body, row.antagonist_body);
   std::swap(row.candidate_contactor, row.antagonist_contactor);
@@ -396,7 +396,7 @@ std::vector<Row> rows() {
     {"NonPositiveTimeStep", disk, {{"COMMAND.DAT", "1.D-3   ", "0.D0    "}}, "COMMAND.DAT", "L4010", error, 5, 1},
     {"ThetaBelowOneHalf", disk, {{"COMMAND.DAT", "0.5D0 ", "0.3D0 "}}, "COMMAND.DAT", "L4010", error, 7, 1},
     {"RelaxationAboveTwo", disk, {{"COMMAND.DAT", "    1.0D0                     : RELAX", "    5.0D0                     : RELAX"}}, "COMMAND.DAT", "L4010", error, 44, 1},
-    {"ThermalBulkLawRunAsRigid", disk, {}, "BULK_BEHAV.DAT", "L4012", note, 5, 9, [](validate::CaseFiles& files) { files.bulk_behav->laws.front().law_type.value = "THERMO_RIGID"; }},
+    {"ThermalBulkLawRunAsRigid", disk, {}, "BULK_BEHAV.DAT", "L4012", note, 5, 9, [](case_folder::CaseFiles& files) { files.bulk_behav->laws.front().law_type.value = "THERMO_RIGID"; }},
 
     // ---- restarts: the state files of one run, at one step
     {"VlocRlocOfAnotherStep", disk, {{"Vloc_Rloc.INI", "", edit_text(kVlocHeader, "$steps      0                time= 0.0000000D+00", "$steps     20                time= 0.2000000D-01")}}, "Vloc_Rloc.INI", "L1020", error, 2, 9},
@@ -431,9 +431,9 @@ bool build_case(const Row& row, fs::path& dir) {
 }
 
 std::vector<grammar::Diagnostic> check(const fs::path& dir,
-                                       const std::function<void(validate::CaseFiles&)>& ast_edit = {}) {
+                                       const std::function<void(case_folder::CaseFiles&)>& ast_edit = {}) {
   grammar::DiagnosticSink sink;
-  if (auto files = validate::load_case(dir, sink)) {
+  if (auto files = case_folder::load_case(dir, sink)) {
     if (ast_edit) ast_edit(*files);
     validate::check_case(*files, sink);
   }

@@ -11,11 +11,13 @@
 #include <string_view>
 #include <vector>
 
+#include "grammar/command/ast.hpp"
+#include "grammar/command/expand.hpp"
 #include "grammar/command_py/script.hpp"
 #include "grammar/common/diagnostic.hpp"
-#include "solver/driver/run_options.hpp"
+#include "run/run_options.hpp"
 
-namespace lmgc::solver {
+namespace lmgc::run {
 
 enum class ParameterSource { default_value, command_dat, command_py, flag };
 // "default", "COMMAND.DAT", "command.py", "flag"
@@ -38,6 +40,10 @@ struct RunParameter {
   // The value of the chipy call's argument when the call is made without it (write and display
   // frequencies: every step), if any.
   std::optional<double> call_default = std::nullopt;
+  // The flag layer: copies this parameter's value(s) from the options the command line filled.
+  void (*take)(RunOptions& run, const RunOptions& flags) = nullptr;
+  // The COMMAND.DAT layer: the value the file gives (read when its keyword's line is set).
+  grammar::ScriptValue (*from_command_dat)(const grammar::CommandRunParameters&) = nullptr;
 };
 
 std::span<const RunParameter> run_parameters();
@@ -91,4 +97,12 @@ std::vector<ScriptDifference> script_differences(const RunOptions& options,
 // OUTBOX/run_parameters.csv: name,value,source,flag,command_dat,chipy.
 std::string run_parameters_csv(const RunOptions& options, const ParameterSources& sources);
 
-}  // namespace lmgc::solver
+// The COMMAND.DAT layer: the run parameters the file sets, laid over `options` (flags given on the
+// command line are applied afterwards by the caller, so they win); each one set is recorded in
+// `sources`. `path`: the file's, for diagnostics. A value a run cannot take is an error (L4010, at its line),
+// checked by the table's `assign` as a script's literal is; `three_d`: the 3D NLGS keeps 'Quad ' for a norm
+// it does not know.
+void apply_command_parameters(const grammar::CommandFile& command, std::string_view path, bool three_d,
+                              RunOptions& options, grammar::DiagnosticSink& sink,
+                              ParameterSources* sources = nullptr);
+}  // namespace lmgc::run

@@ -1,6 +1,6 @@
 // Loading a case folder: which DATBOX files LMGC90 reads and how each is parsed and echoed.
 // docs/lmgc90-facts/state-and-outputs.md §0 (layout), §1.6 (echo files); datbox-inputs.md §5 (evolution).
-#include "validate/case_files.hpp"
+#include "case_folder/case_files.hpp"
 
 #include <algorithm>
 #include <map>
@@ -25,7 +25,7 @@
 #include "grammar/tact_behav/writer.hpp"
 #include "grammar/vloc_rloc/parser.hpp"
 
-namespace lmgc::validate {
+namespace lmgc::case_folder {
 namespace {
 
 namespace fs = std::filesystem;
@@ -281,4 +281,4 @@ std::vector<OutputFile> echo_files(const CaseFiles& c) {
   return out;
 }
 
-}  // namespace lmgc::validate
+}  // namespace lmgc::case_folder

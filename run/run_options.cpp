@@ -1,6 +1,6 @@
-#include "solver/driver/run_options.hpp"
+#include "run/run_options.hpp"
 
-namespace lmgc::solver {
+namespace lmgc::run {
 namespace {
 std::string trimmed(const std::string& s) {
   const auto end = s.find_last_not_of(' ');
@@ -35,4 +35,4 @@ bool parse_storage(const std::string& text, NlgsStorage& storage) {
   return true;
 }
 
-}  // namespace lmgc::solver
+}  // namespace lmgc::run

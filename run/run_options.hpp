@@ -4,9 +4,9 @@
 #include <optional>
 #include <string>
 
-#include "solver/nlgs/nlgs_2d.hpp"
+#include "run/nlgs_options.hpp"
 
-namespace lmgc::solver {
+namespace lmgc::run {
 
 struct RunOptions {
   double dt = 1e-3;                  // time step [s]
@@ -46,4 +46,4 @@ struct RunOptions {
 bool parse_norm(const std::string& text, NlgsNorm& norm);
 bool parse_storage(const std::string& text, NlgsStorage& storage);
 
-}  // namespace lmgc::solver
+}  // namespace lmgc::run

@@ -1,4 +1,4 @@
-#include "solver/driver/run_parameters.hpp"
+#include "run/run_parameters.hpp"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,9 @@
 #include <cmath>
 #include <limits>
 
-namespace lmgc::solver {
+#include "grammar/command/expand.hpp"
+
+namespace lmgc::run {
 namespace {
 
 std::string real(double x) {
@@ -32,6 +34,13 @@ std::string_view norm_name(NlgsNorm n) {
 using O = const RunOptions&;
 using N = std::optional<double>;
 using V = const grammar::ScriptValue&;
+using C = const grammar::CommandRunParameters&;
+grammar::ScriptValue number(double x) {
+  return {x, std::nullopt};
+}
+grammar::ScriptValue text(const std::string& x) {
+  return {std::nullopt, x};
+}
 
 // The script's literal as a run value (the checks COMMAND.DAT's values get, L4010).
 bool positive(V v, double& out) {
@@ -61,83 +70,120 @@ bool switch_on(V v, bool& out) {
 // One row per parameter; COMMAND.DAT keywords and chipy calls as LMGC90 spells them.
 constexpr RunParameter kParameters[] = {
     {"dt", "--dt", "TIME STEP", "TimeEvolution_SetTimeStep", 0, "", [](O o) { return real(o.dt); },
-     [](O o) -> N { return o.dt; }, [](RunOptions& o, V v) { return positive(v, o.dt); }},
+     [](O o) -> N { return o.dt; }, [](RunOptions& o, V v) { return positive(v, o.dt); }, std::nullopt,
+     [](RunOptions& to, O from) { to.dt = from.dt; }, [](C c) { return number(c.dt); }},
     {"theta", "--theta", "THETA", "Integrator_InitTheta", 0, "", [](O o) { return real(o.theta); },
      [](O o) -> N { return o.theta; },
      [](RunOptions& o, V v) {
        return v.number && *v.number >= 0.5 && *v.number <= 1.0 && finite(v, o.theta);
-     }},
+     },
+     std::nullopt, [](RunOptions& to, O from) { to.theta = from.theta; },
+     [](C c) { return number(c.theta); }},
     {"nb_steps", "--steps", "INCREMENT STEP", "IncrementStep", -1, "",
      [](O o) { return std::to_string(o.steps); }, [](O o) -> N { return static_cast<double>(o.steps); },
-     [](RunOptions& o, V v) { return integer_at_least(v, 0, o.steps); }},
+     [](RunOptions& o, V v) { return integer_at_least(v, 0, o.steps); }, std::nullopt,
+     [](RunOptions& to, O from) { to.steps = from.steps; },
+     [](C c) { return number(static_cast<double>(c.steps)); }},
     {"solver_type", "--solver", "EX PREP NLGS", "ExSolver", 0, "",
      [](O o) {
        return std::string(o.nlgs.storage == NlgsStorage::stored_delassus_loops ? "Stored_Delassus_Loops"
                                                                                : "Exchange_Local_Global");
      },
      [](O) -> N { return std::nullopt; },
-     [](RunOptions& o, V v) { return v.text && parse_storage(*v.text, o.nlgs.storage); }},
+     [](RunOptions& o, V v) { return v.text && parse_storage(*v.text, o.nlgs.storage); }, std::nullopt,
+     [](RunOptions& to, O from) { to.nlgs.storage = from.nlgs.storage; },
+     [](C c) { return text(c.storage); }},
     {"norm", "--norm", "NLGS CHECK TYPE", "ExSolver", 1, "",
      [](O o) { return std::string(norm_name(o.nlgs.norm)); }, [](O) -> N { return std::nullopt; },
-     [](RunOptions& o, V v) { return v.text && parse_norm(*v.text, o.nlgs.norm); }},
+     [](RunOptions& o, V v) { return v.text && parse_norm(*v.text, o.nlgs.norm); }, std::nullopt,
+     [](RunOptions& to, O from) { to.nlgs.norm = from.nlgs.norm; }, [](C c) { return text(c.norm); }},
     {"tol", "--tol", "NLGS CHECK TYPE", "ExSolver", 2, "", [](O o) { return real(o.nlgs.tolerance); },
      [](O o) -> N { return o.nlgs.tolerance; },
-     [](RunOptions& o, V v) { return positive(v, o.nlgs.tolerance); }},
+     [](RunOptions& o, V v) { return positive(v, o.nlgs.tolerance); }, std::nullopt,
+     [](RunOptions& to, O from) { to.nlgs.tolerance = from.nlgs.tolerance; },
+     [](C c) { return number(c.tolerance); }},
     {"relax", "--relax", "NLGS CHECK TYPE", "ExSolver", 3, "", [](O o) { return real(o.nlgs.relax); },
      [](O o) -> N { return o.nlgs.relax; },
-     [](RunOptions& o, V v) { return v.number && *v.number <= 2.0 && positive(v, o.nlgs.relax); }},
+     [](RunOptions& o, V v) { return v.number && *v.number <= 2.0 && positive(v, o.nlgs.relax); },
+     std::nullopt, [](RunOptions& to, O from) { to.nlgs.relax = from.nlgs.relax; },
+     [](C c) { return number(c.relax); }},
     {"gs_it1", "--gs-it1", "REPETE (after EX ITER NLGS)", "ExSolver", 4, "",
      [](O o) { return std::to_string(o.nlgs.gs_it1); }, [](O o) -> N { return o.nlgs.gs_it1; },
-     [](RunOptions& o, V v) { return integer_at_least(v, 1, o.nlgs.gs_it1); }},
+     [](RunOptions& o, V v) { return integer_at_least(v, 1, o.nlgs.gs_it1); }, std::nullopt,
+     [](RunOptions& to, O from) { to.nlgs.gs_it1 = from.nlgs.gs_it1; }, [](C c) { return number(c.gs_it1); }},
     {"gs_it2", "--gs-it2", "REPETE (the checks' loop)", "ExSolver", 5, "",
      [](O o) { return std::to_string(o.nlgs.gs_it2); }, [](O o) -> N { return o.nlgs.gs_it2; },
-     [](RunOptions& o, V v) { return integer_at_least(v, 1, o.nlgs.gs_it2); }},
+     [](RunOptions& o, V v) { return integer_at_least(v, 1, o.nlgs.gs_it2); }, std::nullopt,
+     [](RunOptions& to, O from) { to.nlgs.gs_it2 = from.nlgs.gs_it2; }, [](C c) { return number(c.gs_it2); }},
     {"quick_scramble", "--quick-scramble", "quickSCRAMBLE", "nlgs_SetWithQuickScramble", -1, "",
      [](O o) { return yes_no(o.nlgs.quick_scramble); }, [](O o) -> N { return o.nlgs.quick_scramble; },
-     [](RunOptions& o, V v) { return switch_on(v, o.nlgs.quick_scramble); }},
+     [](RunOptions& o, V v) { return switch_on(v, o.nlgs.quick_scramble); }, std::nullopt,
+     [](RunOptions& to, O from) { to.nlgs.quick_scramble = from.nlgs.quick_scramble; },
+     [](C c) { return number(c.quick_scramble); }},
     {"scramble_seed", "--scramble-seed", "", "", -1, "",
-     [](O o) { return std::to_string(o.nlgs.scramble_seed); }, [](O) -> N { return std::nullopt; }},
+     [](O o) { return std::to_string(o.nlgs.scramble_seed); }, [](O) -> N { return std::nullopt; }, nullptr,
+     std::nullopt, [](RunOptions& to, O from) { to.nlgs.scramble_seed = from.nlgs.scramble_seed; }, nullptr},
     {"diagonal_resolution", "--diagonal-resolution", "DIAGONAL RESOLUTION", "nlgs_3D_DiagonalResolution", -1,
      "", [](O o) { return yes_no(o.nlgs.diagonal_resolution); },
      [](O o) -> N { return o.nlgs.diagonal_resolution; },
-     [](RunOptions& o, V v) { return switch_on(v, o.nlgs.diagonal_resolution); }},
+     [](RunOptions& o, V v) { return switch_on(v, o.nlgs.diagonal_resolution); }, std::nullopt,
+     [](RunOptions& to, O from) { to.nlgs.diagonal_resolution = from.nlgs.diagonal_resolution; },
+     [](C c) { return number(c.diagonal_resolution); }},
     {"residual_target", "--residual-target", "", "", -1, "", [](O o) { return real(o.nlgs.residual_target); },
-     [](O) -> N { return std::nullopt; }},
+     [](O) -> N { return std::nullopt; }, nullptr, std::nullopt,
+     [](RunOptions& to, O from) { to.nlgs.residual_target = from.nlgs.residual_target; }, nullptr},
     {"freq_write", "--write-every", "WRITE OUT DOF STEP", "WriteOut", 0, "nsteps",
      [](O o) { return std::to_string(o.write_every); },
      [](O o) -> N { return static_cast<double>(o.write_every); },
-     [](RunOptions& o, V v) { return integer_at_least(v, 1, o.write_every); }, 1.0},
+     [](RunOptions& o, V v) { return integer_at_least(v, 1, o.write_every); }, 1.0,
+     [](RunOptions& to, O from) { to.write_every = from.write_every; },
+     [](C c) { return number(static_cast<double>(c.write_every)); }},
     {"freq_display", "--display-every", "WRITE OUTPUT GMV STEP", "WriteDisplayFiles", 0, "freq",
      [](O o) { return std::to_string(o.display_every); },
      [](O o) -> N { return static_cast<double>(o.display_every); },
-     [](RunOptions& o, V v) { return integer_at_least(v, 1, o.display_every); }, 1.0},
+     [](RunOptions& o, V v) { return integer_at_least(v, 1, o.display_every); }, 1.0,
+     [](RunOptions& to, O from) { to.display_every = from.display_every; },
+     [](C c) { return number(static_cast<double>(c.display_every)); }},
     {"ymin_boundary", "--ymin-boundary", "INIT YMIN BOUNDARY", "RBDY2_SetYminBoundary", 0, "",
      [](O o) { return real(o.y_min); }, [](O o) -> N { return o.y_min; },
-     [](RunOptions& o, V v) { return finite(v, o.y_min); }},
+     [](RunOptions& o, V v) { return finite(v, o.y_min); }, std::nullopt,
+     [](RunOptions& to, O from) { to.y_min = from.y_min; }, [](C c) { return number(c.y_min); }},
     {"ymax_boundary", "--ymax-boundary", "INIT YMAX BOUNDARY", "RBDY2_SetYmaxBoundary", 0, "",
      [](O o) { return real(o.y_max); }, [](O o) -> N { return o.y_max; },
-     [](RunOptions& o, V v) { return finite(v, o.y_max); }},
+     [](RunOptions& o, V v) { return finite(v, o.y_max); }, std::nullopt,
+     [](RunOptions& to, O from) { to.y_max = from.y_max; }, [](C c) { return number(c.y_max); }},
     {"xmin_boundary", "--xmin-boundary", "INIT XMIN BOUNDARY", "RBDY2_SetXminBoundary", 0, "",
      [](O o) { return real(o.x_min); }, [](O o) -> N { return o.x_min; },
-     [](RunOptions& o, V v) { return finite(v, o.x_min); }},
+     [](RunOptions& o, V v) { return finite(v, o.x_min); }, std::nullopt,
+     [](RunOptions& to, O from) { to.x_min = from.x_min; }, [](C c) { return number(c.x_min); }},
     {"xmax_boundary", "--xmax-boundary", "INIT XMAX BOUNDARY", "RBDY2_SetXmaxBoundary", 0, "",
      [](O o) { return real(o.x_max); }, [](O o) -> N { return o.x_max; },
-     [](RunOptions& o, V v) { return finite(v, o.x_max); }},
+     [](RunOptions& o, V v) { return finite(v, o.x_max); }, std::nullopt,
+     [](RunOptions& to, O from) { to.x_max = from.x_max; }, [](C c) { return number(c.x_max); }},
     {"xperiod", "--xperiod", "PERIODIC CONDITION, XPERIODIC CONDITION", "SetPeriodicCondition", 0, "xperiod",
      [](O o) { return real(o.x_period); }, [](O o) -> N { return o.x_period; },
-     [](RunOptions& o, V v) { return positive(v, o.x_period); }},
+     [](RunOptions& o, V v) { return positive(v, o.x_period); }, std::nullopt,
+     [](RunOptions& to, O from) { to.x_period = from.x_period; }, [](C c) { return number(c.x_period); }},
     {"yperiod", "--yperiod", "YPERIODIC CONDITION", "SetPeriodicCondition", 1, "yperiod",
      [](O o) { return real(o.y_period); }, [](O o) -> N { return o.y_period; },
-     [](RunOptions& o, V v) { return positive(v, o.y_period); }},
+     [](RunOptions& o, V v) { return positive(v, o.y_period); }, std::nullopt,
+     [](RunOptions& to, O from) { to.y_period = from.y_period; }, [](C c) { return number(c.y_period); }},
     {"new_rotation_scheme", "--new-rotation-scheme", "NEW ROTATION SCHEME", "RBDY3_NewRotationScheme", -1, "",
      [](O o) { return yes_no(o.new_rotation_scheme); }, [](O o) -> N { return o.new_rotation_scheme; },
-     [](RunOptions& o, V v) { return switch_on(v, o.new_rotation_scheme); }},
+     [](RunOptions& o, V v) { return switch_on(v, o.new_rotation_scheme); }, std::nullopt,
+     [](RunOptions& to, O from) { to.new_rotation_scheme = from.new_rotation_scheme; },
+     [](C c) { return number(c.new_rotation_scheme); }},
     {"cundall_iterations", "--cundall-iterations", "CUNDALL ITERATION", "PRPRx_UseCpCundallDetection", 0,
      "nb_iter", [](O o) { return std::to_string(o.cundall_iterations); },
      [](O o) -> N { return o.cundall_iterations; },
-     [](RunOptions& o, V v) { return integer_at_least(v, 1, o.cundall_iterations); }},
+     [](RunOptions& o, V v) { return integer_at_least(v, 1, o.cundall_iterations); }, std::nullopt,
+     [](RunOptions& to, O from) { to.cundall_iterations = from.cundall_iterations; },
+     [](C c) { return number(static_cast<double>(c.cundall_iterations)); }},
     {"zero_initial_velocity", "", "FATAL DAMPING, INI V DOF NULL (before the first step)", "", -1, "",
-     [](O o) { return yes_no(o.zero_initial_velocity); }, [](O) -> N { return std::nullopt; }},
+     [](O o) { return yes_no(o.zero_initial_velocity); }, [](O) -> N { return std::nullopt; },
+     [](RunOptions& o, V v) { return switch_on(v, o.zero_initial_velocity); }, std::nullopt,
+     [](RunOptions& to, O from) { to.zero_initial_velocity = from.zero_initial_velocity; },
+     [](C c) { return number(c.zero_initial_velocity); }},
     {"source_point", "--source-point", "INIT SOURCE POINT, FD INIT SOURCE POINT",
      "RBDY3_SetSourcePointWithIni", -1, "",
      [](O o) {
@@ -147,13 +193,24 @@ constexpr RunParameter kParameters[] = {
                                 o.source_point_absolute ? "" : " relative")
                   : std::string("none");
      },
-     [](O) -> N { return std::nullopt; }},
+     [](O) -> N { return std::nullopt; }, nullptr, std::nullopt,
+     [](RunOptions& to, O from) {
+       to.source_first = from.source_first;
+       to.source_radius = from.source_radius;
+       to.source_point[0] = from.source_point[0];
+       to.source_point[1] = from.source_point[1];
+       to.source_point[2] = from.source_point[2];
+       to.source_point_absolute = from.source_point_absolute;
+     },
+     nullptr},
     {"ptpt3_network", "--ptpt3-network", "", "PTPT3_LoadNetwork", -1, "",
      [](O o) { return yes_no(o.ptpt3_network); }, [](O o) -> N { return o.ptpt3_network; },
-     [](RunOptions& o, V v) { return switch_on(v, o.ptpt3_network); }},
+     [](RunOptions& o, V v) { return switch_on(v, o.ptpt3_network); }, std::nullopt,
+     [](RunOptions& to, O from) { to.ptpt3_network = from.ptpt3_network; }, nullptr},
     {"ptpt3_current_nonuc0", "--ptpt3-current-nonuc0", "", "PTPT3_UseCurrentNonuc0", 0, "",
      [](O o) { return yes_no(o.ptpt3_current_nonuc0); }, [](O o) -> N { return o.ptpt3_current_nonuc0; },
-     [](RunOptions& o, V v) { return switch_on(v, o.ptpt3_current_nonuc0); }},
+     [](RunOptions& o, V v) { return switch_on(v, o.ptpt3_current_nonuc0); }, std::nullopt,
+     [](RunOptions& to, O from) { to.ptpt3_current_nonuc0 = from.ptpt3_current_nonuc0; }, nullptr},
 };
 
 std::string trimmed(std::string s) {
@@ -369,4 +426,55 @@ std::string run_parameters_csv(const RunOptions& options, const ParameterSources
   return csv;
 }
 
-}  // namespace lmgc::solver
+void apply_command_parameters(const grammar::CommandFile& command, std::string_view path, bool three_d,
+                              RunOptions& options, grammar::DiagnosticSink& sink, ParameterSources* sources) {
+  // The file's own faults (an APPELLE without its label, ...) are lmgc-check's to report.
+  grammar::DiagnosticSink expansion(static_cast<std::size_t>(-1));
+  const grammar::CommandRunParameters p = grammar::command_run_parameters(command, expansion);
+  const auto line_of = [&](std::string_view name) {
+    const auto it = p.lines.find(name);
+    return it == p.lines.end() ? 0u : it->second;
+  };
+  const auto where = [&](std::uint32_t line) {
+    return grammar::Location{std::string(path), grammar::SourceSpan{line, 1, 2}};
+  };
+  for (const RunParameter& parameter : kParameters) {
+    const std::uint32_t line = line_of(parameter.name);
+    if (line == 0) continue;
+    if (parameter.name == "source_point") {
+      if (p.source_first < 1 || !(p.source_radius > 0.0) || !std::isfinite(p.source_radius) ||
+          !std::isfinite(p.source_point[0]) || !std::isfinite(p.source_point[1]) ||
+          !std::isfinite(p.source_point[2])) {
+        sink.report(
+            "L4010", where(line),
+            "the source point needs a first body of at least 1, a positive radius and a finite point");
+        continue;
+      }
+      options.source_first = p.source_first;
+      options.source_radius = p.source_radius;
+      for (int d = 0; d < 3; ++d) options.source_point[d] = p.source_point[d];
+      options.source_point_absolute = p.source_point_absolute;
+    } else {
+      if (!parameter.from_command_dat || !parameter.assign) continue;
+      const grammar::ScriptValue value = parameter.from_command_dat(p);
+      if (!parameter.assign(options, value)) {
+        // LMGC90's 3D NLGS keeps 'Quad ' for a norm it does not know, as in a script (above).
+        if (parameter.name == "norm" && three_d) {
+          options.nlgs.norm = NlgsNorm::quad;
+        } else if (parameter.name == "solver_type") {
+          // CHIC reads the storage from the line after EX PREP NLGS, whatever it holds; both storages
+          // give the same iterates, so another word changes nothing (lmgc-check notes it, L4006).
+          continue;
+        } else {
+          sink.report("L4010", where(line),
+                      std::string(parameter.command_dat) + " gives " + std::string(parameter.name) + " = " +
+                          literal_text(value) + ", not a value a run can take");
+          continue;
+        }
+      }
+    }
+    if (sources) (*sources)[std::string(parameter.name)] = ParameterSource::command_dat;
+  }
+}
+
+}  // namespace lmgc::run

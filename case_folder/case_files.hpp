@@ -23,7 +23,7 @@
 #include "grammar/tact_behav/ast.hpp"
 #include "grammar/vloc_rloc/ast.hpp"
 
-namespace lmgc::validate {
+namespace lmgc::case_folder {
 
 struct CaseFiles {
   std::filesystem::path case_dir;
@@ -72,4 +72,4 @@ struct OutputFile {
 };
 std::vector<OutputFile> echo_files(const CaseFiles& files);
 
-}  // namespace lmgc::validate
+}  // namespace lmgc::case_folder
