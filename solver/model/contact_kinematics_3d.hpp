@@ -26,7 +26,7 @@ inline ContactImpulse impulse_of(const Interaction3D& c, const Eigen::Vector3d& 
 }
 
 // V += M⁻¹ H r for an impulse r (t, n, s) of one contact.
-inline void inject(const Interaction3D& c, const Eigen::Vector3d& r, RigidBodies3D& b,
+inline void inject(const Interaction3D& c, const Eigen::Vector3d& r, const RigidBodies3D& b,
                    std::vector<Vector6d>& V) {
   // Fixed-size halves throughout: this runs once per contact and sweep.
   const ContactImpulse f = impulse_of(c, r);
@@ -61,6 +61,27 @@ inline Eigen::Matrix3d delassus_block(const Interaction3D& c, const RigidBodies3
     W += c.frame * inverse.head<3>().asDiagonal() * c.frame.transpose() +
          lever * inverse.tail<3>().asDiagonal() * lever.transpose();
   }
+  return W;
+}
+
+// The block of W = Hᵀ M⁻¹ H that couples contact `c`'s local velocity to contact `d`'s reaction:
+// the sum over the bodies they share, signed by the side each contact sees the body from (0 when
+// they share none). coupling_block(c, c) is c's Delassus block (delassus_block, summed in another
+// order).
+inline Eigen::Matrix3d coupling_block(const Interaction3D& c, const Interaction3D& d,
+                                      const RigidBodies3D& b) {
+  Eigen::Matrix3d W = Eigen::Matrix3d::Zero();
+  for (int side_c = 0; side_c < 2; ++side_c)
+    for (int side_d = 0; side_d < 2; ++side_d) {
+      const std::int32_t body = side_c == 0 ? c.candidate_body : c.antagonist_body;
+      if (body != (side_d == 0 ? d.candidate_body : d.antagonist_body)) continue;
+      const double sign = side_c == side_d ? 1.0 : -1.0;
+      const Vector6d& m = b.inverse_mass[static_cast<std::size_t>(body)];
+      const Eigen::Matrix3d& lever_c = side_c == 0 ? c.lever_candidate : c.lever_antagonist;
+      const Eigen::Matrix3d& lever_d = side_d == 0 ? d.lever_candidate : d.lever_antagonist;
+      W += sign * (c.frame * m.head<3>().asDiagonal() * d.frame.transpose() +
+                   lever_c * m.tail<3>().asDiagonal() * lever_d.transpose());
+    }
   return W;
 }
 

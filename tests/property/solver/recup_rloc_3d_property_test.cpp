@@ -1,7 +1,7 @@
 // Property of the 3D warm start (step_3d recup_rloc): whatever order the contacts come in, each
 // takes the reaction of the first stored entry of its pair that matches it (PRPLx by candidate
-// vertex, PRPRx by place), as a search of the whole stored list finds it. recup_rloc walks the list
-// beside contacts in key order and bisects for the others; both paths must agree with the search.
+// vertex, PRPRx by place), as a search of the whole stored list finds it. recup_rloc looks among the
+// stored entries of the contact's candidate only; that lookup must agree with the search.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
