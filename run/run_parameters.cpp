@@ -71,19 +71,19 @@ bool switch_on(V v, bool& out) {
 constexpr RunParameter kParameters[] = {
     {"dt", "--dt", "TIME STEP", "TimeEvolution_SetTimeStep", 0, "", [](O o) { return real(o.dt); },
      [](O o) -> N { return o.dt; }, [](RunOptions& o, V v) { return positive(v, o.dt); }, std::nullopt,
-     [](RunOptions& to, O from) { to.dt = from.dt; }, [](C c) { return number(c.dt); }},
+     [](RunOptions& to, O from) { to.dt = from.dt; }, [](C c) { return number(c.dt); }, "time step [s]"},
     {"theta", "--theta", "THETA", "Integrator_InitTheta", 0, "", [](O o) { return real(o.theta); },
      [](O o) -> N { return o.theta; },
      [](RunOptions& o, V v) {
        return v.number && *v.number >= 0.5 && *v.number <= 1.0 && finite(v, o.theta);
      },
-     std::nullopt, [](RunOptions& to, O from) { to.theta = from.theta; },
-     [](C c) { return number(c.theta); }},
+     std::nullopt, [](RunOptions& to, O from) { to.theta = from.theta; }, [](C c) { return number(c.theta); },
+     "theta of the Moreau-Jean scheme, in [0.5, 1]"},
     {"nb_steps", "--steps", "INCREMENT STEP", "IncrementStep", -1, "",
      [](O o) { return std::to_string(o.steps); }, [](O o) -> N { return static_cast<double>(o.steps); },
      [](RunOptions& o, V v) { return integer_at_least(v, 0, o.steps); }, std::nullopt,
      [](RunOptions& to, O from) { to.steps = from.steps; },
-     [](C c) { return number(static_cast<double>(c.steps)); }},
+     [](C c) { return number(static_cast<double>(c.steps)); }, "number of steps"},
     {"solver_type", "--solver", "EX PREP NLGS", "ExSolver", 0, "",
      [](O o) {
        return std::string(o.nlgs.storage == NlgsStorage::stored_delassus_loops ? "Stored_Delassus_Loops"
@@ -91,99 +91,117 @@ constexpr RunParameter kParameters[] = {
      },
      [](O) -> N { return std::nullopt; },
      [](RunOptions& o, V v) { return v.text && parse_storage(*v.text, o.nlgs.storage); }, std::nullopt,
-     [](RunOptions& to, O from) { to.nlgs.storage = from.nlgs.storage; },
-     [](C c) { return text(c.storage); }},
+     [](RunOptions& to, O from) { to.nlgs.storage = from.nlgs.storage; }, [](C c) { return text(c.storage); },
+     "NLGS storage: Stored_Delassus_Loops or Exchange_Local_Global; LMGC90's two storages give the same "
+     "iterates, and lmgc-solve runs both the same way (every command.py names one)"},
     {"norm", "--norm", "NLGS CHECK TYPE", "ExSolver", 1, "",
      [](O o) { return std::string(norm_name(o.nlgs.norm)); }, [](O) -> N { return std::nullopt; },
      [](RunOptions& o, V v) { return v.text && parse_norm(*v.text, o.nlgs.norm); }, std::nullopt,
-     [](RunOptions& to, O from) { to.nlgs.norm = from.nlgs.norm; }, [](C c) { return text(c.norm); }},
+     [](RunOptions& to, O from) { to.nlgs.norm = from.nlgs.norm; }, [](C c) { return text(c.norm); },
+     "NLGS convergence norm: Quad, QuaN, Maxm or QM/16"},
     {"tol", "--tol", "NLGS CHECK TYPE", "ExSolver", 2, "", [](O o) { return real(o.nlgs.tolerance); },
      [](O o) -> N { return o.nlgs.tolerance; },
      [](RunOptions& o, V v) { return positive(v, o.nlgs.tolerance); }, std::nullopt,
      [](RunOptions& to, O from) { to.nlgs.tolerance = from.nlgs.tolerance; },
-     [](C c) { return number(c.tolerance); }},
+     [](C c) { return number(c.tolerance); }, "NLGS tolerance of the norm"},
     {"relax", "--relax", "NLGS CHECK TYPE", "ExSolver", 3, "", [](O o) { return real(o.nlgs.relax); },
      [](O o) -> N { return o.nlgs.relax; },
      [](RunOptions& o, V v) { return v.number && *v.number <= 2.0 && positive(v, o.nlgs.relax); },
      std::nullopt, [](RunOptions& to, O from) { to.nlgs.relax = from.nlgs.relax; },
-     [](C c) { return number(c.relax); }},
+     [](C c) { return number(c.relax); }, "NLGS relaxation, in (0, 2]"},
     {"gs_it1", "--gs-it1", "REPETE (after EX ITER NLGS)", "ExSolver", 4, "",
      [](O o) { return std::to_string(o.nlgs.gs_it1); }, [](O o) -> N { return o.nlgs.gs_it1; },
      [](RunOptions& o, V v) { return integer_at_least(v, 1, o.nlgs.gs_it1); }, std::nullopt,
-     [](RunOptions& to, O from) { to.nlgs.gs_it1 = from.nlgs.gs_it1; }, [](C c) { return number(c.gs_it1); }},
+     [](RunOptions& to, O from) { to.nlgs.gs_it1 = from.nlgs.gs_it1; }, [](C c) { return number(c.gs_it1); },
+     "NLGS sweeps between two convergence checks"},
     {"gs_it2", "--gs-it2", "REPETE (the checks' loop)", "ExSolver", 5, "",
      [](O o) { return std::to_string(o.nlgs.gs_it2); }, [](O o) -> N { return o.nlgs.gs_it2; },
      [](RunOptions& o, V v) { return integer_at_least(v, 1, o.nlgs.gs_it2); }, std::nullopt,
-     [](RunOptions& to, O from) { to.nlgs.gs_it2 = from.nlgs.gs_it2; }, [](C c) { return number(c.gs_it2); }},
+     [](RunOptions& to, O from) { to.nlgs.gs_it2 = from.nlgs.gs_it2; }, [](C c) { return number(c.gs_it2); },
+     "maximum number of convergence checks"},
     {"quick_scramble", "--quick-scramble", "quickSCRAMBLE", "nlgs_SetWithQuickScramble", -1, "",
      [](O o) { return yes_no(o.nlgs.quick_scramble); }, [](O o) -> N { return o.nlgs.quick_scramble; },
      [](RunOptions& o, V v) { return switch_on(v, o.nlgs.quick_scramble); }, std::nullopt,
      [](RunOptions& to, O from) { to.nlgs.quick_scramble = from.nlgs.quick_scramble; },
-     [](C c) { return number(c.quick_scramble); }},
+     [](C c) { return number(c.quick_scramble); },
+     "scramble the contact order before each block of sweeps as LMGC90 does"},
     {"scramble_seed", "--scramble-seed", "", "", -1, "",
      [](O o) { return std::to_string(o.nlgs.scramble_seed); }, [](O) -> N { return std::nullopt; }, nullptr,
-     std::nullopt, [](RunOptions& to, O from) { to.nlgs.scramble_seed = from.nlgs.scramble_seed; }, nullptr},
+     std::nullopt, [](RunOptions& to, O from) { to.nlgs.scramble_seed = from.nlgs.scramble_seed; }, nullptr,
+     "seed of the quick scramble's random lists (LMGC90's differ from run to run)"},
     {"diagonal_resolution", "--diagonal-resolution", "DIAGONAL RESOLUTION", "nlgs_3D_DiagonalResolution", -1,
      "", [](O o) { return yes_no(o.nlgs.diagonal_resolution); },
      [](O o) -> N { return o.nlgs.diagonal_resolution; },
      [](RunOptions& o, V v) { return switch_on(v, o.nlgs.diagonal_resolution); }, std::nullopt,
      [](RunOptions& to, O from) { to.nlgs.diagonal_resolution = from.nlgs.diagonal_resolution; },
-     [](C c) { return number(c.diagonal_resolution); }},
+     [](C c) { return number(c.diagonal_resolution); },
+     "3D: solve each contact with the diagonal of its Delassus block, then project on the Coulomb cone"},
     {"residual_target", "--residual-target", "", "", -1, "", [](O o) { return real(o.nlgs.residual_target); },
      [](O) -> N { return std::nullopt; }, nullptr, std::nullopt,
-     [](RunOptions& to, O from) { to.nlgs.residual_target = from.nlgs.residual_target; }, nullptr},
+     [](RunOptions& to, O from) { to.nlgs.residual_target = from.nlgs.residual_target; }, nullptr,
+     "also stop a step when the natural-map residual / |q| is below this (0 = off)"},
     {"freq_write", "--write-every", "WRITE OUT DOF STEP", "WriteOut", 0, "nsteps",
      [](O o) { return std::to_string(o.write_every); },
      [](O o) -> N { return static_cast<double>(o.write_every); },
      [](RunOptions& o, V v) { return integer_at_least(v, 1, o.write_every); }, 1.0,
      [](RunOptions& to, O from) { to.write_every = from.write_every; },
-     [](C c) { return number(static_cast<double>(c.write_every)); }},
+     [](C c) { return number(static_cast<double>(c.write_every)); },
+     "write DOF/Vloc_Rloc .OUT.n every n steps (0 = never)"},
     {"freq_display", "--display-every", "WRITE OUTPUT GMV STEP", "WriteDisplayFiles", 0, "freq",
      [](O o) { return std::to_string(o.display_every); },
      [](O o) -> N { return static_cast<double>(o.display_every); },
      [](RunOptions& o, V v) { return integer_at_least(v, 1, o.display_every); }, 1.0,
      [](RunOptions& to, O from) { to.display_every = from.display_every; },
-     [](C c) { return number(static_cast<double>(c.display_every)); }},
+     [](C c) { return number(static_cast<double>(c.display_every)); },
+     "write DISPLAY files every n steps (0 = never)"},
     {"ymin_boundary", "--ymin-boundary", "INIT YMIN BOUNDARY", "RBDY2_SetYminBoundary", 0, "",
      [](O o) { return real(o.y_min); }, [](O o) -> N { return o.y_min; },
      [](RunOptions& o, V v) { return finite(v, o.y_min); }, std::nullopt,
-     [](RunOptions& to, O from) { to.y_min = from.y_min; }, [](C c) { return number(c.y_min); }},
+     [](RunOptions& to, O from) { to.y_min = from.y_min; }, [](C c) { return number(c.y_min); },
+     "2D: bodies whose centre goes below this become invisible"},
     {"ymax_boundary", "--ymax-boundary", "INIT YMAX BOUNDARY", "RBDY2_SetYmaxBoundary", 0, "",
      [](O o) { return real(o.y_max); }, [](O o) -> N { return o.y_max; },
      [](RunOptions& o, V v) { return finite(v, o.y_max); }, std::nullopt,
-     [](RunOptions& to, O from) { to.y_max = from.y_max; }, [](C c) { return number(c.y_max); }},
+     [](RunOptions& to, O from) { to.y_max = from.y_max; }, [](C c) { return number(c.y_max); },
+     "2D: bodies whose centre goes above this become invisible"},
     {"xmin_boundary", "--xmin-boundary", "INIT XMIN BOUNDARY", "RBDY2_SetXminBoundary", 0, "",
      [](O o) { return real(o.x_min); }, [](O o) -> N { return o.x_min; },
      [](RunOptions& o, V v) { return finite(v, o.x_min); }, std::nullopt,
-     [](RunOptions& to, O from) { to.x_min = from.x_min; }, [](C c) { return number(c.x_min); }},
+     [](RunOptions& to, O from) { to.x_min = from.x_min; }, [](C c) { return number(c.x_min); },
+     "2D: bodies whose centre goes left of this become invisible"},
     {"xmax_boundary", "--xmax-boundary", "INIT XMAX BOUNDARY", "RBDY2_SetXmaxBoundary", 0, "",
      [](O o) { return real(o.x_max); }, [](O o) -> N { return o.x_max; },
      [](RunOptions& o, V v) { return finite(v, o.x_max); }, std::nullopt,
-     [](RunOptions& to, O from) { to.x_max = from.x_max; }, [](C c) { return number(c.x_max); }},
+     [](RunOptions& to, O from) { to.x_max = from.x_max; }, [](C c) { return number(c.x_max); },
+     "2D: bodies whose centre goes right of this become invisible"},
     {"xperiod", "--xperiod", "PERIODIC CONDITION, XPERIODIC CONDITION", "SetPeriodicCondition", 0, "xperiod",
      [](O o) { return real(o.x_period); }, [](O o) -> N { return o.x_period; },
      [](RunOptions& o, V v) { return positive(v, o.x_period); }, std::nullopt,
-     [](RunOptions& to, O from) { to.x_period = from.x_period; }, [](C c) { return number(c.x_period); }},
+     [](RunOptions& to, O from) { to.x_period = from.x_period; }, [](C c) { return number(c.x_period); },
+     "periodic in x with this period"},
     {"yperiod", "--yperiod", "YPERIODIC CONDITION", "SetPeriodicCondition", 1, "yperiod",
      [](O o) { return real(o.y_period); }, [](O o) -> N { return o.y_period; },
      [](RunOptions& o, V v) { return positive(v, o.y_period); }, std::nullopt,
-     [](RunOptions& to, O from) { to.y_period = from.y_period; }, [](C c) { return number(c.y_period); }},
+     [](RunOptions& to, O from) { to.y_period = from.y_period; }, [](C c) { return number(c.y_period); },
+     "3D: periodic in y with this period"},
     {"new_rotation_scheme", "--new-rotation-scheme", "NEW ROTATION SCHEME", "RBDY3_NewRotationScheme", -1, "",
      [](O o) { return yes_no(o.new_rotation_scheme); }, [](O o) -> N { return o.new_rotation_scheme; },
      [](RunOptions& o, V v) { return switch_on(v, o.new_rotation_scheme); }, std::nullopt,
      [](RunOptions& to, O from) { to.new_rotation_scheme = from.new_rotation_scheme; },
-     [](C c) { return number(c.new_rotation_scheme); }},
+     [](C c) { return number(c.new_rotation_scheme); },
+     "RBDY3: update the principal frame by the Cayley map"},
     {"cundall_iterations", "--cundall-iterations", "CUNDALL ITERATION", "PRPRx_UseCpCundallDetection", 0,
      "nb_iter", [](O o) { return std::to_string(o.cundall_iterations); },
      [](O o) -> N { return o.cundall_iterations; },
      [](RunOptions& o, V v) { return integer_at_least(v, 1, o.cundall_iterations); }, std::nullopt,
      [](RunOptions& to, O from) { to.cundall_iterations = from.cundall_iterations; },
-     [](C c) { return number(static_cast<double>(c.cundall_iterations)); }},
+     [](C c) { return number(static_cast<double>(c.cundall_iterations)); },
+     "3D: cap of Cundall's common-plane search between polyhedra"},
     {"zero_initial_velocity", "", "FATAL DAMPING, INI V DOF NULL (before the first step)", "", -1, "",
      [](O o) { return yes_no(o.zero_initial_velocity); }, [](O) -> N { return std::nullopt; },
      [](RunOptions& o, V v) { return switch_on(v, o.zero_initial_velocity); }, std::nullopt,
      [](RunOptions& to, O from) { to.zero_initial_velocity = from.zero_initial_velocity; },
-     [](C c) { return number(c.zero_initial_velocity); }},
+     [](C c) { return number(c.zero_initial_velocity); }, "every body starts at rest"},
     {"source_point", "--source-point", "INIT SOURCE POINT, FD INIT SOURCE POINT",
      "RBDY3_SetSourcePointWithIni", -1, "",
      [](O o) {
@@ -202,15 +220,20 @@ constexpr RunParameter kParameters[] = {
        to.source_point[2] = from.source_point[2];
        to.source_point_absolute = from.source_point_absolute;
      },
-     nullptr},
+     nullptr,
+     "3D: FIRST RADIUS X Y Z: bodies after FIRST enter one by one at (X, Y, Z), each when the previous one "
+     "is farther than RADIUS from it"},
     {"ptpt3_network", "--ptpt3-network", "", "PTPT3_LoadNetwork", -1, "",
      [](O o) { return yes_no(o.ptpt3_network); }, [](O o) -> N { return o.ptpt3_network; },
      [](RunOptions& o, V v) { return switch_on(v, o.ptpt3_network); }, std::nullopt,
-     [](RunOptions& to, O from) { to.ptpt3_network = from.ptpt3_network; }, nullptr},
+     [](RunOptions& to, O from) { to.ptpt3_network = from.ptpt3_network; }, nullptr,
+     "3D: link PT3Dx points as DATBOX/PTPT3_NETWORK.DAT lists instead of by distance"},
     {"ptpt3_current_nonuc0", "--ptpt3-current-nonuc0", "", "PTPT3_UseCurrentNonuc0", 0, "",
      [](O o) { return yes_no(o.ptpt3_current_nonuc0); }, [](O o) -> N { return o.ptpt3_current_nonuc0; },
      [](RunOptions& o, V v) { return switch_on(v, o.ptpt3_current_nonuc0); }, std::nullopt,
-     [](RunOptions& to, O from) { to.ptpt3_current_nonuc0 = from.ptpt3_current_nonuc0; }, nullptr},
+     [](RunOptions& to, O from) { to.ptpt3_current_nonuc0 = from.ptpt3_current_nonuc0; }, nullptr,
+     "3D: PTPT3 reference lengths from the network file's nonuc0, or for detected links from the positions "
+     "at the start"},
 };
 
 std::string trimmed(std::string s) {
@@ -475,6 +498,41 @@ void apply_command_parameters(const grammar::CommandFile& command, std::string_v
     }
     if (sources) (*sources)[std::string(parameter.name)] = ParameterSource::command_dat;
   }
+}
+
+const RunParameter* find_run_parameter_by_flag(std::string_view flag) {
+  for (const RunParameter& p : kParameters)
+    if (p.flag == flag) return &p;
+  return nullptr;
+}
+
+std::string flag_help(const RunParameter& p) {
+  std::string help(p.help);
+  std::vector<std::string> where;
+  if (!p.chipy.empty()) where.push_back("command.py: " + std::string(p.chipy));
+  if (!p.command_dat.empty()) where.push_back("COMMAND.DAT: " + std::string(p.command_dat));
+  where.push_back("default " + p.text(RunOptions{}));
+  help += " [";
+  for (std::size_t k = 0; k < where.size(); ++k) help += (k ? "; " : "") + where[k];
+  return help + "]";
+}
+
+std::string run_parameters_markdown() {
+  std::string out =
+      "| parameter | flag | command.py | COMMAND.DAT | default | meaning |\n| --- | --- | --- | --- | --- | "
+      "--- |\n";
+  const auto cell = [](std::string_view text) {
+    return text.empty() ? std::string("—") : "`" + std::string(text) + "`";
+  };
+  for (const RunParameter& p : kParameters) {
+    std::string meaning(p.help);
+    for (std::size_t at = meaning.find('|'); at != std::string::npos; at = meaning.find('|', at + 2))
+      meaning.replace(at, 1, "\\|");
+    out += "| `" + std::string(p.name) + "` | " + cell(p.flag) + " | " + cell(p.chipy) + " | " +
+           (p.command_dat.empty() ? std::string("—") : std::string(p.command_dat)) + " | " +
+           p.text(RunOptions{}) + " | " + meaning + " |\n";
+  }
+  return out;
 }
 
 }  // namespace lmgc::run

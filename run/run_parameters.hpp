@@ -44,10 +44,19 @@ struct RunParameter {
   void (*take)(RunOptions& run, const RunOptions& flags) = nullptr;
   // The COMMAND.DAT layer: the value the file gives (read when its keyword's line is set).
   grammar::ScriptValue (*from_command_dat)(const grammar::CommandRunParameters&) = nullptr;
+  // What it means, for --help and the docs (flag_help and run_parameters_markdown add where it is
+  // set and its default).
+  std::string_view help;
 };
 
 std::span<const RunParameter> run_parameters();
 const RunParameter* find_run_parameter(std::string_view name);
+const RunParameter* find_run_parameter_by_flag(std::string_view flag);
+// lmgc-solve --help's description of a parameter's flag: its meaning, the chipy call and the
+// COMMAND.DAT keyword that set it, its default.
+std::string flag_help(const RunParameter& parameter);
+// The table as docs/lmgc-solve.md shows it (one row per parameter).
+std::string run_parameters_markdown();
 
 // Which layer gave each parameter (by name): the default unless COMMAND.DAT or a flag set it.
 using ParameterSources = std::map<std::string, ParameterSource, std::less<>>;

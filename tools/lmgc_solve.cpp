@@ -60,67 +60,48 @@ int main(int argc, char** argv) {
   double rloc_tol = 0.0;
   bool no_command_dat = false;
   bool command_dat = false;
+  // A run parameter's description comes from the run-parameter table (run/run_parameters.hpp).
+  const auto described = [](std::string_view flag) {
+    const run::RunParameter* parameter = run::find_run_parameter_by_flag(flag);
+    return parameter ? run::flag_help(*parameter) : std::string();
+  };
   app.add_option("CASE_DIR", case_dir, "case folder holding DATBOX/ (after '--' it may start with '-')")
       ->required();
-  app.add_option("--dt", options.dt, "time step [s]")->check(kFinite & CLI::PositiveNumber);
-  app.add_option("--theta", options.theta, "theta of the Moreau-Jean scheme, in [0.5, 1]")
-      ->check(kFinite & CLI::Range(0.5, 1.0));
-  app.add_option("--steps", options.steps, "number of steps")->check(CLI::Range(0L, 1'000'000'000'000L));
-  app.add_option(
-      "--solver", storage,
-      "NLGS storage: Stored_Delassus_Loops or Exchange_Local_Global; LMGC90's two storages give the "
-      "same iterates, and lmgc-solve runs both the same way (every command.py names one)");
-  app.add_option("--norm", norm, "NLGS convergence norm: Quad, QuaN, Maxm or QM/16");
-  app.add_option("--tol", options.nlgs.tolerance, "NLGS tolerance of the norm")
-      ->check(kFinite & CLI::PositiveNumber);
-  app.add_option("--relax", options.nlgs.relax, "NLGS relaxation, in (0, 2]")
+  app.add_option("--dt", options.dt, described("--dt"))->check(kFinite & CLI::PositiveNumber);
+  app.add_option("--theta", options.theta, described("--theta"))->check(kFinite & CLI::Range(0.5, 1.0));
+  app.add_option("--steps", options.steps, described("--steps"))->check(CLI::Range(0L, 1'000'000'000'000L));
+  app.add_option("--solver", storage, described("--solver"));
+  app.add_option("--norm", norm, described("--norm"));
+  app.add_option("--tol", options.nlgs.tolerance, described("--tol"))->check(kFinite & CLI::PositiveNumber);
+  app.add_option("--relax", options.nlgs.relax, described("--relax"))
       ->check(kFinite & CLI::Range(std::nextafter(0.0, 1.0), 2.0));
-  app.add_option("--gs-it1", options.nlgs.gs_it1, "NLGS sweeps between two convergence checks")
-      ->check(CLI::Range(1, 1'000'000'000));
-  app.add_option("--gs-it2", options.nlgs.gs_it2, "maximum number of convergence checks")
-      ->check(CLI::Range(1, 1'000'000'000));
-  app.add_flag("--quick-scramble", options.nlgs.quick_scramble,
-               "scramble the contact order before each block of sweeps as LMGC90 does");
-  app.add_option("--scramble-seed", options.nlgs.scramble_seed,
-                 "seed of the quick scramble's random lists (LMGC90's differ from run to run)");
-  app.add_flag("--diagonal-resolution", options.nlgs.diagonal_resolution,
-               "3D: solve each contact with the diagonal of its Delassus block, then project on the "
-               "Coulomb cone (nlgs_3D_DiagonalResolution)");
-  app.add_option("--residual-target", options.nlgs.residual_target,
-                 "also stop a step when the natural-map residual / |q| is below this (0 = off)")
+  app.add_option("--gs-it1", options.nlgs.gs_it1, described("--gs-it1"))->check(CLI::Range(1, 1'000'000'000));
+  app.add_option("--gs-it2", options.nlgs.gs_it2, described("--gs-it2"))->check(CLI::Range(1, 1'000'000'000));
+  app.add_flag("--quick-scramble", options.nlgs.quick_scramble, described("--quick-scramble"));
+  app.add_option("--scramble-seed", options.nlgs.scramble_seed, described("--scramble-seed"));
+  app.add_flag("--diagonal-resolution", options.nlgs.diagonal_resolution, described("--diagonal-resolution"));
+  app.add_option("--residual-target", options.nlgs.residual_target, described("--residual-target"))
       ->check(kFinite & CLI::NonNegativeNumber);
   app.add_option("--rloc-tol", rloc_tol,
                  "refused: LMGC90's RecupRloc(tol) matches PLPLx reactions by position; lmgc-solve matches "
                  "them by contactor (the first NLGS iterate may differ, not the problem)");
-  app.add_option("--cundall-iterations", options.cundall_iterations,
-                 "3D: cap of Cundall's common-plane search between polyhedra "
-                 "(PRPRx_UseCpCundallDetection(n), CUNDALL ITERATION; default 100)")
+  app.add_option("--cundall-iterations", options.cundall_iterations, described("--cundall-iterations"))
       ->check(CLI::Range(1, 1'000'000));
-  app.add_option("--write-every", options.write_every, "write DOF/Vloc_Rloc .OUT.n every n steps (0 = never)")
+  app.add_option("--write-every", options.write_every, described("--write-every"))
       ->check(CLI::Range(0L, 1'000'000'000'000L));
-  app.add_option("--display-every", options.display_every, "write DISPLAY files every n steps (0 = never)")
+  app.add_option("--display-every", options.display_every, described("--display-every"))
       ->check(CLI::Range(0L, 1'000'000'000'000L));
-  app.add_option("--ymin-boundary", options.y_min,
-                 "bodies whose centre goes below this become invisible (RBDY2_SetYminBoundary)")
-      ->check(kFinite);
-  app.add_option("--ymax-boundary", options.y_max, "... above this")->check(kFinite);
-  app.add_option("--xmin-boundary", options.x_min, "... left of this")->check(kFinite);
-  app.add_option("--xmax-boundary", options.x_max, "... right of this")->check(kFinite);
-  app.add_option("--xperiod", options.x_period, "periodic in x with this period (SetPeriodicCondition)")
-      ->check(kFinite & CLI::PositiveNumber);
-  app.add_option("--yperiod", options.y_period, "3D: periodic in y with this period (SetPeriodicCondition)")
-      ->check(kFinite & CLI::PositiveNumber);
-  app.add_flag("--ptpt3-network", options.ptpt3_network,
-               "3D: link PT3Dx points as DATBOX/PTPT3_NETWORK.DAT lists instead of by distance "
-               "(PTPT3_LoadNetwork)");
-  app.add_flag("--ptpt3-current-nonuc0", options.ptpt3_current_nonuc0,
-               "3D: PTPT3 reference lengths from the network file's nonuc0, or for detected links from "
-               "the positions at the start (PTPT3_UseCurrentNonuc0(1))");
+  app.add_option("--ymin-boundary", options.y_min, described("--ymin-boundary"))->check(kFinite);
+  app.add_option("--ymax-boundary", options.y_max, described("--ymax-boundary"))->check(kFinite);
+  app.add_option("--xmin-boundary", options.x_min, described("--xmin-boundary"))->check(kFinite);
+  app.add_option("--xmax-boundary", options.x_max, described("--xmax-boundary"))->check(kFinite);
+  app.add_option("--xperiod", options.x_period, described("--xperiod"))->check(kFinite & CLI::PositiveNumber);
+  app.add_option("--yperiod", options.y_period, described("--yperiod"))->check(kFinite & CLI::PositiveNumber);
+  app.add_flag("--ptpt3-network", options.ptpt3_network, described("--ptpt3-network"));
+  app.add_flag("--ptpt3-current-nonuc0", options.ptpt3_current_nonuc0, described("--ptpt3-current-nonuc0"));
   std::vector<double> source_point;
   bool source_point_relative = false;
-  app.add_option("--source-point", source_point,
-                 "3D: FIRST RADIUS X Y Z: bodies after FIRST enter one by one at (X, Y, Z), each when the "
-                 "previous one is farther than RADIUS from it (RBDY3_SetSourcePointWithIni)")
+  app.add_option("--source-point", source_point, described("--source-point"))
       ->expected(5)
       ->delimiter(',')
       ->check(kFinite);
@@ -134,8 +115,7 @@ int main(int argc, char** argv) {
                "take the run parameters from DATBOX/COMMAND.DAT even when the case has a command.py (the "
                "legacy driver of LMGC90 before 2025)");
   app.add_flag("-q,--quiet", options.quiet, "no progress line, no warnings but those that refuse the run");
-  app.add_flag("--new-rotation-scheme", options.new_rotation_scheme,
-               "RBDY3: update the principal frame by the Cayley map (RBDY3_NewRotationScheme)");
+  app.add_flag("--new-rotation-scheme", options.new_rotation_scheme, described("--new-rotation-scheme"));
   app.add_flag("--strict", options.strict, "exit 3 when a step stopped at the iteration cap");
   app.set_version_flag("--version",
                        std::string("lmgc-solve ") + LMGC_VERSION + " (revision " + LMGC_REVISION + ")");

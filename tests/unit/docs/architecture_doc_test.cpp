@@ -22,7 +22,8 @@ std::string read(const std::filesystem::path& path) {
 std::string architecture_doc() {
   // Without the code fences (their backticks would pair with the quotes), lines joined, so that a
   // name and its file may sit on two lines of the page.
-  const std::string text = std::regex_replace(read(kRoot / "docs" / "architecture.md"), std::regex("```"), "");
+  const std::string text =
+      std::regex_replace(read(kRoot / "docs" / "architecture.md"), std::regex("```"), "");
   return std::regex_replace(text, std::regex(R"(\s+)"), " ");
 }
 
