@@ -173,8 +173,9 @@ void recup_rloc(RunState2D& state) {
 NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const bool first = !state.laws_initialized && !state.contacts.empty();
-  NlgsResult result = solve_nlgs_2d(scene, scene.bodies, state.contacts, state.law_states, state.h,
-                                    state.time, options, state.step == 1, first, state.scramble);
+  NlgsResult result =
+      solve_nlgs_2d(scene, scene.bodies, state.contacts, state.law_states,
+                    LawStep{state.h, state.time, state.step == 1, first}, options, state.scramble);
   if (!state.contacts.empty()) state.laws_initialized = true;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -252,8 +252,9 @@ void add_impulses(const SweepContact2D& k, double rt, double rn, std::vector<Vec
 }  // namespace
 
 NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray<Interaction2D>& contacts,
-                         std::span<LawState2D> law_states, double h, double time, const NlgsOptions& options,
-                         bool first_step, bool first_preparation, QuickScramble& scramble) {
+                         std::span<LawState2D> law_states, const LawStep& step, const NlgsOptions& options,
+                         QuickScramble& scramble) {
+  const double h = step.h, time = step.time;
   NlgsResult result;
   const std::size_t count = contacts.size();
   std::vector<Vector3d>& v = bodies.velocity;
@@ -306,7 +307,7 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
   constexpr std::size_t kPrefetchSlotsFrom = (512 * 1024) / sizeof(SweepContact2D);
   const bool prefetch_slots = count >= kPrefetchSlotsFrom;
   std::vector<LawTerms2D> terms;
-  const LawStep law_step{h, 0.0, first_step, first_preparation};
+  const LawStep& law_step = step;
   std::vector<std::uint8_t> law_updates_at_check(scene.laws.size());
   bool any_update_at_check = false;
   for (std::size_t l = 0; l < scene.laws.size(); ++l)

@@ -15,11 +15,12 @@ namespace lmgc::solver {
 
 // Builds the Delassus blocks and local problems, starts from the reactions already in
 // `contacts` (warm start), iterates, then sets velocities (bodies.velocity = V_free + M⁻¹ H r),
-// relative velocities and statuses. `first_step`, `first_preparation`: LawStep's. `scramble`: the
+// relative velocities and statuses. `step`: the step as the laws see it (h, the time at its end,
+// whether it is the first step and the run's first preparation with interactions). `scramble`: the
 // run's quick-scramble generator, used when options.quick_scramble. `law_states`: the interactions'
 // internal variables, index for index, or empty in a scene whose laws have none.
 NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray<Interaction2D>& contacts,
-                         std::span<LawState2D> law_states, double h, double time, const NlgsOptions& options,
-                         bool first_step, bool first_preparation, QuickScramble& scramble);
+                         std::span<LawState2D> law_states, const LawStep& step, const NlgsOptions& options,
+                         QuickScramble& scramble);
 
 }  // namespace lmgc::solver
