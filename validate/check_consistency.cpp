@@ -381,13 +381,15 @@ void check_law_families(const CaseFiles& files, grammar::DiagnosticSink& sink) {
     if (!family) continue;  // L2014
     for (const LawFamilies& rule : kLawFamilies) {
       if (rule.law != law.keyword.value || rule.dimension != dimension) continue;
-      if (std::find(rule.families.begin(), rule.families.end(), family->name) != rule.families.end()) break;
-      report_related(sink, "L2018", Location{path, see.law_nickname.span},
-                     fmt::format("law '{}' ({}) cannot serve {} interactions in {}D: LMGC90 stops with 'not "
-                                 "implemented for this contact element' ({})",
-                                 law.nickname.value, law.keyword.value, family->name, dimension, rule.source),
-                     {{defined, "the law is defined here"}},
-                     fmt::format("{} serves {}", law.keyword.value, joined(rule.families)));
+      if (std::find(rule.families.begin(), rule.families.end(), family->interaction) != rule.families.end())
+        break;
+      report_related(
+          sink, "L2018", Location{path, see.law_nickname.span},
+          fmt::format("law '{}' ({}) cannot serve {} interactions in {}D: LMGC90 stops with 'not "
+                      "implemented for this contact element' ({})",
+                      law.nickname.value, law.keyword.value, family->interaction, dimension, rule.source),
+          {{defined, "the law is defined here"}},
+          fmt::format("{} serves {}", law.keyword.value, joined(rule.families)));
       break;
     }
   }

@@ -6,39 +6,14 @@
 namespace lmgc::validate {
 namespace {
 
-// The interaction modules of LMGC90 (state-and-outputs.md §1.4.1-1.4.2, contact-laws.md §1.2).
-constexpr InteractionFamily kFamilies[] = {
-    {"DISKx", "DISKx", "DKDKx", 2}, {"DISKx", "JONCx", "DKJCx", 2}, {"DISKx", "xKSID", "DKKDx", 2},
-    {"DISKx", "POLYG", "DKPLx", 2}, {"POLYG", "POLYG", "PLPLx", 2}, {"POLYG", "JONCx", "PLJCx", 2},
-    {"PT2Dx", "PT2Dx", "PTPT2", 2}, {"CLxxx", "ALpxx", "CLALp", 2}, {"CLxxx", "JONCx", "CLJCx", 2},
-    {"DISKx", "ALpxx", "DKALp", 2}, {"POLYG", "ALpxx", "PLALp", 2}, {"PT2DL", "PT2DL", "P2P2L", 2},
-    {"DISKx", "DISKL", "DKDKL", 2}, {"SPHER", "SPHER", "SPSPx", 3}, {"SPHER", "PLANx", "SPPLx", 3},
-    {"SPHER", "CYLND", "SPCDx", 3}, {"SPHER", "DNLYC", "SPDCx", 3}, {"CYLND", "CYLND", "CDCDx", 3},
-    {"CYLND", "PLANx", "CDPLx", 3}, {"POLYR", "POLYR", "PRPRx", 3}, {"POLYR", "PLANx", "PRPLx", 3},
-    {"POLYR", "ASpxx", "PRASp", 3}, {"CSxxx", "ASpxx", "CSASp", 3}, {"CSxxx", "POLYR", "CSPRx", 3},
-    {"PT3Dx", "PT3Dx", "PTPT3", 3}, {"SPHER", "POLYR", "SPPRx", 3},
-};
-
 std::string pair_key(const std::string& a, const std::string& b) {
   return a < b ? a + "|" + b : b + "|" + a;
 }
 
 }  // namespace
 
-const InteractionFamily* find_interaction_family(std::string_view candidate, std::string_view antagonist) {
-  for (const InteractionFamily& f : kFamilies)
-    if (f.candidate == candidate && f.antagonist == antagonist) return &f;
-  return nullptr;
-}
-
 std::string see_name(const std::string& type) {
-  if (type == "DISKb") return "DISKx";
-  if (type == "SPHEb") return "SPHER";
-  if (type.rfind("CSp", 0) == 0 || type.rfind("CSxx", 0) == 0) return "CSxxx";
-  if (type.rfind("ASp", 0) == 0) return "ASpxx";
-  if (type == "POLYF") return "POLYR";
-  if (type == "PT2TL") return "PT2DL";
-  return type;
+  return std::string(grammar::see_name(type));
 }
 
 std::string see_class(std::string_view body_type, std::string_view see_contactor, std::string_view colour) {

@@ -9,18 +9,17 @@
 
 #include "grammar/bodies/ast.hpp"
 #include "grammar/tact_behav/ast.hpp"
+#include "grammar/tact_behav/contactor_pairs.hpp"
 
 namespace lmgc::validate {
 
-// One interaction family of LMGC90: (candidate contactor, antagonist contactor) as a '$seety'
-// row must name them, and the module name (DKDKx, ...).
-struct InteractionFamily {
-  std::string_view candidate, antagonist, name;
-  int dimension;
-};
-
-// The family of a (candidate, antagonist) pair of '$seety' contactor names, or nullptr.
-const InteractionFamily* find_interaction_family(std::string_view candidate, std::string_view antagonist);
+// The interaction family of a (candidate, antagonist) pair of '$seety' contactor names, or nullptr
+// (the contactor-pair table, grammar/tact_behav/contactor_pairs.hpp).
+using InteractionFamily = grammar::ContactorPair;
+inline const InteractionFamily* find_interaction_family(std::string_view candidate,
+                                                        std::string_view antagonist) {
+  return grammar::find_contactor_pair(candidate, antagonist);
+}
 
 // The name a BODIES.DAT contactor goes by in '$seety' rows (DISKb is a DISKx, MAILx surfaces are
 // CSxxx, ...).

@@ -7,6 +7,7 @@
 #include <map>
 #include <tuple>
 
+#include "grammar/tact_behav/contactor_pairs.hpp"
 #include "solver/detection/pair_geometry_2d.hpp"
 #include "spatial/multilevel_grid.hpp"
 
@@ -20,10 +21,6 @@ Eigen::Matrix2d rotation(double angle) {
   Eigen::Matrix2d R;
   R << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
   return R;
-}
-
-bool is_disk(const std::string& t) {
-  return t == "DISKx" || t == "DISKb";
 }
 
 // The contactor shapes of a family: candidate, antagonist.
@@ -118,23 +115,15 @@ void set_rough_grids(const Scene2D& scene, VisibilityIndex2D& index) {
 }
 
 bool pair_family_of(const std::string& cd, const std::string& an, PairFamily2D& family) {
-  if (is_disk(cd) && is_disk(an))
-    family = PairFamily2D::DKDKx;
-  else if (is_disk(cd) && an == "xKSID")
-    family = PairFamily2D::DKKDx;
-  else if (is_disk(cd) && an == "JONCx")
-    family = PairFamily2D::DKJCx;
-  else if (is_disk(cd) && an == "POLYG")
-    family = PairFamily2D::DKPLx;
-  else if (cd == "PT2Dx" && an == "PT2Dx")
-    family = PairFamily2D::PTPT2;
-  else if (cd == "POLYG" && an == "POLYG")
-    family = PairFamily2D::PLPLx;
-  else if (cd == "POLYG" && an == "JONCx")
-    family = PairFamily2D::PLJCx;
-  else
-    return false;
-  return true;
+  const grammar::ContactorPair* pair =
+      grammar::find_contactor_pair(grammar::see_name(cd), grammar::see_name(an));
+  if (!pair) return false;
+  for (int f = 0; f < kPairFamily2DCount; ++f)
+    if (pair_family_name(static_cast<PairFamily2D>(f)) == pair->interaction) {
+      family = static_cast<PairFamily2D>(f);
+      return true;
+    }
+  return false;  // a pair of LMGC90's that the rigid 2D solver does not detect
 }
 
 VisibilityIndex2D build_visibility_index(const Scene2D& scene) {

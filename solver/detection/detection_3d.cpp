@@ -32,11 +32,6 @@ double wrapped(double x, double period) {
   return r < 0.0 ? r + period : r;
 }
 
-// SPHEb is a sphere of a cluster: TACT_BEHAV.DAT rows name it SPHER.
-std::string_view seen_as(const std::string& type) {
-  return type == "SPHEb" ? std::string_view("SPHER") : std::string_view(type);
-}
-
 // LMGC90's sweep order of the 3D families (mod_nlgs_3D prep_nlgs): SPSPx, SPPLx, SPPRx, SPCDx, SPDCx,
 // PRPLx, PRPRx, PTPT3, CDCDx, CDPLx.
 constexpr std::array<std::uint8_t, kPairFamily3DCount> kSweepRank = [] {
@@ -250,7 +245,7 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
   std::vector<std::pair<std::string_view, std::string_view>> classes;
   for (std::size_t k = 0; k < n; ++k) {
     const Contactor3D& c = scene.contactors[k];
-    const std::pair<std::string_view, std::string_view> name(seen_as(c.type), c.color);
+    const std::pair<std::string_view, std::string_view> name(grammar::see_name(c.type), c.color);
     const auto it = std::find(classes.begin(), classes.end(), name);
     class_of[k] = static_cast<std::int32_t>(it - classes.begin());
     if (it == classes.end()) classes.push_back(name);

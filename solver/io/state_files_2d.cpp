@@ -36,29 +36,7 @@ grammar::DofFile dof_file_2d(const Scene2D& scene, const RunState2D& state) {
   return file;
 }
 
-namespace {
-
-std::string_view family_name(PairFamily2D f) {
-  switch (f) {
-    case PairFamily2D::DKDKx:
-      return "DKDKx";
-    case PairFamily2D::DKKDx:
-      return "DKKDx";
-    case PairFamily2D::DKJCx:
-      return "DKJCx";
-    case PairFamily2D::DKPLx:
-      return "DKPLx";
-    case PairFamily2D::PTPT2:
-      return "PTPT2";
-    case PairFamily2D::PLPLx:
-      return "PLPLx";
-    case PairFamily2D::PLJCx:
-      return "PLJCx";
-  }
-  return "DKDKx";
-}
-
-}  // namespace
+namespace {}  // namespace
 
 grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& state) {
   using grammar::Integer;
@@ -82,7 +60,7 @@ grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& 
     for (std::size_t k = 0; k < state.contacts.size(); ++k)
       if (state.contacts[k].family == family) members.push_back(k);
     if (members.empty()) continue;
-    const grammar::InteractionKind* kind = grammar::find_interaction_kind(family_name(family));
+    const grammar::InteractionKind* kind = grammar::find_interaction_kind(pair_family_name(family));
     std::map<std::int32_t, std::int64_t> adjacency;  // running count per candidate contactor
     std::vector<std::int64_t> iadj(members.size());
     for (std::size_t m = 0; m < members.size(); ++m)

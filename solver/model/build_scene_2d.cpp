@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "grammar/tact_behav/contactor_pairs.hpp"
 #include "grammar/tact_behav/law_catalogue.hpp"
 #include "grammar/tact_behav/see_table.hpp"
 #include "solver/bodies/lmgc_pi.hpp"
@@ -158,9 +159,9 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
   for (const grammar::SeeEntry& see : grammar::lmgc90_see_order(in.tact_behav->sees)) {
     if (see.candidate_body.value != "RBDY2" || see.antagonist_body.value != "RBDY2") continue;
     Visibility2D v;
-    v.candidate_type = see.candidate_contactor.value == "DISKb" ? "DISKx" : see.candidate_contactor.value;
+    v.candidate_type = grammar::see_name(see.candidate_contactor.value);
     v.candidate_color = see.candidate_colour.value;
-    v.antagonist_type = see.antagonist_contactor.value == "DISKb" ? "DISKx" : see.antagonist_contactor.value;
+    v.antagonist_type = grammar::see_name(see.antagonist_contactor.value);
     v.antagonist_color = see.antagonist_colour.value;
     v.law_nickname = see.law_nickname.value;
     v.alert = see.alert.value;

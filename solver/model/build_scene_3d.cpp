@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "grammar/tact_behav/contactor_pairs.hpp"
 #include "grammar/tact_behav/see_table.hpp"
 #include "solver/bodies/rigid_3d_properties.hpp"
 #include "solver/detection/point_contact.hpp"
@@ -176,9 +177,9 @@ bool build_scene_3d(const SceneInput3D& in, Scene3D& scene, grammar::DiagnosticS
   for (const grammar::SeeEntry& see : grammar::lmgc90_see_order(in.tact_behav->sees)) {
     if (see.candidate_body.value != "RBDY3" || see.antagonist_body.value != "RBDY3") continue;
     Visibility3D v;
-    v.candidate_type = see.candidate_contactor.value == "SPHEb" ? "SPHER" : see.candidate_contactor.value;
+    v.candidate_type = grammar::see_name(see.candidate_contactor.value);
     v.candidate_color = see.candidate_colour.value;
-    v.antagonist_type = see.antagonist_contactor.value == "SPHEb" ? "SPHER" : see.antagonist_contactor.value;
+    v.antagonist_type = grammar::see_name(see.antagonist_contactor.value);
     v.antagonist_color = see.antagonist_colour.value;
     v.alert = see.alert.value;
     if (!pair_family_3d(v.candidate_type, v.antagonist_type, v.family)) {

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
+#include <string_view>
 
 #include "solver/model/contact_status.hpp"
 
@@ -12,6 +13,27 @@ namespace lmgc::solver {
 // 2D interaction families, in the order LMGC90 sweeps and writes them (numerics.md §4 step 2:
 // DKDKx, DKKDx, DKJCx, DKPLx, PTPT2, PLPLx, PLJCx).
 enum class PairFamily2D : std::uint8_t { DKDKx, DKKDx, DKJCx, DKPLx, PTPT2, PLPLx, PLJCx };
+
+// The family's name: its interaction module, as the contactor-pair table and Vloc_Rloc files name it.
+constexpr std::string_view pair_family_name(PairFamily2D family) {
+  switch (family) {
+    case PairFamily2D::DKDKx:
+      return "DKDKx";
+    case PairFamily2D::DKKDx:
+      return "DKKDx";
+    case PairFamily2D::DKJCx:
+      return "DKJCx";
+    case PairFamily2D::DKPLx:
+      return "DKPLx";
+    case PairFamily2D::PTPT2:
+      return "PTPT2";
+    case PairFamily2D::PLPLx:
+      return "PLPLx";
+    case PairFamily2D::PLJCx:
+      return "PLJCx";
+  }
+  return "";
+}
 inline constexpr int kPairFamily2DCount = 7;
 static_assert(static_cast<int>(PairFamily2D::PLJCx) + 1 == kPairFamily2DCount);
 

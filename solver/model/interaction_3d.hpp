@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "grammar/tact_behav/contactor_pairs.hpp"
 #include "solver/model/contact_status.hpp"
 
 namespace lmgc::solver {
@@ -56,24 +57,16 @@ constexpr std::string_view pair_family_name(PairFamily3D family) {
   return "";
 }
 
-// The family of a (candidate, antagonist) contactor type pair as `$seety` names them; false for
-// pairs the rigid 3D solver does not detect.
+// The family of a (candidate, antagonist) contactor type pair (the contactor-pair table,
+// grammar/tact_behav/contactor_pairs.hpp); false for pairs the rigid 3D solver does not detect.
 inline bool pair_family_3d(const std::string& candidate, const std::string& antagonist,
                            PairFamily3D& family) {
-  struct Row {
-    const char* candidate;
-    const char* antagonist;
-    PairFamily3D family;
-  };
-  static constexpr Row kRows[] = {
-      {"SPHER", "SPHER", PairFamily3D::SPSPx}, {"SPHER", "PLANx", PairFamily3D::SPPLx},
-      {"POLYR", "POLYR", PairFamily3D::PRPRx}, {"POLYR", "PLANx", PairFamily3D::PRPLx},
-      {"SPHER", "CYLND", PairFamily3D::SPCDx}, {"CYLND", "CYLND", PairFamily3D::CDCDx},
-      {"CYLND", "PLANx", PairFamily3D::CDPLx}, {"SPHER", "DNLYC", PairFamily3D::SPDCx},
-      {"PT3Dx", "PT3Dx", PairFamily3D::PTPT3}, {"SPHER", "POLYR", PairFamily3D::SPPRx}};
-  for (const Row& row : kRows)
-    if (candidate == row.candidate && antagonist == row.antagonist) {
-      family = row.family;
+  const grammar::ContactorPair* pair =
+      grammar::find_contactor_pair(grammar::see_name(candidate), grammar::see_name(antagonist));
+  if (!pair) return false;
+  for (int f = 0; f < kPairFamily3DCount; ++f)
+    if (pair_family_name(static_cast<PairFamily3D>(f)) == pair->interaction) {
+      family = static_cast<PairFamily3D>(f);
       return true;
     }
   return false;
