@@ -740,25 +740,14 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
       if (normal_only) {
         // 'QuaN ': normal components only.
         const double dvdv = dvn * dvn, wrr = 0.5 * c.wnn() * (r1n * r1n + r2n * r2n);
-        sums.dvdv += dvdv;
-        sums.max_dvdv = std::max(sums.max_dvdv, dvdv);
-        sums.dvdvrr += dvdv * mn * mn;
-        sums.max_dvdvrr = std::max(sums.max_dvdvrr, dvdv * mn * mn);
-        sums.dvor += mn * dvn;
-        sums.wrr += wrr;
-        sums.wrwr += c.wnn() * wrr;
+        sums.add(dvdv, dvdv * mn * mn, mn * dvn, wrr, c.wnn() * wrr);
         continue;
       }
       const double dvdv = dvt * dvt + dvn * dvn, rr = mt * mt + mn * mn;
-      sums.dvdv += dvdv;
-      sums.max_dvdv = std::max(sums.max_dvdv, dvdv);
-      sums.dvdvrr += dvdv * rr;
-      sums.max_dvdvrr = std::max(sums.max_dvdvrr, dvdv * rr);
-      sums.dvor += mt * dvt + mn * dvn;
       const Vector2d w1 = w_times(c, r1t, r1n), w2 = w_times(c, r2t, r2n);
       const double w1t = w1.x(), w1n = w1.y(), w2t = w2.x(), w2n = w2.y();
-      sums.wrr += 0.5 * (w1t * r1t + w1n * r1n + w2t * r2t + w2n * r2n);
-      sums.wrwr += 0.5 * (w1t * w1t + w1n * w1n + w2t * w2t + w2n * w2n);
+      sums.add(dvdv, dvdv * rr, mt * dvt + mn * dvn, 0.5 * (w1t * r1t + w1n * r1n + w2t * r2t + w2n * r2n),
+               0.5 * (w1t * w1t + w1n * w1n + w2t * w2t + w2n * w2n));
     }
     result.residual_absolute = std::sqrt(residual2);
     result.residual_relative = result.free_velocity_norm > 0.0

@@ -241,14 +241,9 @@ NlgsResult solve_contacts(Scene3D& scene, RunState3D& state, const NlgsOptions& 
       const double rr = mean_r.squaredNorm();
       if (rr == 0.0) continue;
       sums.active += 1.0;
-      sums.dvdv += dvdv;
-      sums.max_dvdv = std::max(sums.max_dvdv, dvdv);
-      sums.dvdvrr += dvdv * rr;
-      sums.max_dvdvrr = std::max(sums.max_dvdvrr, dvdv * rr);
-      sums.dvor += mean_r.dot(dv);
       const Vector3d wr = c.W * c.r, wr_check = c.W * r_check;
-      sums.wrr += 0.5 * (wr.dot(c.r) + wr_check.dot(r_check));
-      sums.wrwr += 0.5 * (wr.squaredNorm() + wr_check.squaredNorm());
+      sums.add(dvdv, dvdv * rr, mean_r.dot(dv), 0.5 * (wr.dot(c.r) + wr_check.dot(r_check)),
+               0.5 * (wr.squaredNorm() + wr_check.squaredNorm()));
     }
     result.norms = nlgs_norms(sums, tol);
     if (!std::isfinite(result.norms.mean_dvor) || !std::isfinite(result.norms.quad_dv)) {

@@ -2,6 +2,7 @@
 // What both NLGS (2D and 3D) share: LMGC90's convergence check of a sweep
 // (numerics.md §4.1: sums over the contacts → normalised norms → the test of the chosen norm),
 // and the result of a solve.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 
@@ -55,6 +56,18 @@ struct NlgsResult {
 struct NlgsCheckSums {
   double dvdv = 0, max_dvdv = 0, dvdvrr = 0, max_dvdvrr = 0, dvor = 0, wrr = 0, wrwr = 0;
   double active = 0;
+  // One contact's terms, as each dimension's check forms them from its two reactions R (current)
+  // and R' (the check's solve), their mean R̄ and ΔV = W (R − R'): |ΔV|², |ΔV|² |R̄|², R̄·ΔV, the
+  // mean of R·WR and of |WR|² over the two. The 2D and 3D NLGS and their checks sum here.
+  void add(double dvdv_term, double dvdvrr_term, double dvor_term, double wrr_term, double wrwr_term) {
+    dvdv += dvdv_term;
+    max_dvdv = std::max(max_dvdv, dvdv_term);
+    dvdvrr += dvdvrr_term;
+    max_dvdvrr = std::max(max_dvdvrr, dvdvrr_term);
+    dvor += dvor_term;
+    wrr += wrr_term;
+    wrwr += wrwr_term;
+  }
 };
 
 // LMGC90's norms from the sums, divided by the tolerance (0.111e-11 each when nothing is active).
