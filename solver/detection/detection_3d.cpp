@@ -209,6 +209,42 @@ class LmgcOrder3D {
 
 }  // namespace
 
+void update_visibility_index_3d(const Scene3D& scene, VisibilityIndex3D& index) {
+  const std::size_t n = scene.contactors.size();
+  if (index.built && index.contactors == n && index.rows == scene.visibility.size()) return;
+  index.class_of.assign(n, 0);
+  std::vector<std::pair<std::string_view, std::string_view>> classes;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Contactor3D& c = scene.contactors[k];
+    const std::pair<std::string_view, std::string_view> name(grammar::see_name(c.type), c.color);
+    const auto it = std::find(classes.begin(), classes.end(), name);
+    index.class_of[k] = static_cast<std::int32_t>(it - classes.begin());
+    if (it == classes.end()) classes.push_back(name);
+  }
+  const std::size_t class_count = classes.size();
+  // Two contactors of one type (SPSPx, PRPRx, CDCDx) read a row either way round, the first that
+  // names their colours (mod_tact_behav get_isee_specific), and the lower index stays the candidate.
+  index.row.assign(class_count * class_count, -1);
+  for (std::size_t a = 0; a < class_count; ++a)
+    for (std::size_t c = 0; c < class_count; ++c)
+      for (std::size_t r = 0; r < scene.visibility.size(); ++r) {
+        const Visibility3D& v = scene.visibility[r];
+        const bool direct = classes[a].first == v.candidate_type && classes[a].second == v.candidate_color &&
+                            classes[c].first == v.antagonist_type && classes[c].second == v.antagonist_color;
+        const bool turned = v.candidate_type == v.antagonist_type && classes[a].first == v.candidate_type &&
+                            classes[c].first == v.candidate_type && classes[a].second == v.antagonist_color &&
+                            classes[c].second == v.candidate_color;
+        if (direct || turned) {
+          index.row[a * class_count + c] = static_cast<std::int32_t>(r);
+          break;
+        }
+      }
+  index.class_count = class_count;
+  index.contactors = n;
+  index.rows = scene.visibility.size();
+  index.built = true;
+}
+
 void select_prox_tactors(Scene3D& scene, RunState3D& state) {
   RigidBodies3D& b = scene.bodies;
   const double h = state.h, theta = state.theta;
@@ -238,40 +274,10 @@ void select_prox_tactors(Scene3D& scene, RunState3D& state) {
     radii[k] = c.bounding_radius;
     placed[k] = c.shape != ContactorShape3D::point && b.visible[body];
   }
-  // The visibility row of an ordered (candidate, antagonist) pair, -1 if none: contactors are grouped
-  // by (type as `$seety` names it, colour) once, and rows looked up in a class × class table (the
-  // string comparisons per grid pair were a tenth of large steps).
-  std::vector<std::int32_t> class_of(n);
-  std::vector<std::pair<std::string_view, std::string_view>> classes;
-  for (std::size_t k = 0; k < n; ++k) {
-    const Contactor3D& c = scene.contactors[k];
-    const std::pair<std::string_view, std::string_view> name(grammar::see_name(c.type), c.color);
-    const auto it = std::find(classes.begin(), classes.end(), name);
-    class_of[k] = static_cast<std::int32_t>(it - classes.begin());
-    if (it == classes.end()) classes.push_back(name);
-  }
-  const std::size_t class_count = classes.size();
-  // Two contactors of one type (SPSPx, PRPRx, CDCDx) read a row either way round, the first that
-  // names their colours (mod_tact_behav get_isee_specific), and the lower index stays the candidate.
-  std::vector<std::int32_t> row_table(class_count * class_count, -1);
-  for (std::size_t a = 0; a < class_count; ++a)
-    for (std::size_t c = 0; c < class_count; ++c)
-      for (std::size_t r = 0; r < scene.visibility.size(); ++r) {
-        const Visibility3D& v = scene.visibility[r];
-        const bool direct = classes[a].first == v.candidate_type && classes[a].second == v.candidate_color &&
-                            classes[c].first == v.antagonist_type && classes[c].second == v.antagonist_color;
-        const bool turned = v.candidate_type == v.antagonist_type && classes[a].first == v.candidate_type &&
-                            classes[c].first == v.candidate_type && classes[a].second == v.antagonist_color &&
-                            classes[c].second == v.candidate_color;
-        if (direct || turned) {
-          row_table[a * class_count + c] = static_cast<std::int32_t>(r);
-          break;
-        }
-      }
-  const auto row_of = [&](std::size_t cd, std::size_t an) {
-    return row_table[static_cast<std::size_t>(class_of[cd]) * class_count +
-                     static_cast<std::size_t>(class_of[an])];
-  };
+  // The visibility row of an ordered (candidate, antagonist) pair, -1 if none.
+  update_visibility_index_3d(scene, state.visibility);
+  const VisibilityIndex3D& visibility = state.visibility;
+  const auto row_of = [&](std::size_t cd, std::size_t an) { return visibility.row_of(cd, an); };
   // POLYR vertices and face normals at the detection configuration, one flat array each.
   std::vector<PlacedPolyhedron> placed_polyhedron(n);
   std::vector<Vector3d> polyhedron_vertices, polyhedron_normals;

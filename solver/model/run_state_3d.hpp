@@ -1,6 +1,7 @@
 #pragma once
 // What a rigid 3D run carries from stage to stage and from step to step: time, the step's
 // interactions and their law states, the verlet list of the last step.
+#include "solver/detection/visibility_index_3d.hpp"
 #include "solver/model/interaction_3d.hpp"
 #include "solver/model/large_array.hpp"
 #include "solver/nlgs/quick_scramble.hpp"
@@ -20,6 +21,7 @@ struct RunState3D {
   // Detection's points before sorting, kept from step to step for its memory: a list built afresh
   // would take new pages from the system, for the kernel to fault in, at every step on large scenes.
   LargeArray<DetectedPoint3D> detected;
+  VisibilityIndex3D visibility;   // built at the first detection
   bool laws_initialized = false;  // a step with interactions has been solved (LawStep::first_step)
   QuickScramble scramble;         // the sweep order's random lists, step after step
 };
