@@ -9,6 +9,7 @@
 
 #include "grammar/bodies/contactor_catalogue.hpp"
 #include "grammar/postpro/catalogue.hpp"
+#include "grammar/tact_behav/contactor_pairs.hpp"
 #include "grammar/tact_behav/law_catalogue.hpp"
 #include "solver/io/postpro_2d.hpp"
 #include "solver/io/postpro_3d.hpp"
@@ -52,6 +53,59 @@ std::string expected_tables() {
            (k.available_in(3) ? yes_no(known && Postpro3D::provides(kind)) : "—") + " |\n";
   }
   return out;
+}
+
+// The README's summary of the same tables: what lmgc-solve runs, out of what LMGC90 has, per dimension.
+std::string expected_summary() {
+  int contactors[2] = {0, 0}, contactors_all[2] = {0, 0};
+  for (const grammar::ContactorKind& k : grammar::contactor_catalogue()) {
+    if (!k.guide_only.empty()) continue;
+    if (k.bodies & grammar::kOnRbdy2) ++contactors_all[0], contactors[0] += runs_contactor_2d(k.keyword);
+    if (k.bodies & grammar::kOnRbdy3) ++contactors_all[1], contactors[1] += runs_contactor_3d(k.keyword);
+  }
+  int pairs[2] = {0, 0}, pairs_all[2] = {0, 0};
+  for (const grammar::ContactorPair& p : grammar::contactor_pairs()) {
+    const int d = p.dimension == 2 ? 0 : 1;
+    ++pairs_all[d];
+    PairFamily2D family_2d;
+    PairFamily3D family_3d;
+    pairs[d] += d == 0 ? pair_family_of(std::string(p.candidate), std::string(p.antagonist), family_2d)
+                       : pair_family_3d(std::string(p.candidate), std::string(p.antagonist), family_3d);
+  }
+  int laws[2] = {0, 0}, laws_all = 0;
+  for (const grammar::LawKind& k : grammar::law_catalogue()) {
+    if (!k.readable) continue;
+    ++laws_all;
+    ContactLaw law;
+    const bool known = law_from_card(k.keyword, {}, law);
+    laws[0] += known && provided_in_2d(law);
+    laws[1] += known && provided_in_3d(law);
+  }
+  int postpro[2] = {0, 0}, postpro_all[2] = {0, 0};
+  for (const grammar::PostproCommandKind& k : grammar::postpro_catalogue()) {
+    PostproKind2D kind;
+    const bool known = postpro_kind_of(k.name, kind);
+    if (k.available_in(2)) ++postpro_all[0], postpro[0] += known;
+    if (k.available_in(3)) ++postpro_all[1], postpro[1] += known && Postpro3D::provides(kind);
+  }
+  const auto of = [](int n, int all) { return std::to_string(n) + " of " + std::to_string(all); };
+  std::string out = "| lmgc-solve runs | rigid 2D (RBDY2) | rigid 3D (RBDY3) |\n| --- | --- | --- |\n";
+  out += "| contactors | " + of(contactors[0], contactors_all[0]) + " | " +
+         of(contactors[1], contactors_all[1]) + " |\n";
+  out += "| contactor pairs | " + of(pairs[0], pairs_all[0]) + " | " + of(pairs[1], pairs_all[1]) + " |\n";
+  out += "| contact laws | " + of(laws[0], laws_all) + " | " + of(laws[1], laws_all) + " |\n";
+  out += "| POSTPRO commands | " + of(postpro[0], postpro_all[0]) + " | " + of(postpro[1], postpro_all[1]) +
+         " |\n";
+  return out;
+}
+
+TEST(SupportDoc, ReadmeSummarisesWhatLmgcSolveRunsAsTheCodeDoes) {
+  const std::string readme = test::read_file(std::filesystem::path(LMGC_SOURCE_DIR) / "README.md");
+  const std::string summary = expected_summary();
+  const bool listed = readme.find(summary) != std::string::npos;
+  if (!listed) std::ofstream(test::scratch_dir("support_doc") / "readme.summary.md") << summary;
+  EXPECT_TRUE(listed) << "README.md does not hold the generated summary (written to "
+                         "test_scratch/support_doc/readme.summary.md)";
 }
 
 TEST(SupportDoc, ListsWhatLmgcSolveRunsAsTheCodeDoes) {
