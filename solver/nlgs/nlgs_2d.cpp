@@ -249,27 +249,202 @@ void add_impulses(const SweepContact2D& k, double rt, double rn, std::vector<Vec
   impulse[static_cast<std::size_t>(k.an)] -= f + Vector3d(0, 0, rt * k.gan_t() + rn * k.gan_n());
 }
 
-}  // namespace
+// The sweep arrays and the group lists outlive a solve (one set per thread), so that a large scene
+// keeps their pages, huge ones where the kernel gives them (large_array.hpp), and a small scene's
+// step does not allocate them again.
+// The sweep runs segment after segment: the groups [groups_end of the previous segment,
+// groups_end), then the updates alone at scalar_positions [scalar_end of the previous, scalar_end).
+struct SweepSegment {
+  std::uint32_t groups_end, scalar_end;
+};
+struct SweepArrays2D {
+  LargeArray<SweepContact2D> hot, hot_spare;
+  LargeArray<ContactReaction2D> reaction, reaction_spare;
+  LargeArray<ContactStatus> final_status;  // by slot, from the post pass
+  LargeArray<OpenContactTest2D> open_test;
+  DueVisits due_visits;
+  std::vector<SweepGroup2D> groups;
+  std::vector<SweepSegment> segments;
+  std::vector<std::uint32_t> scalar_positions;
+  std::vector<std::uint32_t>
+      pending_stamp;  // by body: the serial of the pending group while it holds the body
+  std::vector<Vector3d> velocity_before_post;
+};
+SweepArrays2D& sweep_arrays() {
+  thread_local SweepArrays2D arrays;
+  return arrays;
+}
 
-NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray<Interaction2D>& contacts,
-                         std::span<LawState2D> law_states, const LawStep& step, const NlgsOptions& options,
-                         QuickScramble& scramble) {
-  const double h = step.h, time = step.time;
-  NlgsResult result;
-  const std::size_t count = contacts.size();
-  std::vector<Vector3d>& v = bodies.velocity;
-  const std::vector<Vector3d>& inverse_mass = bodies.inverse_mass;
+// The NLGS of one step, as LMGC90's ExSolver runs it: set-up, blocks of gs_it1 sweeps each ended by
+// a check, the post sweep, the end of the step. Its fields are the solve's state, shared by the
+// stages; the kernels (a contact's local solve, its relative velocity, the injection of its
+// reaction) are the 2D rigid ones above.
+struct Nlgs2D {
+  Nlgs2D(const Scene2D& scene_, RigidBodies2D& bodies_, LargeArray<Interaction2D>& contacts_,
+         std::span<LawState2D> law_states_, const LawStep& step_, const NlgsOptions& options_,
+         QuickScramble& scramble_)
+      : scene(scene_),
+        bodies(bodies_),
+        contacts(contacts_),
+        law_states(law_states_),
+        law_step(step_),
+        options(options_),
+        scramble(scramble_),
+        h(step_.h),
+        time(step_.time),
+        count(contacts_.size()),
+        v(bodies_.velocity),
+        inverse_mass(bodies_.inverse_mass),
+        order(count),
+        slot(count),
+        prefetch_slots(count >= kPrefetchSlotsFrom),
+        law_updates_at_check(scene_.laws.size()),
+        keeps_law_state(!law_states_.empty()),
+        relax(options_.relax),
+        keep(1.0 - options_.relax),
+        relaxed(relax != 1.0),
+        use_groups(options_.vector_sweeps && count >= 4 && sweep_groups_available()),
+        due_visits_fit(count >= options_.due_visits_from && options_.gs_it1 > 0 &&
+                       DueVisits::ring_length(options_.gs_it1) <= 64),
+        stored_delassus(options_.storage == NlgsStorage::stored_delassus_loops) {}
 
-  // The sweeps run the updates in wavefront order (sweep_wavefront.hpp: the same result bit for bit,
-  // consecutive updates seldom sharing a body), and the two sweep arrays are laid out in that order,
-  // so that a sweep reads memory in sequence. The set-up writes each contact's records at its slot,
-  // and the passes in contact order (the checks, the end of the step) read them there, so their sums
-  // keep their order; the arrays are permuted only when the quick scramble changes the order, not
-  // gathered into the order before every block and scattered back after it.
-  std::vector<std::uint32_t> order(count), execution, slot(count);
-  std::iota(order.begin(), order.end(), 0u);
-  SweepWavefront wavefront;
-  auto reorder = [&] {
+  NlgsResult run() {
+    set_up();
+
+    if (count > 0) {
+      for (int block = 0; block < options.gs_it2; ++block) {
+        const auto sweeps_start = std::chrono::steady_clock::now();
+        if (options.quick_scramble) scramble_order();
+        // Where less than a quarter of the updates form groups, the plain loop: forming the groups (a
+        // pass over every contact's record) and running the others through the segment lists cost more
+        // than the groups save. Only loaded contacts form groups: with fewer than a quarter loaded, none
+        // are formed.
+        constexpr std::size_t quarter = 4;  // share of the updates below which the plain loop runs
+        // The previous block's groups serve again while the contacts with a reaction are about as
+        // many as when they were formed (within 1/16) and the order has not changed (no quick
+        // scramble): which contacts share a body does not change within a step, so a group still runs
+        // updates that commute with the ones between, and a lane that has lost its reaction is left to
+        // the scalar update, as within a block; a contact that has gained one runs alone. The same
+        // iterates bit for bit, without a pass over every contact's record to form them again.
+        const bool reuse_groups =
+            grouped && !options.quick_scramble &&
+            16 * std::max(loaded, loaded_at_formation) <= 17 * std::min(loaded, loaded_at_formation);
+        if (!reuse_groups) {
+          grouped = false;
+          if (use_groups && quarter * loaded >= count) {
+            form_groups();
+            loaded_at_formation = loaded;
+            grouped = quarter * (4 * groups.size()) >= count;
+            prefetch_groups = groups.size() >= kPrefetchGroupsFrom;
+          }
+        }
+        if (!grouped && due_visits_fit) {
+          due_visits.start_block(count, static_cast<std::int32_t>(result.iterations), options.gs_it1);
+          for (int i = 0; i < options.gs_it1; ++i) sweep(std::false_type{}, std::true_type{});
+        } else {
+          for (int i = 0; i < options.gs_it1; ++i) sweep(std::false_type{}, std::false_type{});
+        }
+        result.sweep_seconds +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - sweeps_start).count();
+        result.converged = check();
+        loaded = result.active;
+        if (result.converged || result.diverged) break;
+      }
+    } else {
+      result.converged = true;
+    }
+    post();
+    end_of_step();
+    return result;
+  }
+
+  // Prep: Delassus blocks, the laws' local problems, the sweep arrays; V = V_free + M⁻¹ H r_warm.
+  void set_up() {
+    std::iota(order.begin(), order.end(), 0u);
+    reorder();
+    hot.assign(count, SweepContact2D{});
+    open_test.resize(count);
+    reaction.assign(count, ContactReaction2D{});
+    final_status.assign(count, ContactStatus::noctc);
+    for (std::size_t l = 0; l < scene.laws.size(); ++l)
+      any_update_at_check |= (law_updates_at_check[l] = updates_at_check(scene.laws[l].law)) != 0;
+    v = bodies.velocity_free;
+    double q2 = 0.0;
+    // The law's local problem is built beside each interaction, which keeps what the law changed.
+    LocalProblem2D c;
+    for (std::size_t a = 0; a < count; ++a) {
+      static_cast<Interaction2D&>(c) = contacts[a];
+      c.internal = keeps_law_state ? law_states[a].internal : std::array<double, 6>{};
+      const ContactLaw& law = scene.laws[static_cast<std::size_t>(c.law)].law;
+      c.W = delassus_block(c, inverse_mass);
+      prepare_local_problem_2d(law, c, law_step);
+      if (c.inactive) c.r.setZero();
+      contacts[a] = c;
+      if (keeps_law_state) law_states[a].internal = c.internal;
+      if (prefetch_slots) {
+        prefetch_gathered<true>(hot, slot, a);
+        prefetch_gathered<true>(reaction, slot, a);
+        prefetch_gathered<true>(open_test, slot, a);
+      }
+      SweepContact2D& k = hot[slot[a]];
+      k.cd = c.candidate_body;
+      k.an = c.antagonist_body;
+      k.normal = c.normal;
+      k.lever_cd = c.lever_candidate;
+      k.lever_an = c.lever_antagonist;
+      k.w_t = Vector2d(c.W(0, 0), c.W(0, 1));
+      k.w_nn = c.W(1, 1);
+      k.cov_n = c.covfree(1);
+      k.mu = c.mu;
+      k.inverse = signorini_coulomb_reciprocals_2d(k.wtt(), k.wtn(), k.wnn(), k.mu);
+      // The flags tested below from these locals: read back from `l`, whose three bytes were just
+      // stored one by one, they would be loaded as one word that has to wait for the stores.
+      const bool glued = std::holds_alternative<CoupledDof>(law),
+                 wet = std::holds_alternative<IqsWetDsClb>(law);
+      LawTerms2D l;
+      l.glued = glued;
+      l.wet = wet;
+      l.cohesive = c.cohesive;
+      l.wwtt = c.WW(0, 0);
+      l.wwnn = c.WW(1, 1);
+      l.cor_t = c.correction(0);
+      l.cor_n = c.correction(1);
+      l.kt = c.cohesive_slope(0);
+      l.kn = c.cohesive_slope(1);
+      l.radh_t = c.cohesive_shift_t;
+      l.cov_t = c.covfree(0);
+      const bool plain_but_shift = !glued && !wet && !c.cohesive && l.wwtt == k.wtt() && l.wwnn == k.wnn() &&
+                                   l.cor_t == 0.0 && l.cor_n == 0.0;
+      l.shift_only = plain_but_shift;
+      if (l.cohesive) prepare_cohesive_terms(k.wtn(), l);
+      if (c.inactive) {
+        k.law_terms = SweepContact2D::inactive_contact;  // no law term is read for it
+      } else if (plain_but_shift && l.cov_t == 0.0) {
+        k.zero_shift_t = static_cast<float>(l.cov_t);  // exact, sign included
+      } else {
+        k.law_terms = static_cast<std::int32_t>(terms.size());
+        terms.push_back(l);
+      }
+      open_test[slot[a]] = OpenContactTest2D::of(k);
+      ContactReaction2D& s = reaction[slot[a]];
+      s.rt = c.r(0);
+      s.rn = c.r(1);
+      loaded += s.rt != 0.0 || s.rn != 0.0;
+      // ‖q‖: free local velocities of the problem (law shifts included), fc3d/FORMAT.md §3.
+      q2 += (relative_velocity(k, bodies.velocity_free.data()) + c.covfree).squaredNorm();
+    }
+    inject_all();
+    result.free_velocity_norm = std::sqrt(q2);
+    if (options.quick_scramble) scramble.prepare(count);
+  }
+
+  // The sweeps run the updates in wavefront order (sweep_wavefront.hpp: the same result bit for
+  // bit, consecutive updates seldom sharing a body), and the two sweep arrays are laid out in that
+  // order, so that a sweep reads memory in sequence. The set-up writes each contact's records at its
+  // slot, and the passes in contact order (the checks, the end of the step) read them there, so their
+  // sums keep their order; the arrays are permuted only when the quick scramble changes the order,
+  // not gathered into the order before every block and scattered back after it.
+  void reorder() {
     wavefront.reorder(
         order,
         [&](std::uint32_t a) {
@@ -283,104 +458,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
         [&](std::int32_t i) { return !inverse_mass[static_cast<std::size_t>(i)].isZero(0.0); }, bodies.size(),
         execution);
     for (std::size_t p = 0; p < count; ++p) slot[execution[p]] = static_cast<std::uint32_t>(p);
-  };
-  reorder();
-
-  // Prep: Delassus blocks, the laws' local problems, the sweep arrays; V = V_free + M⁻¹ H r_warm.
-  // The sweep arrays outlive the call (one set per thread), so that a large scene keeps their pages,
-  // huge ones where the kernel gives them (large_array.hpp), instead of new ones at every step.
-  thread_local LargeArray<SweepContact2D> hot, hot_spare;
-  thread_local LargeArray<ContactReaction2D> reaction, reaction_spare;
-  thread_local LargeArray<ContactStatus> final_status;  // by slot, from the post pass
-  thread_local LargeArray<OpenContactTest2D> open_test;
-  hot.assign(count, SweepContact2D{});
-  open_test.resize(count);
-  reaction.assign(count, ContactReaction2D{});
-  final_status.assign(count, ContactStatus::noctc);
-  // The passes in contact order (the set-up, the injections, the checks, the end of the step) read
-  // the sweep records at each contact's slot. In a square box of disks a window's wavefront levels
-  // interleave two or three rows, so from one contact to the next the slot moves on by 1, 3 or 5
-  // records, a pattern the hardware prefetcher does not keep up with: the end pass's first read of a
-  // record and the set-up's first store wait on memory. So those passes ask for the records
-  // kPrefetchAhead contacts on, once the sweep records outgrow half of a core's L2 (below that they
-  // are in L2, and the prefetches are instructions spent).
-  constexpr std::size_t kPrefetchSlotsFrom = (512 * 1024) / sizeof(SweepContact2D);
-  const bool prefetch_slots = count >= kPrefetchSlotsFrom;
-  std::vector<LawTerms2D> terms;
-  const LawStep& law_step = step;
-  std::vector<std::uint8_t> law_updates_at_check(scene.laws.size());
-  bool any_update_at_check = false;
-  for (std::size_t l = 0; l < scene.laws.size(); ++l)
-    any_update_at_check |= (law_updates_at_check[l] = updates_at_check(scene.laws[l].law)) != 0;
-  v = bodies.velocity_free;
-  double q2 = 0.0;
-  std::size_t loaded = 0;  // contacts with a reaction: the warm start's, then each check's
-  // The law's local problem is built beside each interaction, which keeps what the law changed.
-  LocalProblem2D c;
-  const bool keeps_law_state = !law_states.empty();
-  for (std::size_t a = 0; a < count; ++a) {
-    static_cast<Interaction2D&>(c) = contacts[a];
-    c.internal = keeps_law_state ? law_states[a].internal : std::array<double, 6>{};
-    const ContactLaw& law = scene.laws[static_cast<std::size_t>(c.law)].law;
-    c.W = delassus_block(c, inverse_mass);
-    prepare_local_problem_2d(law, c, law_step);
-    if (c.inactive) c.r.setZero();
-    contacts[a] = c;
-    if (keeps_law_state) law_states[a].internal = c.internal;
-    if (prefetch_slots) {
-      prefetch_gathered<true>(hot, slot, a);
-      prefetch_gathered<true>(reaction, slot, a);
-      prefetch_gathered<true>(open_test, slot, a);
-    }
-    SweepContact2D& k = hot[slot[a]];
-    k.cd = c.candidate_body;
-    k.an = c.antagonist_body;
-    k.normal = c.normal;
-    k.lever_cd = c.lever_candidate;
-    k.lever_an = c.lever_antagonist;
-    k.w_t = Vector2d(c.W(0, 0), c.W(0, 1));
-    k.w_nn = c.W(1, 1);
-    k.cov_n = c.covfree(1);
-    k.mu = c.mu;
-    k.inverse = signorini_coulomb_reciprocals_2d(k.wtt(), k.wtn(), k.wnn(), k.mu);
-    // The flags tested below from these locals: read back from `l`, whose three bytes were just
-    // stored one by one, they would be loaded as one word that has to wait for the stores.
-    const bool glued = std::holds_alternative<CoupledDof>(law),
-               wet = std::holds_alternative<IqsWetDsClb>(law);
-    LawTerms2D l;
-    l.glued = glued;
-    l.wet = wet;
-    l.cohesive = c.cohesive;
-    l.wwtt = c.WW(0, 0);
-    l.wwnn = c.WW(1, 1);
-    l.cor_t = c.correction(0);
-    l.cor_n = c.correction(1);
-    l.kt = c.cohesive_slope(0);
-    l.kn = c.cohesive_slope(1);
-    l.radh_t = c.cohesive_shift_t;
-    l.cov_t = c.covfree(0);
-    const bool plain_but_shift = !glued && !wet && !c.cohesive && l.wwtt == k.wtt() && l.wwnn == k.wnn() &&
-                                 l.cor_t == 0.0 && l.cor_n == 0.0;
-    l.shift_only = plain_but_shift;
-    if (l.cohesive) prepare_cohesive_terms(k.wtn(), l);
-    if (c.inactive) {
-      k.law_terms = SweepContact2D::inactive_contact;  // no law term is read for it
-    } else if (plain_but_shift && l.cov_t == 0.0) {
-      k.zero_shift_t = static_cast<float>(l.cov_t);  // exact, sign included
-    } else {
-      k.law_terms = static_cast<std::int32_t>(terms.size());
-      terms.push_back(l);
-    }
-    open_test[slot[a]] = OpenContactTest2D::of(k);
-    ContactReaction2D& s = reaction[slot[a]];
-    s.rt = c.r(0);
-    s.rn = c.r(1);
-    loaded += s.rt != 0.0 || s.rn != 0.0;
-    // ‖q‖: free local velocities of the problem (law shifts included), fc3d/FORMAT.md §3.
-    q2 += (relative_velocity(k, bodies.velocity_free.data()) + c.covfree).squaredNorm();
   }
+
   // Injected in contact order, as the velocities' sums always were.
-  auto inject_all = [&] {
+  void inject_all() {
     for (std::size_t a = 0; a < count; ++a) {
       if (prefetch_slots) {
         prefetch_gathered<false>(hot, slot, a);
@@ -389,17 +470,15 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
       const ContactReaction2D& s = reaction[slot[a]];
       if (s.rt != 0.0 || s.rn != 0.0) inject(hot[slot[a]], s.rt, s.rn, inverse_mass.data(), v.data());
     }
-  };
-  inject_all();
-  result.free_velocity_norm = std::sqrt(q2);
-  const LawTerms2D plain_terms;  // WW = W, no correction (wwtt, wwnn unused: W's are read)
-  auto law_terms_of = [&](const SweepContact2D& c) -> const LawTerms2D& {
+  }
+
+  const LawTerms2D& law_terms_of(const SweepContact2D& c) const {
     return c.has_law_terms() ? terms[static_cast<std::size_t>(c.law_terms)] : plain_terms;
-  };
+  }
 
   // After a check changed a contact's law state (update_law_at_check): its μ and cohesive terms.
   // A contact whose law updates at checks is cohesive at the start, so it has its LawTerms2D.
-  auto refresh_law_terms = [&](std::size_t a, const LocalProblem2D& c) {
+  void refresh_law_terms(std::size_t a, const LocalProblem2D& c) {
     SweepContact2D& k = hot[slot[a]];
     k.mu = c.mu;
     k.inverse = signorini_coulomb_reciprocals_2d(k.wtt(), k.wtn(), k.wnn(), k.mu);
@@ -410,12 +489,12 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     l.kn = c.cohesive_slope(1);
     l.radh_t = c.cohesive_shift_t;
     if (l.cohesive) prepare_cohesive_terms(k.wtn(), l);
-  };
+  }
 
   // A check's or the post pass's re-evaluation of contact a's law state (update_law_at_check) from
   // the velocity (ut, un) of its local solution, into `problem`; true when the state changed, and
   // then the interaction keeps the new state.
-  const auto update_law_state = [&](std::size_t a, double ut, double un, LocalProblem2D& problem) {
+  bool update_law_state(std::size_t a, double ut, double un, LocalProblem2D& problem) {
     const auto l = static_cast<std::size_t>(contacts[a].law);
     if (!law_updates_at_check[l]) return false;
     static_cast<Interaction2D&>(problem) = contacts[a];
@@ -424,14 +503,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     contacts[a] = problem;
     if (keeps_law_state) law_states[a].internal = problem.internal;
     return true;
-  };
-
-  if (options.quick_scramble) scramble.prepare(count);
-  const double relax = options.relax, keep = 1.0 - options.relax;
-  const bool relaxed = relax != 1.0;  // RELAX 1 (every example): the blend is skipped, not multiplied out
+  }
 
   // The quick scramble's new order: the sweep arrays permuted into it.
-  auto scramble_order = [&] {
+  void scramble_order() {
     scramble.scramble(order);
     hot_spare.resize(count);
     reaction_spare.resize(count);
@@ -444,41 +519,9 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     std::swap(hot, hot_spare);
     std::swap(reaction, reaction_spare);
     for (std::size_t p = 0; p < count; ++p) open_test[p] = OpenContactTest2D::of(hot[p]);
-  };
+  }
 
-  // Groups of four plain updates that share no movable body, run at once (sweep_group_2d.hpp), for
-  // the contacts with a reaction when they are formed: the open ones are passed by on their
-  // reaction records (the scalar path), a group's lanes would mostly idle. Formed at the first
-  // block, and again after a check that changed the number of loaded contacts by more than 1/16 or
-  // a quick scramble (the order has changed): see reuse_groups below.
-  const bool use_groups = options.vector_sweeps && count >= 4 && sweep_groups_available();
-  bool grouped = false;                 // this block's sweeps run the groups
-  std::size_t loaded_at_formation = 0;  // contacts with a reaction when the groups were formed
-  // The sweeps that run no groups visit the contacts their schedules make due (open_contact_visits.hpp)
-  // in a long list (NlgsOptions::due_visits_from), where a block is short enough for a small ring of
-  // bitmaps (gs_it1 up to about 2000).
-  thread_local DueVisits due_visits;
-  const bool due_visits_fit =
-      count >= options.due_visits_from && options.gs_it1 > 0 && DueVisits::ring_length(options.gs_it1) <= 64;
-  thread_local std::vector<SweepGroup2D> groups;
-  // A sweep reads the groups in sequence, and its first load of a group misses the caches once they
-  // no longer hold the array. So the group kGroupsAhead on is prefetched, once the array outgrows what
-  // a core's L2 keeps beside the bodies and the reactions (below that the array is in L2, and the
-  // prefetches are instructions spent).
-  constexpr std::size_t kGroupsAhead = 8;
-  constexpr std::size_t kPrefetchGroupsFrom = (512 * 1024) / sizeof(SweepGroup2D);
-  bool prefetch_groups = false;
-  // The sweep runs segment after segment: the groups [groups_end of the previous segment,
-  // groups_end), then the updates alone at scalar_positions [scalar_end of the previous, scalar_end).
-  struct SweepSegment {
-    std::uint32_t groups_end, scalar_end;
-  };
-  // Kept from call to call, as the sweep arrays: a small scene's step would otherwise allocate them.
-  thread_local std::vector<SweepSegment> segments;
-  thread_local std::vector<std::uint32_t> scalar_positions;
-  // By body: the serial of the pending group while it holds the body.
-  thread_local std::vector<std::uint32_t> pending_stamp;
-  auto form_groups = [&] {
+  void form_groups() {
     groups.clear();
     segments.clear();
     scalar_positions.clear();
@@ -562,14 +605,14 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     flush();
     segments.push_back(
         {static_cast<std::uint32_t>(groups.size()), static_cast<std::uint32_t>(scalar_positions.size())});
-  };
+  }
 
   // One Gauss–Seidel pass (in execution order, the sweep order's result); the post pass never skips and
   // is not counted as an iteration.
   // Instantiated once per kind (std::bool_constant): the post pass's tests fold away in the sweeps.
   // The sweeps by due visits are an instantiation of their own, so that the walk of every contact
   // compiles as it would without them (one body for both slows the walk).
-  auto sweep = [&](auto post_kind, auto due_visits_kind) {
+  void sweep(auto post_kind, auto due_visits_kind) {
     constexpr bool post = decltype(post_kind)::value;
     constexpr bool by_due = decltype(due_visits_kind)::value;
     const SweepContact2D* sweep_hot = hot.data();
@@ -677,10 +720,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
       for (std::size_t index = 0; index < count; ++index) update(index);
     }
     if (!post) ++result.iterations;
-  };
+  }
 
   // Natural-map residual of one contact at the current state (law in auxiliary variables).
-  auto residual2_of = [&](const SweepContact2D& c, const ContactReaction2D& s, double uft, double ufn) {
+  double residual2_of(const SweepContact2D& c, const ContactReaction2D& s, double uft, double ufn) const {
     if (c.inactive()) return s.rt * s.rt + s.rn * s.rn;
     const LawTerms2D& l = law_terms_of(c);
     const double wwtt = c.has_law_terms() ? l.wwtt : c.wtt(), wwnn = c.has_law_terms() ? l.wwnn : c.wnn();
@@ -697,10 +740,10 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     const double un = ufn + c.cov_n + c.wtn() * rrt + wwnn * rrn;
     if (l.glued) return ut * ut + un * un;
     return natural_map_residual_squared_2d(Vector2d(rrt, rrn), Vector2d(ut, un), c.mu);
-  };
+  }
 
   // One check pass (numerics.md §4.1): the local solve applied to the current state, no update.
-  auto check = [&]() {
+  bool check() {
     NlgsCheckSums sums;
     double residual2 = 0;
     std::size_t vanishing = 0;
@@ -761,105 +804,141 @@ NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray
     bool passed = nlgs_check_passes(options.norm, q);
     if (options.residual_target > 0.0) passed = passed || result.residual_relative <= options.residual_target;
     return passed;
-  };
-
-  if (count > 0) {
-    for (int block = 0; block < options.gs_it2; ++block) {
-      const auto sweeps_start = std::chrono::steady_clock::now();
-      if (options.quick_scramble) scramble_order();
-      // Where less than a quarter of the updates form groups, the plain loop: forming the groups (a
-      // pass over every contact's record) and running the others through the segment lists cost more
-      // than the groups save. Only loaded contacts form groups: with fewer than a quarter loaded, none
-      // are formed.
-      constexpr std::size_t quarter = 4;  // share of the updates below which the plain loop runs
-      // The previous block's groups serve again while the contacts with a reaction are about as
-      // many as when they were formed (within 1/16) and the order has not changed (no quick
-      // scramble): which contacts share a body does not change within a step, so a group still runs
-      // updates that commute with the ones between, and a lane that has lost its reaction is left to
-      // the scalar update, as within a block; a contact that has gained one runs alone. The same
-      // iterates bit for bit, without a pass over every contact's record to form them again.
-      const bool reuse_groups =
-          grouped && !options.quick_scramble &&
-          16 * std::max(loaded, loaded_at_formation) <= 17 * std::min(loaded, loaded_at_formation);
-      if (!reuse_groups) {
-        grouped = false;
-        if (use_groups && quarter * loaded >= count) {
-          form_groups();
-          loaded_at_formation = loaded;
-          grouped = quarter * (4 * groups.size()) >= count;
-          prefetch_groups = groups.size() >= kPrefetchGroupsFrom;
-        }
-      }
-      if (!grouped && due_visits_fit) {
-        due_visits.start_block(count, static_cast<std::int32_t>(result.iterations), options.gs_it1);
-        for (int i = 0; i < options.gs_it1; ++i) sweep(std::false_type{}, std::true_type{});
-      } else {
-        for (int i = 0; i < options.gs_it1; ++i) sweep(std::false_type{}, std::false_type{});
-      }
-      result.sweep_seconds +=
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - sweeps_start).count();
-      result.converged = check();
-      loaded = result.active;
-      if (result.converged || result.diverged) break;
-    }
-  } else {
-    result.converged = true;
   }
 
-  // Post (docs/lmgc90-facts/rigid-2d.md §5.3): velocities rebuilt from scratch (Rnod = H r),
-  // one more relaxed sweep, then the final local velocities and statuses.
-  v = bodies.velocity_free;
-  inject_all();
+  void post() {
+    // Post (docs/lmgc90-facts/rigid-2d.md §5.3): velocities rebuilt from scratch (Rnod = H r),
+    // one more relaxed sweep, then the final local velocities and statuses.
+    v = bodies.velocity_free;
+    inject_all();
+    // With Stored_Delassus_Loops, LMGC90's post sweep updates the reactions without injecting them
+    // (mod_nlgs solve_nlgs: injj_ only when not SDLactif): the bodies end the step with the
+    // impulses and velocities of the reactions before it. Exchange_Local_Global injects them.
+    if (stored_delassus) {
+      velocity_before_post = v;
+      std::fill(bodies.impulse.begin(), bodies.impulse.end(), Vector3d::Zero());
+      for (std::size_t a = 0; a < count; ++a) {
+        const SweepContact2D& k = hot[slot[a]];
+        const ContactReaction2D& s = reaction[slot[a]];
+        add_impulses(k, s.rt, s.rn, bodies.impulse);
+      }
+    }
+    if (count > 0) sweep(std::true_type{}, std::false_type{});
+  }
+
+  void end_of_step() {
+    // The achieved error is the one of the reactions actually returned (after the post sweep).
+    double residual2 = 0.0;
+    result.active = 0;
+    if (!stored_delassus) std::fill(bodies.impulse.begin(), bodies.impulse.end(), Vector3d::Zero());
+    LawState2D unused_law_state;  // the state handed to a law without internals, which does not touch it
+    for (std::size_t a = 0; a < count; ++a) {
+      prefetch_ahead<true>(contacts, a);  // the records the end writes, as in the reorder
+      if (prefetch_slots) {
+        prefetch_gathered<false>(hot, slot, a);
+        prefetch_gathered<false>(reaction, slot, a);
+      }
+      const SweepContact2D& k = hot[slot[a]];
+      const ContactReaction2D& s = reaction[slot[a]];
+      Interaction2D& c = contacts[a];
+      const Vector2d u = relative_velocity(k, v.data());
+      const Vector2d uf = minus_w_r(k, u, s.rt, s.rn);
+      residual2 += residual2_of(k, s, uf.x(), uf.y());
+      if (s.rt != 0.0 || s.rn != 0.0) ++result.active;
+      c.r = Vector2d(s.rt, s.rn);
+      c.u = u;
+      const LawTerms2D& l = law_terms_of(k);
+      const bool wet_or_cohesive = l.wet || l.cohesive;
+      c.status =
+          (s.rt == 0.0 && s.rn == 0.0 && !wet_or_cohesive) ? ContactStatus::noctc : final_status[slot[a]];
+      // Contact impulses of every body (Ireac = Σ H r), driven dofs included (TORQUE EVOLUTION).
+      if (!stored_delassus) add_impulses(k, s.rt, s.rn, bodies.impulse);
+      finish_step_2d(scene.laws[static_cast<std::size_t>(c.law)].law, c,
+                     keeps_law_state ? law_states[a] : unused_law_state, h, time);
+    }
+    if (stored_delassus) v = velocity_before_post;
+    result.residual_absolute = std::sqrt(residual2);
+    result.residual_relative = result.free_velocity_norm > 0.0
+                                   ? result.residual_absolute / result.free_velocity_norm
+                                   : result.residual_absolute;
+  }
+
+  const Scene2D& scene;
+  RigidBodies2D& bodies;
+  LargeArray<Interaction2D>& contacts;
+  std::span<LawState2D> law_states;
+  const LawStep& law_step;
+  const NlgsOptions& options;
+  QuickScramble& scramble;
+  const double h, time;
+  NlgsResult result;
+  const std::size_t count;
+  std::vector<Vector3d>& v;
+  const std::vector<Vector3d>& inverse_mass;
+  std::vector<std::uint32_t> order, execution, slot;
+  SweepWavefront wavefront;
+  SweepArrays2D& arrays = sweep_arrays();
+  LargeArray<SweepContact2D>& hot = arrays.hot;
+  LargeArray<SweepContact2D>& hot_spare = arrays.hot_spare;
+  LargeArray<ContactReaction2D>& reaction = arrays.reaction;
+  LargeArray<ContactReaction2D>& reaction_spare = arrays.reaction_spare;
+  LargeArray<ContactStatus>& final_status = arrays.final_status;
+  LargeArray<OpenContactTest2D>& open_test = arrays.open_test;
+  // The passes in contact order (the set-up, the injections, the checks, the end of the step) read
+  // the sweep records at each contact's slot. In a square box of disks a window's wavefront levels
+  // interleave two or three rows, so from one contact to the next the slot moves on by 1, 3 or 5
+  // records, a pattern the hardware prefetcher does not keep up with: the end pass's first read of a
+  // record and the set-up's first store wait on memory. So those passes ask for the records
+  // kPrefetchAhead contacts on, once the sweep records outgrow half of a core's L2 (below that they
+  // are in L2, and the prefetches are instructions spent).
+  static constexpr std::size_t kPrefetchSlotsFrom = (512 * 1024) / sizeof(SweepContact2D);
+  const bool prefetch_slots;
+  std::vector<LawTerms2D> terms;
+  std::vector<std::uint8_t> law_updates_at_check;
+  bool any_update_at_check = false;
+  std::size_t loaded = 0;  // contacts with a reaction: the warm start's, then each check's
+  // The law's local problem is built beside each interaction, which keeps what the law changed.
+  const bool keeps_law_state;
+  const LawTerms2D plain_terms;  // WW = W, no correction (wwtt, wwnn unused: W's are read)
+  const double relax, keep;
+  const bool relaxed;  // RELAX 1 (every example): the blend is skipped, not multiplied out
+  // Groups of four plain updates that share no movable body, run at once (sweep_group_2d.hpp), for
+  // the contacts with a reaction when they are formed: the open ones are passed by on their
+  // reaction records (the scalar path), a group's lanes would mostly idle. Formed at the first
+  // block, and again after a check that changed the number of loaded contacts by more than 1/16 or
+  // a quick scramble (the order has changed): see reuse_groups below.
+  const bool use_groups;
+  bool grouped = false;                 // this block's sweeps run the groups
+  std::size_t loaded_at_formation = 0;  // contacts with a reaction when the groups were formed
+  // The sweeps that run no groups visit the contacts their schedules make due (open_contact_visits.hpp)
+  // in a long list (NlgsOptions::due_visits_from), where a block is short enough for a small ring of
+  // bitmaps (gs_it1 up to about 2000).
+  DueVisits& due_visits = arrays.due_visits;
+  const bool due_visits_fit;
+  std::vector<SweepGroup2D>& groups = arrays.groups;
+  // A sweep reads the groups in sequence, and its first load of a group misses the caches once they
+  // no longer hold the array. So the group kGroupsAhead on is prefetched, once the array outgrows what
+  // a core's L2 keeps beside the bodies and the reactions (below that the array is in L2, and the
+  // prefetches are instructions spent).
+  static constexpr std::size_t kGroupsAhead = 8;
+  static constexpr std::size_t kPrefetchGroupsFrom = (512 * 1024) / sizeof(SweepGroup2D);
+  bool prefetch_groups = false;
+  std::vector<SweepSegment>& segments = arrays.segments;
+  std::vector<std::uint32_t>& scalar_positions = arrays.scalar_positions;
+  std::vector<std::uint32_t>& pending_stamp = arrays.pending_stamp;
   // With Stored_Delassus_Loops, LMGC90's post sweep updates the reactions without injecting them
   // (mod_nlgs solve_nlgs: injj_ only when not SDLactif): the bodies end the step with the
   // impulses and velocities of the reactions before it. Exchange_Local_Global injects them.
-  const bool stored_delassus = options.storage == NlgsStorage::stored_delassus_loops;
-  thread_local std::vector<Vector3d> velocity_before_post;
-  if (stored_delassus) {
-    velocity_before_post = v;
-    std::fill(bodies.impulse.begin(), bodies.impulse.end(), Vector3d::Zero());
-    for (std::size_t a = 0; a < count; ++a) {
-      const SweepContact2D& k = hot[slot[a]];
-      const ContactReaction2D& s = reaction[slot[a]];
-      add_impulses(k, s.rt, s.rn, bodies.impulse);
-    }
-  }
-  if (count > 0) sweep(std::true_type{}, std::false_type{});
-  // The achieved error is the one of the reactions actually returned (after the post sweep).
-  double residual2 = 0.0;
-  result.active = 0;
-  if (!stored_delassus) std::fill(bodies.impulse.begin(), bodies.impulse.end(), Vector3d::Zero());
-  LawState2D unused_law_state;  // the state handed to a law without internals, which does not touch it
-  for (std::size_t a = 0; a < count; ++a) {
-    prefetch_ahead<true>(contacts, a);  // the records the end writes, as in the reorder
-    if (prefetch_slots) {
-      prefetch_gathered<false>(hot, slot, a);
-      prefetch_gathered<false>(reaction, slot, a);
-    }
-    const SweepContact2D& k = hot[slot[a]];
-    const ContactReaction2D& s = reaction[slot[a]];
-    Interaction2D& c = contacts[a];
-    const Vector2d u = relative_velocity(k, v.data());
-    const Vector2d uf = minus_w_r(k, u, s.rt, s.rn);
-    residual2 += residual2_of(k, s, uf.x(), uf.y());
-    if (s.rt != 0.0 || s.rn != 0.0) ++result.active;
-    c.r = Vector2d(s.rt, s.rn);
-    c.u = u;
-    const LawTerms2D& l = law_terms_of(k);
-    const bool wet_or_cohesive = l.wet || l.cohesive;
-    c.status =
-        (s.rt == 0.0 && s.rn == 0.0 && !wet_or_cohesive) ? ContactStatus::noctc : final_status[slot[a]];
-    // Contact impulses of every body (Ireac = Σ H r), driven dofs included (TORQUE EVOLUTION).
-    if (!stored_delassus) add_impulses(k, s.rt, s.rn, bodies.impulse);
-    finish_step_2d(scene.laws[static_cast<std::size_t>(c.law)].law, c,
-                   keeps_law_state ? law_states[a] : unused_law_state, h, time);
-  }
-  if (stored_delassus) v = velocity_before_post;
-  result.residual_absolute = std::sqrt(residual2);
-  result.residual_relative = result.free_velocity_norm > 0.0
-                                 ? result.residual_absolute / result.free_velocity_norm
-                                 : result.residual_absolute;
-  return result;
+  const bool stored_delassus;
+  std::vector<Vector3d>& velocity_before_post = arrays.velocity_before_post;
+};
+
+}  // namespace
+
+NlgsResult solve_nlgs_2d(const Scene2D& scene, RigidBodies2D& bodies, LargeArray<Interaction2D>& contacts,
+                         std::span<LawState2D> law_states, const LawStep& step, const NlgsOptions& options,
+                         QuickScramble& scramble) {
+  return Nlgs2D(scene, bodies, contacts, law_states, step, options, scramble).run();
 }
 
 }  // namespace lmgc::solver
