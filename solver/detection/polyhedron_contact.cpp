@@ -212,14 +212,18 @@ std::vector<Vector2d> clip(std::vector<Vector2d> subject, const std::vector<Vect
     const Vector2d a = clipper[e], b = clipper[(e + 1) % clipper.size()];
     const Vector2d edge = b - a;
     const double length = edge.norm();
-    const auto side = [&](const Vector2d& q) { return cross2(edge, q - a) / length; };  // > 0 inside
+    // Distance inside the edge pushed out by the tolerance: a point is kept at >= 0, and an edge of the
+    // subject crosses where it changes sign. Measured from the pushed-out line, the crossing lies
+    // within the subject's edge: two points on the clipper's edge up to round-off (faces that
+    // coincide, as a bridge's voussoirs do) would otherwise give sp ≈ sq and a crossing far outside
+    // both polygons.
+    const auto side = [&](const Vector2d& q) { return cross2(edge, q - a) / length + tolerance; };
     std::vector<Vector2d> kept;
     for (std::size_t i = 0; i < subject.size(); ++i) {
       const Vector2d p = subject[i], q = subject[(i + 1) % subject.size()];
       const double sp = side(p), sq = side(q);
-      if (sp >= -tolerance) kept.push_back(p);
-      if ((sp >= -tolerance) != (sq >= -tolerance) && std::abs(sp - sq) > 0.0)
-        kept.push_back(p + (q - p) * (sp / (sp - sq)));
+      if (sp >= 0.0) kept.push_back(p);
+      if ((sp >= 0.0) != (sq >= 0.0)) kept.push_back(p + (q - p) * std::clamp(sp / (sp - sq), 0.0, 1.0));
     }
     subject = std::move(kept);
   }

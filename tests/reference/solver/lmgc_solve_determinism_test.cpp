@@ -58,7 +58,7 @@ TEST(PinnedIterates, Rigid3DStackOfCubes) {
   constexpr const char* kExpected = "9e321a5fac9d7306";
 #else
   constexpr const char* kSteps = "100";
-  constexpr const char* kExpected = "7890f3f978ae6eb1";
+  constexpr const char* kExpected = "97517a54ae148e72";
 #endif
   const std::string flags =
       std::string("--steps ") + kSteps +

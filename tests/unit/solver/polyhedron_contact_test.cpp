@@ -114,6 +114,54 @@ TEST(PolyhedronPolyhedron, StackedCubesTouchAtTheFourCornersOfTheSmallerFace) {
   EXPECT_FALSE(detect_polyhedron_polyhedron(apart.view, bottom.view, 0.01, 0.25, 100, contact));
 }
 
+// Blocks that share a whole face, as a bridge's voussoirs do: the two projected faces coincide up to
+// round-off, edge on edge. Every point must lie on the shared face (a clip of coinciding edges once
+// put a point metres outside both blocks, and the warm start then lost it from step to step).
+TEST(PolyhedronPolyhedron, BlocksSharingAFaceTouchOnlyWithinIt) {
+  const Vector3d half(2.4, 0.9, 0.6);
+  const Polyhedron block = box(half);
+  int checked = 0;
+  for (int turn = 0; turn < 40; ++turn) {
+    const Matrix3d frame =
+        Eigen::AngleAxisd(0.05 + 0.37 * turn, Vector3d(1.0, 2.0 + turn, 3.0).normalized()).toRotationMatrix();
+    const Vector3d below = Vector3d(1.0, -2.0, 0.5) * turn;
+    const Placed bottom = place(block, below, frame);
+    const Placed top = place(block, below + frame * Vector3d(0.0, 0.0, 2.0 * half.z()), frame);
+    PolyhedronContact contact;
+    ASSERT_TRUE(detect_polyhedron_polyhedron(top.view, bottom.view, 0.01, 0.6, 100, contact)) << turn;
+    ASSERT_GE(contact.count, 1) << turn;
+    for (int k = 0; k < contact.count; ++k) {
+      const Vector3d local = frame.transpose() * (contact.points[static_cast<std::size_t>(k)] - below);
+      EXPECT_LE(std::abs(local.x()), half.x() + 1e-6) << turn << " point " << k;
+      EXPECT_LE(std::abs(local.y()), half.y() + 1e-6) << turn << " point " << k;
+      EXPECT_NEAR(local.z(), half.z(), 1e-6) << turn << " point " << k;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 40);
+  // Edge beside edge within the detection's tolerance (1e-9 of the radius), slightly turned: the
+  // subject's edge runs from just inside that tolerance to just beyond it, on each side in turn.
+  const double tolerance = 1e-9 * block.radius;
+  const Vector3d sides[] = {Vector3d::UnitX(), -Vector3d::UnitX(), Vector3d::UnitY(), -Vector3d::UnitY()};
+  for (const Vector3d& side : sides)
+    for (const double offset : {0.95, 1.0, 1.05}) {
+      const double along = side.x() != 0.0 ? half.y() : half.x();  // the edge's half length
+      const Matrix3d turned =
+          Eigen::AngleAxisd(0.1 * tolerance / along, Vector3d::UnitZ()).toRotationMatrix();
+      const Placed bottom = place(block, Vector3d::Zero());
+      const Placed top = place(block, offset * tolerance * side + Vector3d(0.0, 0.0, 2.0 * half.z()), turned);
+      PolyhedronContact contact;
+      ASSERT_TRUE(detect_polyhedron_polyhedron(top.view, bottom.view, 0.01, 0.6, 100, contact)) << offset;
+      for (int k = 0; k < contact.count; ++k) {
+        const Vector3d& point = contact.points[static_cast<std::size_t>(k)];
+        EXPECT_LE(std::abs(point.x()), half.x() + 1e-6)
+            << side.transpose() << " " << offset << " point " << k;
+        EXPECT_LE(std::abs(point.y()), half.y() + 1e-6)
+            << side.transpose() << " " << offset << " point " << k;
+      }
+    }
+}
+
 TEST(PolyhedronPolyhedron, TiltedFaceGivesEachPointItsOwnGap) {
   // The upper cube turned by 0.02 rad about y: its lower face rises along +x, so the points at
   // x = +0.5 are farther than those at x = -0.5 by sin(0.02) (the common plane follows the lowest
