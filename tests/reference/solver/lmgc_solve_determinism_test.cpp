@@ -55,7 +55,7 @@ TEST(PinnedIterates, Rigid2DColumnOfDisks) {
 TEST(PinnedIterates, Rigid3DStackOfCubes) {
 #ifdef LMGC_SANITIZED_BUILD
   constexpr const char* kSteps = "20";
-  constexpr const char* kExpected = "9e321a5fac9d7306";
+  constexpr const char* kExpected = "a59c351c31aa374d";
 #else
   constexpr const char* kSteps = "100";
   constexpr const char* kExpected = "97517a54ae148e72";
