@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "solver/nlgs/local_solver_2d.hpp"
 #include "solver/nlgs/local_solver_3d.hpp"
 
 namespace lmgc::solver {
@@ -88,20 +89,9 @@ Eigen::Matrix<double, 3, 1> natural_map<3>(const Eigen::Vector3d& r, const Eigen
 
 template <>
 Eigen::Matrix<double, 2, 1> natural_map<2>(const Eigen::Vector2d& r, const Eigen::Vector2d& u, double mu) {
-  // x = r - u - mu |u_t| e_n, components (n, t); projection on the 2D cone |x_t| <= mu x_n.
-  const double xn = r(0) - u(0) - mu * std::fabs(u(1));
-  const double xt = r(1) - u(1);
-  const double at = std::fabs(xt);
-  Eigen::Vector2d p;
-  if (mu * at <= -xn) {
-    p.setZero();
-  } else if (at <= mu * xn) {
-    p = Eigen::Vector2d(xn, xt);
-  } else {
-    const double a = (mu * at + xn) / (1.0 + mu * mu);
-    p = Eigen::Vector2d(a, at > 0.0 ? mu * a * xt / at : 0.0);
-  }
-  return r - p;
+  // FCLIB's components are (n, t); the 2D NLGS's map takes (t, n).
+  const Eigen::Vector2d f = natural_map_2d(Eigen::Vector2d(r(1), r(0)), Eigen::Vector2d(u(1), u(0)), mu);
+  return Eigen::Vector2d(f(1), f(0));
 }
 
 template <int Dim>

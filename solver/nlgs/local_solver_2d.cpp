@@ -83,7 +83,7 @@ bool solve_signorini_coulomb_2d_any_case(double wtt, double wtn, double wnn, dou
   return false;
 }
 
-double natural_map_residual_squared_2d(const Eigen::Vector2d& r, const Eigen::Vector2d& u, double mu) {
+Eigen::Vector2d natural_map_2d(const Eigen::Vector2d& r, const Eigen::Vector2d& u, double mu) {
   // x = r - (u + mu |u_t| e_n), components (t, n).
   const double xt = r(0) - u(0);
   const double xn = r(1) - (u(1) + mu * std::fabs(u(0)));
@@ -99,8 +99,11 @@ double natural_map_residual_squared_2d(const Eigen::Vector2d& r, const Eigen::Ve
     pn = a;
     pt = at > 0.0 ? mu * a * xt / at : 0.0;
   }
-  const double ft = r(0) - pt, fn = r(1) - pn;
-  return ft * ft + fn * fn;
+  return Eigen::Vector2d(r(0) - pt, r(1) - pn);
+}
+
+double natural_map_residual_squared_2d(const Eigen::Vector2d& r, const Eigen::Vector2d& u, double mu) {
+  return natural_map_2d(r, u, mu).squaredNorm();
 }
 
 }  // namespace lmgc::solver

@@ -122,8 +122,11 @@ inline bool solve_signorini_coulomb_2d(double wtt, double wtn, double wnn,
   return true;
 }
 
-// Natural-map residual of one contact (fc3d/FORMAT.md §3, scalar tangent), for u = W r + q:
-// F = r - P_K(r - u - (mu |u_t|) e_n), returned as |F|^2.
+// The natural map of one contact (fc3d/FORMAT.md §3, scalar tangent), for u = W r + q:
+// F = r - P_K(r - u - (mu |u_t|) e_n), components (t, n); zero exactly at a solution of
+// Signorini–Coulomb. The 2D NLGS and the FCLIB solvers measure their error with it; the second
+// returns |F|^2.
+Eigen::Vector2d natural_map_2d(const Eigen::Vector2d& r, const Eigen::Vector2d& u, double mu);
 double natural_map_residual_squared_2d(const Eigen::Vector2d& r, const Eigen::Vector2d& u, double mu);
 
 }  // namespace lmgc::solver
