@@ -122,6 +122,21 @@ void finish_polyhedron(Polyhedron& p) {
         faces.size() == 2 && p.face_normals[faces[0]].dot(p.face_normals[faces[1]]) > 1.0 - 1e-9;
     if (!flat) p.edges.push_back({edge.first, edge.second});
   }
+  p.edge_directions.clear();
+  for (std::size_t e = 0; e < p.edges.size(); ++e) {
+    const Vector3d d = (p.vertices[static_cast<std::size_t>(p.edges[e][1])] -
+                        p.vertices[static_cast<std::size_t>(p.edges[e][0])])
+                           .normalized();
+    bool seen = false;
+    for (const std::int32_t k : p.edge_directions) {
+      const auto& other = p.edges[static_cast<std::size_t>(k)];
+      const Vector3d o =
+          (p.vertices[static_cast<std::size_t>(other[1])] - p.vertices[static_cast<std::size_t>(other[0])])
+              .normalized();
+      if (d.cross(o).norm() <= 1e-12) seen = true;
+    }
+    if (!seen) p.edge_directions.push_back(static_cast<std::int32_t>(e));
+  }
 }
 
 PolyhedronMass polyhedron_mass(const Polyhedron& p) {

@@ -17,6 +17,9 @@ struct Polyhedron {
   // Feature edges (0-based vertex pairs): edges between two faces that are not coplanar, i.e. not
   // the diagonals of a triangulated flat face. Their cross products are separating-axis candidates.
   std::vector<std::array<std::int32_t, 2>> edges;
+  // One feature edge per direction (indices into `edges`; parallel edges, either way round, give the
+  // same separating axes): a box's 12 edges have 3 directions.
+  std::vector<std::int32_t> edge_directions;
   double radius = 0.0;  // largest vertex distance from the reference point
 };
 

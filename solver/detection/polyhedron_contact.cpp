@@ -118,10 +118,13 @@ Vector3d best_axis(const PlacedPolyhedron& cd, const PlacedPolyhedron& an, const
   };
   for (const Vector3d& nf : an.normals) consider(nf);
   for (const Vector3d& nf : cd.normals) consider(-nf);
-  for (const auto& ea : cd.shape->edges) {
+  // One edge per direction of each body: parallel edges give the same axes.
+  for (const std::int32_t ka : cd.shape->edge_directions) {
+    const auto& ea = cd.shape->edges[static_cast<std::size_t>(ka)];
     const Vector3d a =
         cd.vertices[static_cast<std::size_t>(ea[1])] - cd.vertices[static_cast<std::size_t>(ea[0])];
-    for (const auto& eb : an.shape->edges) {
+    for (const std::int32_t kb : an.shape->edge_directions) {
+      const auto& eb = an.shape->edges[static_cast<std::size_t>(kb)];
       const Vector3d b =
           an.vertices[static_cast<std::size_t>(eb[1])] - an.vertices[static_cast<std::size_t>(eb[0])];
       Vector3d n = a.cross(b);
