@@ -3,8 +3,8 @@
 # LMGC90's example files (../shared, when present), the shipped reference cases and fuzz/seeds/,
 # with the keyword dictionary fuzz/lmgc.dict; then writes docs/fuzzing.md (one row per target:
 # executions, coverage, corpus, findings, date, machine) and bench/results/<machine>/fuzzing.csv.
-# Findings are left in build/fuzz/findings/<target>/: each becomes a seed in fuzz/seeds/<target>/
-# (replayed by CI, ctest -R Fuzz) and a regression test.
+# This run's findings are left in build/fuzz/findings/<target>/ (emptied at the start of each target's
+# run): each becomes a seed in fuzz/seeds/<target>/ (replayed by CI, ctest -R Fuzz) and a regression test.
 #
 #   scripts/fuzz.sh [SECONDS] [TARGET...]
 set -euo pipefail
@@ -37,6 +37,8 @@ for t in "${targets[@]}"; do
   program=build/fuzz/fuzz/fuzz_$t
   [ -x "$program" ] || { echo "fuzz: $program not built (fclib needs HDF5)" >&2; continue; }
   corpus=build/fuzz/corpus/$t findings=build/fuzz/findings/$t
+  # This run's findings only: earlier ones are seeds of fuzz/seeds/<target>/ (replayed by CI).
+  rm -rf "$findings"
   mkdir -p "$corpus" "$findings"
   if [ -n "${names[$t]:-}" ]; then
     find "$shared/lmgc90-examples" reference_cases -name "${names[$t]}" 2>/dev/null |
@@ -49,9 +51,10 @@ for t in "${targets[@]}"; do
   "$program" -max_total_time="$seconds" -dict=fuzz/lmgc.dict -timeout=20 -rss_limit_mb=2048 -print_final_stats=1 \
     -artifact_prefix="$findings/" "$corpus" > "$log" 2>&1
   set -e
-  executions=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1)
-  coverage=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*')
-  features=$(grep -o 'ft: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*')
+  # A run stopped by a finding prints no final statistics: count what it printed, and go on.
+  executions=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1 || true)
+  coverage=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*' || true)
+  features=$(grep -o 'ft: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*' || true)
   corpus_size=$(ls "$corpus" | wc -l)
   found=$(find "$findings" -type f | wc -l)
   echo "$t,$seconds,${executions:-0},${coverage:-0},${features:-0},$corpus_size,$found" >> "$results"

@@ -246,6 +246,21 @@ TEST(DrvDofWriter, BlockWithoutDrivenDofsLeavesNoSectionInTheEcho) {
   EXPECT_EQ(write_drv_dof(parse(echo, again)), echo);
 }
 
+// The echo of a 3D mesh that drives no dof is the bare header; read back alone it would be taken
+// for a 2D file, so the echo of the echo is written, as LMGC90 writes it, for the case's modules:
+// the first file's setup.
+TEST(DrvDofWriter, EchoOfAnEchoWithoutDrivenDofsKeepsTheCaseSetup) {
+  DiagnosticSink sink;
+  const DrvDofFile file = parse(
+      "$bdyty\n MAILx      1\n$model\n MECAx\n$nodty\n NO3xx      1\n" + kTemplate + "\n$$$$$$\n", sink);
+  ASSERT_FALSE(sink.has_errors());
+  const DrvDofEchoSetup setup = drv_dof_echo_setup_of(file);
+  EXPECT_EQ(setup.dimension, 3);
+  const std::string echo = write_drv_dof(file, setup);
+  DiagnosticSink again;
+  EXPECT_EQ(write_drv_dof(parse(echo, again), setup), echo);
+}
+
 // Evolution files.
 EvolutionFile evolution(const std::string& text, DiagnosticSink& sink) {
   return parse_evolution(SourceText("vy.dat", text), sink);
