@@ -91,10 +91,9 @@ TEST(LmgcSolveRigid3D, PeriodicBoxFedByASourcePointFollowsLmgc90UntilTheFirstBod
 // Bridge_PR (an arch of 22 blocks loaded until it fails, diagonal resolution, Cundall's search capped
 // at 200 as its script asks): over the 130 steps LMGC90 wrote, every Vloc_Rloc.OUT.n it kept has its
 // number of interactions (108), and through step 100 the blocks stay within 0.3 mm of its positions
-// (measured, printed: 0.005 mm at step 10, 0.1 mm at step 100; then 0.4-0.7 mm at steps 110-130 as
-// the arch starts to collapse, not step for step alike). The principal frames are LMGC90's (dsyevd's signs);
-// with another sign rule the blocks stayed within 0.08 mm over these steps: the arch is that sensitive to the
-// rounding of its first steps.
+// (the largest difference is printed; after step 100 the arch starts to collapse, not step for step
+// alike). The arch is sensitive to the rounding of its first steps: the principal frames' signs or
+// the last bits of a common plane's normal move it by a tenth of a millimetre.
 TEST(LmgcSolveRigid3D, ArchFollowsLmgc90UntilItCollapses) {
   LMGC_REQUIRE_SHARED();
   const fs::path example = examples_dir() / "RIGID_3D" / "Bridge_PR";
