@@ -29,6 +29,12 @@ int kind_order(const std::string& kind) {
   return (kind == "force" || kind == "flux") ? 1 : 0;
 }
 
+// The dofs of a node type NOnxx (n), 0 for another name.
+int node_width(const std::string& type) {
+  return type.size() == 5 && type.compare(0, 2, "NO") == 0 && type[2] >= '1' && type[2] <= '9' ? type[2] - '0'
+                                                                                               : 0;
+}
+
 struct MergedNode {
   std::string type;
   std::vector<DrivenDof> dofs;
@@ -47,7 +53,10 @@ std::map<std::int64_t, MergedBody> gather(const DrvDofFile& file, std::string_vi
     MergedBody& merged = bodies[body.rank.value];
     for (const DrvDofNode& node : body.nodes) {
       MergedNode& target = merged.nodes[node.number.value];
-      if (target.type.empty()) target.type = node.node_type.value;
+      // A node given twice under two node types is written with the wider one (NO1xx < NO2xx < ...),
+      // which holds the dofs of both blocks (LMGC90 writes a node's type from the mesh).
+      if (target.type.empty() || node_width(node.node_type.value) > node_width(target.type))
+        target.type = node.node_type.value;
       target.dofs.insert(target.dofs.end(), node.dofs.begin(), node.dofs.end());
     }
   }

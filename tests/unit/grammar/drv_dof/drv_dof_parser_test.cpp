@@ -261,6 +261,23 @@ TEST(DrvDofWriter, EchoOfAnEchoWithoutDrivenDofsKeepsTheCaseSetup) {
   EXPECT_EQ(write_drv_dof(parse(echo, again), setup), echo);
 }
 
+// A node given twice, under NO1xx and under NO2xx, is one node (LMGC90 takes nodes by number): the
+// echo writes it once with the wider type, which holds the second dof, so the echo reads back.
+TEST(DrvDofWriter, NodeGivenUnderTwoTypesIsEchoedWithTheWiderOne) {
+  DiagnosticSink sink;
+  const DrvDofFile file =
+      parse("$bdyty\n MAILx      1\n$model\n MECAx\n$nodty\n NO1xx      5\n" + kTemplate +
+                "\n$nodty\n NO2xx      5\n" + kTemplate + "\n vlocy      2" + kValues + "\n$$$$$$\n",
+            sink);
+  ASSERT_FALSE(sink.has_errors()) << sink.items()[0].code << " " << sink.items()[0].message;
+  const std::string echo = write_drv_dof(file);
+  EXPECT_NE(echo.find(" NO2xx      5"), std::string::npos) << echo;
+  EXPECT_EQ(echo.find("NO1xx"), std::string::npos) << echo;
+  DiagnosticSink again;
+  EXPECT_EQ(write_drv_dof(parse(echo, again)), echo);
+  EXPECT_FALSE(again.has_errors());
+}
+
 // Evolution files.
 EvolutionFile evolution(const std::string& text, DiagnosticSink& sink) {
   return parse_evolution(SourceText("vy.dat", text), sink);
