@@ -257,6 +257,14 @@ class BulkBehavParser {
             reader_.report("L1015", *line, 1,
                            static_cast<int>(std::max<std::size_t>(trim_right(text).size(), 1)),
                            "the user material file name is missing");
+          // A quoted name with a blank, comma, slash or quote reads whole, but LMGC90 writes it
+          // unquoted (A50) and reads its own echo as another name (as for MODELS.DAT's user models).
+          else if (block.file_name.value.find_first_of(" ,/'\"") != std::string::npos)
+            reader_.report(
+                "L1017", *line, 1, static_cast<int>(std::max<std::size_t>(trim_right(text).size(), 1)),
+                "user material file name '" + block.file_name.value +
+                    "' holds a blank, comma, slash or quote: LMGC90's echo of it would name another "
+                    "file");
           break;
         }
       }

@@ -31,6 +31,9 @@ class File {
  public:
   explicit File(const std::filesystem::path& path) : path_(path.string()), file_(open(path), H5Fclose) {
     if (!file_.valid()) throw FclibError(path_ + ": not an HDF5 file, or it cannot be opened");
+    std::error_code ec;
+    file_bytes_ = std::filesystem::file_size(path, ec);
+    if (ec) throw FclibError(path_ + ": " + ec.message());
   }
 
   // A regular file only: HDF5 would wait on a FIFO and read a device without end.
@@ -58,6 +61,11 @@ class File {
     Handle space(H5Dget_space(dataset.get()), H5Sclose);
     const hssize_t count = H5Sget_simple_extent_npoints(space.get());
     if (count < 0) throw FclibError(path_ + ": dataset " + name + " has no size");
+    // A damaged header may claim any extent: more values than the file could hold, even compressed
+    // 64 to 1, is a damaged file, refused before the memory is asked for.
+    if (static_cast<std::uintmax_t>(count) > (64 * file_bytes_ + (std::uintmax_t{1} << 20)) / sizeof(T))
+      throw FclibError(path_ + ": dataset " + name + " claims " + std::to_string(count) +
+                       " values, more than the file can hold");
     std::vector<T> values(static_cast<std::size_t>(count));
     const hid_t memory_type = std::is_same_v<T, int> ? H5T_NATIVE_INT : H5T_NATIVE_DOUBLE;
     if (count > 0 && H5Dread(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
@@ -82,6 +90,7 @@ class File {
  private:
   std::string path_;
   Handle file_;
+  std::uintmax_t file_bytes_ = 0;
 };
 
 // Compressed rows from (row, column, value) triplets; duplicates are kept (the block builder sums them).

@@ -74,6 +74,31 @@ TEST(FclibReader, ValuesNoSolveCanTakeAreRefused) {
   EXPECT_THROW(read_fclib_local(one_contact("guesses.hdf5", {0.0, -1.0, 0.0}, 0.3, 2000000000)), FclibError);
 }
 
+// A dataset whose header claims far more values than the file holds (a chunked extent of 2^40 with
+// no chunk written: the file stays small): refused before memory is asked for (a fuzz finding: a
+// damaged header made the reader ask for 2 TB).
+TEST(FclibReader, ADatasetClaimingMoreValuesThanTheFileHoldsIsRefused) {
+  const fs::path path = test::scratch_dir("fclib_damaged") / "huge_extent.hdf5";
+  const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  H5Gclose(H5Gcreate2(file, "/fclib_local", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  const hsize_t extent = hsize_t{1} << 40, chunk = 1024;
+  const hid_t space = H5Screate_simple(1, &extent, nullptr);
+  const hid_t properties = H5Pcreate(H5P_DATASET_CREATE);
+  H5Pset_chunk(properties, 1, &chunk);
+  const hid_t set =
+      H5Dcreate2(file, "/fclib_local/spacedim", H5T_NATIVE_INT, space, H5P_DEFAULT, properties, H5P_DEFAULT);
+  H5Dclose(set);
+  H5Pclose(properties);
+  H5Sclose(space);
+  H5Fclose(file);
+  try {
+    read_fclib_local(path);
+    ADD_FAILURE() << "read";
+  } catch (const FclibError& e) {
+    EXPECT_NE(std::string(e.what()).find("more than the file can hold"), std::string::npos) << e.what();
+  }
+}
+
 TEST(FclibReader, AFifoIsRefusedWithoutWaiting) {
   const fs::path fifo = test::scratch_dir("fclib_fifo") / "problem.hdf5";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);

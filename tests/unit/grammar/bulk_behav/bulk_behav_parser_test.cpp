@@ -412,6 +412,12 @@ TEST(BulkBehavBroken, DensityShiftedOneColumnRight) {
 TEST(BulkBehavBroken, MissingUserMaterialFileNameLine) {
   expect_diagnostic(law(" Usr01  USER_MAT                        Umas= 0.1000000D+01\n"), "L1006", 4, 60);
 }
+// LMGC90 writes the file name unquoted (A50) and would read its own echo as the name 'a'.
+TEST(BulkBehavBroken, QuotedUserMaterialFileNameWithABlank) {
+  expect_diagnostic(law(" Usr01  USER_MAT                        Umas= 0.1000000D+01\n"
+                        "  'a name, with blanks'\n"),
+                    "L1017", 5, 1);
+}
 TEST(BulkBehavBroken, StrayLineBetweenLaws) {
   expect_diagnostic(kRigid + "stray text\n", "L1019", 5, 1);
 }
