@@ -1,10 +1,17 @@
 #include "solver/io/fclib/fclib_reader.hpp"
 
 #include <hdf5.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
 #include <numeric>
+#include <string>
 
 namespace lmgc::solver {
 
@@ -115,7 +122,7 @@ void rows_from_triplets(int rows, const std::vector<int>& row, const std::vector
 
 }  // namespace
 
-FclibLocalProblem read_fclib_local(const std::filesystem::path& path) {
+static FclibLocalProblem read_in_this_process(const std::filesystem::path& path) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // our messages replace HDF5's stack dumps
   const File file(path);
   if (!file.has("/fclib_local")) {
@@ -203,6 +210,134 @@ FclibLocalProblem read_fclib_local(const std::filesystem::path& path) {
     }
   }
   return problem;
+}
+
+namespace {
+
+// The problem as bytes through a pipe: each vector as its length and its values.
+void put(std::string& out, const void* data, std::size_t bytes) {
+  out.append(static_cast<const char*>(data), bytes);
+}
+template <class T>
+void put_vector(std::string& out, const T* data, std::size_t count) {
+  const std::uint64_t n = count;
+  put(out, &n, sizeof n);
+  put(out, data, count * sizeof(T));
+}
+std::string serialised(const FclibLocalProblem& p) {
+  std::string out;
+  put(out, &p.space_dimension, sizeof p.space_dimension);
+  put(out, &p.size, sizeof p.size);
+  put_vector(out, p.row_pointer.data(), p.row_pointer.size());
+  put_vector(out, p.column_index.data(), p.column_index.size());
+  put_vector(out, p.value.data(), p.value.size());
+  put_vector(out, p.q.data(), static_cast<std::size_t>(p.q.size()));
+  put_vector(out, p.mu.data(), static_cast<std::size_t>(p.mu.size()));
+  const char has_r = p.solution_r.has_value(), has_u = p.solution_u.has_value();
+  put(out, &has_r, 1);
+  if (has_r) put_vector(out, p.solution_r->data(), static_cast<std::size_t>(p.solution_r->size()));
+  put(out, &has_u, 1);
+  if (has_u) put_vector(out, p.solution_u->data(), static_cast<std::size_t>(p.solution_u->size()));
+  const std::uint64_t guesses = p.guesses_r.size();
+  put(out, &guesses, sizeof guesses);
+  for (const Eigen::VectorXd& g : p.guesses_r) put_vector(out, g.data(), static_cast<std::size_t>(g.size()));
+  return out;
+}
+
+struct Reader {
+  const std::string& bytes;
+  std::size_t at = 0;
+  void get(void* data, std::size_t n) {
+    if (at + n > bytes.size()) throw FclibError("the FCLIB reader's output is cut short");
+    std::memcpy(data, bytes.data() + at, n);
+    at += n;
+  }
+  template <class T>
+  std::vector<T> vector() {
+    std::uint64_t n = 0;
+    get(&n, sizeof n);
+    if (n > (bytes.size() - at) / sizeof(T)) throw FclibError("the FCLIB reader's output is cut short");
+    std::vector<T> out(static_cast<std::size_t>(n));
+    get(out.data(), out.size() * sizeof(T));
+    return out;
+  }
+  Eigen::VectorXd eigen() {
+    const std::vector<double> v = vector<double>();
+    return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+  }
+};
+
+FclibLocalProblem deserialised(const std::string& bytes) {
+  Reader r{bytes};
+  FclibLocalProblem p;
+  r.get(&p.space_dimension, sizeof p.space_dimension);
+  r.get(&p.size, sizeof p.size);
+  p.row_pointer = r.vector<int>();
+  p.column_index = r.vector<int>();
+  p.value = r.vector<double>();
+  p.q = r.eigen();
+  p.mu = r.eigen();
+  char has = 0;
+  r.get(&has, 1);
+  if (has) p.solution_r = r.eigen();
+  r.get(&has, 1);
+  if (has) p.solution_u = r.eigen();
+  std::uint64_t guesses = 0;
+  r.get(&guesses, sizeof guesses);
+  for (std::uint64_t k = 0; k < guesses; ++k) p.guesses_r.push_back(r.eigen());
+  return p;
+}
+
+}  // namespace
+
+FclibLocalProblem read_fclib_local(const std::filesystem::path& path) {
+  // libhdf5 can crash on a damaged file (fuzzing found a read through a damaged symbol table that
+  // dereferences null inside the library): the file is read in a child process, and a child that
+  // does not end normally makes the file refused, as damaged, instead of taking the program down.
+  int pipe_ends[2];
+  if (pipe(pipe_ends) != 0) throw FclibError(path.string() + ": cannot open a pipe to read it");
+  std::fflush(nullptr);
+  const pid_t child = fork();
+  if (child < 0) {
+    close(pipe_ends[0]);
+    close(pipe_ends[1]);
+    throw FclibError(path.string() + ": cannot start the process that reads it");
+  }
+  if (child == 0) {
+    close(pipe_ends[0]);
+    std::string message;
+    try {
+      message = "P" + serialised(read_in_this_process(path));
+    } catch (const std::exception& e) {
+      message = std::string("E") + e.what();
+    }
+    for (std::size_t written = 0; written < message.size();) {
+      const ssize_t n = write(pipe_ends[1], message.data() + written, message.size() - written);
+      if (n <= 0) _exit(2);
+      written += static_cast<std::size_t>(n);
+    }
+    _exit(0);
+  }
+  close(pipe_ends[1]);
+  std::string message;
+  char buffer[65536];
+  for (ssize_t n; (n = read(pipe_ends[0], buffer, sizeof buffer)) != 0;) {
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      break;
+    }
+    message.append(buffer, static_cast<std::size_t>(n));
+  }
+  close(pipe_ends[0]);
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || message.empty())
+    throw FclibError(path.string() + ": a damaged HDF5 file (the HDF5 library failed while reading it" +
+                     (WIFSIGNALED(status) ? ", signal " + std::to_string(WTERMSIG(status)) : std::string()) +
+                     ")");
+  if (message[0] == 'E') throw FclibError(message.substr(1));
+  return deserialised(message.substr(1));
 }
 
 }  // namespace lmgc::solver

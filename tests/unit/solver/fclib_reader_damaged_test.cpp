@@ -99,6 +99,19 @@ TEST(FclibReader, ADatasetClaimingMoreValuesThanTheFileHoldsIsRefused) {
   }
 }
 
+// A file whose damaged symbol table makes libhdf5 itself crash (a fuzz finding: a null read inside
+// H5G__stab_lookup): the read runs in a child process, so the file is refused as damaged.
+TEST(FclibReader, AFileThatCrashesTheHdf5LibraryIsRefusedAsDamaged) {
+  const fs::path seed =
+      fs::path(LMGC_SOURCE_DIR) / "fuzz" / "seeds" / "fclib" / "damaged_symbol_table_crashing_libhdf5";
+  try {
+    read_fclib_local(seed);
+    ADD_FAILURE() << "read";
+  } catch (const FclibError& e) {
+    EXPECT_NE(std::string(e.what()).find("damaged HDF5 file"), std::string::npos) << e.what();
+  }
+}
+
 TEST(FclibReader, AFifoIsRefusedWithoutWaiting) {
   const fs::path fifo = test::scratch_dir("fclib_fifo") / "problem.hdf5";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
