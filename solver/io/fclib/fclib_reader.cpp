@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -305,6 +306,10 @@ FclibLocalProblem read_fclib_local(const std::filesystem::path& path) {
   }
   if (child == 0) {
     close(pipe_ends[0]);
+    // A fault ends the child plainly: handlers inherited from the program (a sanitizer's, a fuzzer's)
+    // would report the library's crash as the program's.
+    for (const int signal_number : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT})
+      std::signal(signal_number, SIG_DFL);
     std::string message;
     try {
       message = "P" + serialised(read_in_this_process(path));

@@ -38,7 +38,8 @@ void write_doubles(hid_t file, const char* name, const std::vector<double>& valu
 
 // One 3D contact: W the identity (triplets), q and mu as given.
 fs::path one_contact(const std::string& name, const std::vector<double>& q, double mu, int guesses = -1) {
-  const fs::path path = test::scratch_dir("fclib_damaged") / name;
+  // A folder per file: the tests run in parallel, and a scratch folder is emptied when it is made.
+  const fs::path path = test::scratch_dir("fclib_damaged_" + name) / name;
   const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   for (const char* group : {"/fclib_local", "/fclib_local/W", "/fclib_local/vectors"})
     H5Gclose(H5Gcreate2(file, group, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
@@ -78,7 +79,7 @@ TEST(FclibReader, ValuesNoSolveCanTakeAreRefused) {
 // no chunk written: the file stays small): refused before memory is asked for (a fuzz finding: a
 // damaged header made the reader ask for 2 TB).
 TEST(FclibReader, ADatasetClaimingMoreValuesThanTheFileHoldsIsRefused) {
-  const fs::path path = test::scratch_dir("fclib_damaged") / "huge_extent.hdf5";
+  const fs::path path = test::scratch_dir("fclib_huge_extent") / "huge_extent.hdf5";
   const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   H5Gclose(H5Gcreate2(file, "/fclib_local", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   const hsize_t extent = hsize_t{1} << 40, chunk = 1024;
