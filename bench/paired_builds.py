@@ -20,34 +20,12 @@ import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SHARED = os.environ.get("LMGC_SHARED_DIR", os.path.join(os.path.dirname(ROOT), "shared"))
-EXAMPLES = os.path.join(SHARED, "lmgc90-examples")
-
-
-def cases(only):
-    out = []
-    for dimension in ("RIGID_2D", "RIGID_3D"):
-        folder = os.path.join(EXAMPLES, dimension)
-        if not os.path.isdir(folder):
-            continue
-        for name in sorted(os.listdir(folder)):
-            if only and only not in name:
-                continue
-            if os.path.isdir(os.path.join(folder, name, "DATBOX")):
-                out.append(os.path.join(dimension, name))
-    return out
+from lmgc90_examples import EXAMPLES, prepare_case, rigid_examples
 
 
 def run(solve, case, steps, work):
     """Runs one case; returns (seconds per step, OUTBOX folder)."""
-    if os.path.exists(work):
-        shutil.rmtree(work)
-    source = os.path.join(EXAMPLES, case)
-    os.makedirs(work)
-    shutil.copytree(os.path.join(source, "DATBOX"), os.path.join(work, "DATBOX"))
-    if os.path.exists(os.path.join(source, "command.py")):
-        shutil.copy(os.path.join(source, "command.py"), work)
+    prepare_case(os.path.join(EXAMPLES, case), work)
     # No periodic files: only the state at the end is compared.
     subprocess.run([solve, "--quiet", "--steps", str(steps), "--write-every", "0", "--display-every", "0",
                     work], check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
@@ -74,7 +52,7 @@ def main():
     rows = []
     print("| example | DOF.LAST | Vloc_Rloc.LAST | B/A time per step, min | median |")
     print("| --- | --- | --- | --- | --- |")
-    for case in cases(args.only):
+    for case in rigid_examples(args.only):
         ratios = []
         same = {"DOF.LAST": True, "Vloc_Rloc.LAST": True}
         for k in range(args.rounds):

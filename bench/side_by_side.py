@@ -27,9 +27,8 @@ import sys
 import tempfile
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SHARED = os.environ.get("LMGC_SHARED_DIR", os.path.join(os.path.dirname(ROOT), "shared"))
-EXAMPLES = os.path.join(SHARED, "lmgc90-examples")
+from lmgc90_examples import EXAMPLES, ROOT, prepare_case, rigid_examples
+
 LOOP = re.compile(r"^(\s*)for\s+\w+\s+in\s+range\(.*\)\s*:\s*$")
 
 
@@ -61,17 +60,6 @@ def timed_script(text, steps):
         out.extend(lines[k:])
         break
     return "\n".join(out) + "\n"
-
-
-def prepare(case, work, steps):
-    if os.path.exists(work):
-        shutil.rmtree(work)
-    os.makedirs(work)
-    shutil.copytree(os.path.join(case, "DATBOX"), os.path.join(work, "DATBOX"))
-    with open(os.path.join(case, "command.py")) as f:
-        script = timed_script(f.read(), steps)
-    with open(os.path.join(work, "command.py"), "w") as f:
-        f.write(script)
 
 
 def run_lmgc90(work, lmgc90, steps):
@@ -109,18 +97,6 @@ def run_lmgc(work, build, steps):
     return seconds, (statistics.median(checked) if checked else None)
 
 
-def cases(only):
-    out = []
-    for dimension in ("RIGID_2D", "RIGID_3D"):
-        folder = os.path.join(EXAMPLES, dimension)
-        for name in sorted(os.listdir(folder)) if os.path.isdir(folder) else []:
-            if only and only not in name:
-                continue
-            if os.path.exists(os.path.join(folder, name, "command.py")):
-                out.append(os.path.join(dimension, name))
-    return out
-
-
 def fmt(x, digits=3):
     return "—" if x is None else f"{x:.{digits}g}"
 
@@ -143,7 +119,7 @@ def main():
           "| check norm LMGC90 / lmgc |")
     print("| --- | --- | --- | --- | --- |")
     rows = []
-    for case in cases(args.only):
+    for case in rigid_examples(args.only):
         theirs, ours, ratios = [], [], []
         norm_theirs = norm_ours = None
         for k in range(args.rounds):
@@ -151,7 +127,7 @@ def main():
             result = {}
             for which in order:
                 work = os.path.join(scratch, which)
-                prepare(os.path.join(EXAMPLES, case), work, args.steps)
+                prepare_case(os.path.join(EXAMPLES, case), work, lambda text: timed_script(text, args.steps))
                 if which == "lmgc90":
                     result[which] = run_lmgc90(work, args.lmgc90, args.steps)
                 else:

@@ -30,13 +30,14 @@ import datetime
 import os
 import platform
 import re
-import shutil
 import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SHARED = os.environ.get("LMGC_SHARED_DIR", os.path.join(os.path.dirname(ROOT), "shared"))
 EXAMPLES = os.path.join(SHARED, "lmgc90-examples")
+sys.path.insert(0, os.path.join(ROOT, "bench"))
+from lmgc90_examples import prepare_case  # noqa: E402
 MACHINE = os.environ.get("LMGC_MACHINE", "debian12-2core")
 
 # A number as LMGC90 writes it: 0.1234567D+01 (mantissa and exponent kept apart for the last digit).
@@ -103,14 +104,7 @@ def edit_script(text, steps):
 
 
 def prepare(case, work, steps):
-    if os.path.exists(work):
-        shutil.rmtree(work)
-    os.makedirs(work)
-    shutil.copytree(os.path.join(case, "DATBOX"), os.path.join(work, "DATBOX"))
-    with open(os.path.join(case, "command.py")) as f:
-        script = edit_script(f.read(), steps)
-    with open(os.path.join(work, "command.py"), "w") as f:
-        f.write(script)
+    prepare_case(case, work, lambda text: edit_script(text, steps))
 
 
 def run_lmgc90(work, lmgc90_build, timeout):
