@@ -453,7 +453,12 @@ void apply_command_parameters(const grammar::CommandFile& command, std::string_v
                               RunOptions& options, grammar::DiagnosticSink& sink, ParameterSources* sources) {
   // The file's own faults (an APPELLE without its label, ...) are lmgc-check's to report.
   grammar::DiagnosticSink expansion(static_cast<std::size_t>(-1));
-  const grammar::CommandRunParameters p = grammar::command_run_parameters(command, expansion);
+  apply_command_parameters(grammar::command_run_parameters(command, expansion), path, three_d, options, sink,
+                           sources);
+}
+
+void apply_command_parameters(const grammar::CommandRunParameters& p, std::string_view path, bool three_d,
+                              RunOptions& options, grammar::DiagnosticSink& sink, ParameterSources* sources) {
   const auto line_of = [&](std::string_view name) {
     const auto it = p.lines.find(name);
     return it == p.lines.end() ? 0u : it->second;

@@ -114,4 +114,9 @@ std::string run_parameters_csv(const RunOptions& options, const ParameterSources
 void apply_command_parameters(const grammar::CommandFile& command, std::string_view path, bool three_d,
                               RunOptions& options, grammar::DiagnosticSink& sink,
                               ParameterSources* sources = nullptr);
+// The same from the parameters of an expanded COMMAND.DAT (grammar::command_run_parameters), for a
+// caller that reads them too.
+void apply_command_parameters(const grammar::CommandRunParameters& parameters, std::string_view path,
+                              bool three_d, RunOptions& options, grammar::DiagnosticSink& sink,
+                              ParameterSources* sources = nullptr);
 }  // namespace lmgc::run

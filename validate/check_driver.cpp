@@ -80,10 +80,11 @@ void check_command_dat_parameters(const CaseFiles& files, grammar::DiagnosticSin
   bool three_d = files.bodies && !files.bodies->bodies.empty();
   if (files.bodies)
     for (const auto& b : files.bodies->bodies) three_d &= b.type == grammar::BodyType::rbdy3;
-  run::RunOptions scratch;
-  run::apply_command_parameters(*files.command, path, three_d, scratch, sink);
+  // The file's own faults (an APPELLE without its label, ...) are reported by its grammar's checks.
   grammar::DiagnosticSink quiet(static_cast<std::size_t>(-1));
   const grammar::CommandRunParameters p = grammar::command_run_parameters(*files.command, quiet);
+  run::RunOptions scratch;
+  run::apply_command_parameters(p, path, three_d, scratch, sink);
   if (p.lines.count("solver_type")) {
     std::string storage = p.storage;
     while (!storage.empty() && storage.back() == ' ') storage.pop_back();

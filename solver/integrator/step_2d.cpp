@@ -28,15 +28,15 @@ double DrivenDof2D::value(double t) const {
   return (k[0] + k[1] * std::cos(k[2] * t + k[3])) * std::min(1.0, k[4] + k[5] * t);
 }
 
-void increment_step(Scene2D& scene, RunState2D& state) {
-  state.time += state.h;
-  ++state.step;
+void increment_step(Scene2D& scene, StepContext& step) {
+  step.time += step.h;
+  ++step.step;
   RigidBodies2D& b = scene.bodies;
   std::fill(b.impulse.begin(), b.impulse.end(), Vector3d::Zero());
   b.velocity = b.velocity_begin;
 }
 
-void compute_external_forces(Scene2D& scene, const RunState2D& state) {
+void compute_external_forces(Scene2D& scene, const StepContext& step) {
   RigidBodies2D& b = scene.bodies;
   for (std::size_t i = 0; i < b.size(); ++i)
     b.external_force[i] = Vector3d(b.mass[i] * scene.gravity.x(), b.mass[i] * scene.gravity.y(), 0.0);
@@ -44,19 +44,19 @@ void compute_external_forces(Scene2D& scene, const RunState2D& state) {
   for (const DrivenDof2D& d : scene.driven)
     if (d.is_force)
       b.external_force[static_cast<std::size_t>(d.body)](d.dof) +=
-          (1.0 - state.theta) * d.value(state.time - state.h) + state.theta * d.value(state.time);
+          (1.0 - step.theta) * d.value(step.begin_time()) + step.theta * d.value(step.time);
 }
 
-void compute_free_velocity(Scene2D& scene, const RunState2D& state) {
+void compute_free_velocity(Scene2D& scene, const StepContext& step) {
   RigidBodies2D& b = scene.bodies;
   for (std::size_t i = 0; i < b.size(); ++i)
     b.velocity_free[i] =
         b.visible[i]
-            ? Vector3d(b.velocity_begin[i] + state.h * b.inverse_mass[i].cwiseProduct(b.external_force[i]))
+            ? Vector3d(b.velocity_begin[i] + step.h * b.inverse_mass[i].cwiseProduct(b.external_force[i]))
             : Vector3d::Zero();
   for (const DrivenDof2D& d : scene.driven)
     if (!d.is_force && b.visible[static_cast<std::size_t>(d.body)])
-      b.velocity_free[static_cast<std::size_t>(d.body)](d.dof) = d.value(state.time);
+      b.velocity_free[static_cast<std::size_t>(d.body)](d.dof) = d.value(step.time);
 }
 
 void select_prox_tactors(Scene2D& scene, RunState2D& state) {
@@ -192,12 +192,12 @@ void stock_rloc(RunState2D& state) {
   state.contacts_stored = true;
 }
 
-void compute_dof(Scene2D& scene, const RunState2D& state) {
+void compute_dof(Scene2D& scene, const StepContext& step) {
   RigidBodies2D& b = scene.bodies;
   for (std::size_t i = 0; i < b.size(); ++i)
     if (b.visible[i])
       b.displacement[i] = b.displacement_begin[i] +
-                          state.h * ((1.0 - state.theta) * b.velocity_begin[i] + state.theta * b.velocity[i]);
+                          step.h * ((1.0 - step.theta) * b.velocity_begin[i] + step.theta * b.velocity[i]);
   apply_bounds(scene);
 }
 
@@ -240,16 +240,33 @@ void update_step(Scene2D& scene) {
   b.velocity_begin = b.velocity;
 }
 
+namespace {
+// LMGC90's macro time loop, one row per call of its command.py (IncrementStep ... UpdateStep).
+constexpr std::array<StepStage2D, 9> kStages2D{{
+    {"IncrementStep",
+     [](Scene2D& s, RunState2D& st, const NlgsOptions&, NlgsResult&) { increment_step(s, st); }},
+    {"ComputeFext",
+     [](Scene2D& s, RunState2D& st, const NlgsOptions&, NlgsResult&) { compute_external_forces(s, st); }},
+    {"ComputeFreeVelocity",
+     [](Scene2D& s, RunState2D& st, const NlgsOptions&, NlgsResult&) { compute_free_velocity(s, st); }},
+    {"SelectProxTactors",
+     [](Scene2D& s, RunState2D& st, const NlgsOptions&, NlgsResult&) { select_prox_tactors(s, st); }},
+    {"RecupRloc", [](Scene2D&, RunState2D& st, const NlgsOptions&, NlgsResult&) { recup_rloc(st); }},
+    {"ExSolver",
+     [](Scene2D& s, RunState2D& st, const NlgsOptions& o, NlgsResult& r) { r = solve_contacts(s, st, o); }},
+    {"StockRloc", [](Scene2D&, RunState2D& st, const NlgsOptions&, NlgsResult&) { stock_rloc(st); }},
+    {"ComputeDof", [](Scene2D& s, RunState2D& st, const NlgsOptions&, NlgsResult&) { compute_dof(s, st); }},
+    {"UpdateStep", [](Scene2D& s, RunState2D&, const NlgsOptions&, NlgsResult&) { update_step(s); }},
+}};
+}  // namespace
+
+std::span<const StepStage2D> step_stages_2d() {
+  return kStages2D;
+}
+
 NlgsResult step_2d(Scene2D& scene, RunState2D& state, const NlgsOptions& options) {
-  increment_step(scene, state);
-  compute_external_forces(scene, state);
-  compute_free_velocity(scene, state);
-  select_prox_tactors(scene, state);
-  recup_rloc(state);
-  NlgsResult result = solve_contacts(scene, state, options);
-  stock_rloc(state);
-  compute_dof(scene, state);
-  update_step(scene);
+  NlgsResult result;
+  for (const StepStage2D& stage : kStages2D) stage.run(scene, state, options, result);
   return result;
 }
 

@@ -1,6 +1,7 @@
 #include "solver/integrator/step_3d.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -20,44 +21,44 @@ constexpr double kRecupSquaredDistance = 1e-6;
 
 }  // namespace
 
-void increment_step(Scene3D& scene, RunState3D& state) {
+void increment_step(Scene3D& scene, StepContext& step) {
   RigidBodies3D& b = scene.bodies;
-  state.time += state.h;
-  ++state.step;
+  step.time += step.h;
+  ++step.step;
   for (std::size_t i = 0; i < b.size(); ++i) {
     b.displacement[i] = b.displacement_begin[i];
     b.velocity[i] = b.velocity_begin[i];
     b.impulse[i].setZero();
   }
   // Driven velocities hold at t_begin too (LMGC90 imposes them over DOF.INI's values).
-  const double t_begin = state.time - state.h;
+  const double t_begin = step.begin_time();
   for (const DrivenDof2D& d : scene.driven)
     if (!d.is_force) b.velocity_begin[static_cast<std::size_t>(d.body)](d.dof) = d.value(t_begin);
 }
 
-void compute_external_forces(Scene3D& scene, const RunState3D& state) {
+void compute_external_forces(Scene3D& scene, const StepContext& step) {
   RigidBodies3D& b = scene.bodies;
   for (std::size_t i = 0; i < b.size(); ++i) {
     Vector6d f;
     f << b.mass[i] * scene.gravity, gyroscopic_torque(b.inertia[i], b.velocity_begin[i].tail<3>());
     b.external_force[i] = b.visible[i] ? f : Vector6d::Zero();  // invisible bodies wait (source point)
   }
-  const double t_begin = state.time - state.h;
+  const double t_begin = step.begin_time();
   for (const DrivenDof2D& d : scene.driven)
     if (d.is_force)
       b.external_force[static_cast<std::size_t>(d.body)](d.dof) +=
-          (1.0 - state.theta) * d.value(t_begin) + state.theta * d.value(state.time);
+          (1.0 - step.theta) * d.value(t_begin) + step.theta * d.value(step.time);
 }
 
-void compute_free_velocity(Scene3D& scene, const RunState3D& state) {
+void compute_free_velocity(Scene3D& scene, const StepContext& step) {
   RigidBodies3D& b = scene.bodies;
   for (std::size_t i = 0; i < b.size(); ++i) {
-    b.velocity_free[i] = b.velocity_begin[i] + state.h * b.inverse_mass[i].cwiseProduct(b.external_force[i]);
+    b.velocity_free[i] = b.velocity_begin[i] + step.h * b.inverse_mass[i].cwiseProduct(b.external_force[i]);
     for (int d = 0; d < 6; ++d)
       if (b.driven_mask[i] & (1u << d)) b.velocity_free[i](d) = 0.0;
   }
   for (const DrivenDof2D& d : scene.driven)
-    if (!d.is_force) b.velocity_free[static_cast<std::size_t>(d.body)](d.dof) = d.value(state.time);
+    if (!d.is_force) b.velocity_free[static_cast<std::size_t>(d.body)](d.dof) = d.value(step.time);
   b.velocity = b.velocity_free;
 }
 
@@ -109,9 +110,9 @@ void recup_rloc(RunState3D& state) {
   }
 }
 
-void compute_dof(Scene3D& scene, const RunState3D& state) {
+void compute_dof(Scene3D& scene, const StepContext& step) {
   RigidBodies3D& b = scene.bodies;
-  const double h = state.h, theta = state.theta;
+  const double h = step.h, theta = step.theta;
   for (std::size_t i = 0; i < b.size(); ++i) {
     if (!b.visible[i]) continue;  // comp_dof_RBDY3 skips invisible bodies
     b.displacement[i].head<3>() =
@@ -191,16 +192,37 @@ void check_source_point(Scene3D& scene) {
   b.displacement[next].head<3>() = s.point;
 }
 
+namespace {
+// LMGC90's macro time loop, one row per call of its command.py (IncrementStep ... UpdateStep).
+constexpr std::array<StepStage3D, 8> kStages3D{{
+    {"IncrementStep",
+     [](Scene3D& s, RunState3D& st, const NlgsOptions&, NlgsResult&) { increment_step(s, st); }},
+    {"ComputeFext",
+     [](Scene3D& s, RunState3D& st, const NlgsOptions&, NlgsResult&) { compute_external_forces(s, st); }},
+    {"ComputeFreeVelocity",
+     [](Scene3D& s, RunState3D& st, const NlgsOptions&, NlgsResult&) { compute_free_velocity(s, st); }},
+    {"SelectProxTactors",
+     [](Scene3D& s, RunState3D& st, const NlgsOptions&, NlgsResult&) { select_prox_tactors(s, st); }},
+    {"RecupRloc", [](Scene3D&, RunState3D& st, const NlgsOptions&, NlgsResult&) { recup_rloc(st); }},
+    {"ExSolver",
+     [](Scene3D& s, RunState3D& st, const NlgsOptions& o, NlgsResult& r) { r = solve_contacts(s, st, o); }},
+    // comp_dof_RBDY3 ends with the source point's check.
+    {"ComputeDof",
+     [](Scene3D& s, RunState3D& st, const NlgsOptions&, NlgsResult&) {
+       compute_dof(s, st);
+       if (s.source.active) check_source_point(s);
+     }},
+    {"UpdateStep", [](Scene3D& s, RunState3D& st, const NlgsOptions&, NlgsResult&) { update_step(s, st); }},
+}};
+}  // namespace
+
+std::span<const StepStage3D> step_stages_3d() {
+  return kStages3D;
+}
+
 NlgsResult step_3d(Scene3D& scene, RunState3D& state, const NlgsOptions& options) {
-  increment_step(scene, state);
-  compute_external_forces(scene, state);
-  compute_free_velocity(scene, state);
-  select_prox_tactors(scene, state);
-  recup_rloc(state);
-  const NlgsResult result = solve_contacts(scene, state, options);
-  compute_dof(scene, state);
-  if (scene.source.active) check_source_point(scene);
-  update_step(scene, state);
+  NlgsResult result;
+  for (const StepStage3D& stage : kStages3D) stage.run(scene, state, options, result);
   return result;
 }
 

@@ -1,18 +1,15 @@
 #pragma once
-// What a rigid 3D run carries from stage to stage and from step to step: time, the step's
+// What a rigid 3D run carries from stage to stage and from step to step: the step's clock, its
 // interactions and their law states, the verlet list of the last step.
 #include "solver/detection/visibility_index_3d.hpp"
 #include "solver/model/interaction_3d.hpp"
 #include "solver/model/large_array.hpp"
+#include "solver/model/step_context.hpp"
 #include "solver/nlgs/quick_scramble.hpp"
 
 namespace lmgc::solver {
 
-struct RunState3D {
-  double time = 0.0;
-  long step = 0;
-  double h = 1e-3;
-  double theta = 0.5;
+struct RunState3D : StepContext {
   LargeArray<Interaction3D> contacts;
   // The interactions' law states, index for index; empty in a scene whose laws keep none
   // (keeps_law_state_3d).
