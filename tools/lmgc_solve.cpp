@@ -48,6 +48,31 @@ const CLI::Validator kFinite(
     },
     "FINITE");
 
+// Runs CASE_DIR/command.py with lmgc-run (next to this program): lmgc-run's exit code, or 5 when
+// this build has no Python module.
+int run_script(const std::string& case_dir, long max_steps, bool quiet) {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::filesystem::path lmgc_run = self.parent_path() / "lmgc-run";
+  if (ec || !std::filesystem::exists(lmgc_run)) {
+    std::cerr
+        << "lmgc-solve: refused: the case is driven by its command.py, which lmgc runs with its chipy "
+           "module (lmgc-run), and this build has none (it needs python3-dev and pybind11-dev when "
+           "configured); --read-script runs lmgc-solve's own loop with the script's literal parameters\n";
+    return kExitRefused;
+  }
+  std::vector<std::string> args{lmgc_run.string(), case_dir};
+  if (max_steps >= 0) args.insert(args.end(), {"--max-steps", std::to_string(max_steps)});
+  if (quiet) args.push_back("--quiet");
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::fflush(nullptr);
+  execv(lmgc_run.c_str(), argv.data());
+  std::cerr << "lmgc-solve: cannot run " << lmgc_run << "\n";
+  return kExitRefused;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -111,6 +136,11 @@ int main(int argc, char** argv) {
   app.add_flag("--no-command-dat", no_command_dat,
                "do not read DATBOX/COMMAND.DAT (LMGC90 2025 no longer reads it): the run takes its "
                "parameters from the defaults and the flags only");
+  bool read_script = false;
+  app.add_flag(
+      "--read-script", read_script,
+      "with a command.py: read the run parameters it passes as literals and run lmgc-solve's own loop "
+      "(with the flags given), instead of running the script (lmgc-run); run-parameter flags imply it");
   app.add_flag("--command-dat", command_dat,
                "take the run parameters from DATBOX/COMMAND.DAT even when the case has a command.py (the "
                "legacy driver of LMGC90 before 2025)");
@@ -124,9 +154,12 @@ int main(int argc, char** argv) {
       "50\n"
       "--gs-it2 500), then the case's driver, then the flags given here. The driver is CASE_DIR/command.py "
       "when it\n"
-      "exists (read, not run: the literals its chipy calls pass, and the count of its step loop; what it "
-      "computes\n"
-      "is named, L4013), else DATBOX/COMMAND.DAT (TIME STEP, THETA, the step loop's REPETE count, NLGS "
+      "exists: run, unchanged, with lmgc's chipy module (lmgc-run; --steps N ends it after N steps, .LAST "
+      "written);\n"
+      "with --read-script or any run-parameter flag it is read instead (the literals its chipy calls pass, "
+      "and the\n"
+      "count of its step loop; what it computes is named, L4013). Without command.py: DATBOX/COMMAND.DAT "
+      "(TIME STEP, THETA, the step loop's REPETE count, NLGS "
       "CHECK TYPE,\n"
       "the NLGS loops, WRITE OUT DOF STEP, ...; not with --no-command-dat; before the script with "
       "--command-dat).\n"
@@ -160,9 +193,22 @@ int main(int argc, char** argv) {
     std::cerr << "lmgc-solve: --command-dat and --no-command-dat exclude each other\n";
     return kExitUsage;
   }
-  // The driver of the run: the case's command.py (as LMGC90 2025), or COMMAND.DAT.
-  const validate::CheckOptions check_options{!no_command_dat, command_dat};
+  // The driver of the run: the case's command.py (as LMGC90 2025), or COMMAND.DAT. The script runs
+  // through lmgc's chipy module (lmgc-run) unless flags ask for lmgc-solve's own loop: a run
+  // parameter, --strict, or --read-script; then it is read, not run.
+  bool own_loop_flags = read_script || app.count("--strict") > 0 || app.count("--source-point") > 0 ||
+                        app.count("--source-point-relative") > 0;
+  for (const run::RunParameter& p : run::run_parameters())
+    if (!p.flag.empty() && p.flag != "--steps" && app.count(std::string(p.flag))) own_loop_flags = true;
+  validate::CheckOptions check_options{!no_command_dat, command_dat};
   const bool script_drives = files && validate::script_drives(*files, check_options);
+  const bool script_runs = script_drives && !own_loop_flags;
+  check_options.script_read_only = script_drives && own_loop_flags;
+  if (script_runs) {
+    // Its calls are checked as it runs (chipy/session.hpp); COMMAND.DAT is not read.
+    files->command_script.reset();
+    files->command.reset();
+  }
   if (files) validate::check_case(*files, sink, check_options);
   const bool three_d = files && solver::is_rigid_3d_case(*files);
 
@@ -197,11 +243,14 @@ int main(int argc, char** argv) {
     // on the command line.
     run::RunOptions from_file;  // the defaults
     run::ParameterSources file_sources;
-    if (script_drives)
+    if (script_runs) {
+      // The script sets its parameters as it runs.
+    } else if (script_drives) {
       run::apply_script_parameters(*files->command_script, three_d, from_file, file_sources, sink);
-    else if (!no_command_dat && files->command)
+    } else if (!no_command_dat && files->command) {
       run::apply_command_parameters(*files->command, validate::datbox_path(*files, "COMMAND.DAT"), three_d,
                                     from_file, sink, &file_sources);
+    }
     // --source-point FIRST RADIUS X Y Z fills the source point's fields, which the table then takes.
     if (app.count("--source-point")) {
       if (source_point[0] < 1.0 || source_point[1] <= 0.0) {
@@ -285,6 +334,8 @@ int main(int argc, char** argv) {
     return kExitRefused;
   }
 
+  if (script_runs) return run_script(case_dir, app.count("--steps") ? options.steps : -1, options.quiet);
+
   // Outputs: stale temporaries of a killed run first, then the echo files LMGC90 writes when it reads
   // the case, and the run's parameters.
   const std::filesystem::path case_path(case_dir);
@@ -301,7 +352,6 @@ int main(int argc, char** argv) {
     }
   }
   solver::install_interrupt_handler();
-  if (options.new_rotation_scheme) scene_3d.rotation = solver::FrameUpdate::cayley;
   const solver::RunSummary summary =
       three_d ? solver::run_3d(scene_3d, options, outputs_3d) : solver::run_2d(scene, options, outputs);
   if (!options.quiet || summary.failure != solver::RunFailure::none)

@@ -99,7 +99,7 @@ void check_command_dat_parameters(const CaseFiles& files, grammar::DiagnosticSin
 }
 
 // The chipy calls of command.py that ask for what lmgc-solve does not run.
-void check_command_script(const CaseFiles& files, grammar::DiagnosticSink& sink) {
+void check_command_script(const CaseFiles& files, grammar::DiagnosticSink& sink, bool read_only) {
   const grammar::CommandScript& script = *files.command_script;
   std::set<std::string> unknown;
   bool polygons = false;
@@ -121,6 +121,14 @@ void check_command_script(const CaseFiles& files, grammar::DiagnosticSink& sink)
         sink.report("L4005", where,
                     "chipy." + call.name + " " + std::string(f->what) + "; lmgc-solve does not do it yet",
                     "lmgc-solve refuses this case");
+        break;
+      case CommandSupport::script_only:
+        if (read_only)
+          sink.report("L4005", where,
+                      "chipy." + call.name + " " + std::string(f->what) +
+                          "; lmgc-solve reads the script without running it, so it cannot",
+                      "lmgc-solve refuses this run; without --read-script and run-parameter flags it runs "
+                      "command.py (lmgc-run)");
         break;
       case CommandSupport::multiphysics:
         sink.report(
@@ -193,7 +201,7 @@ void check_drivers(const CaseFiles& files, grammar::DiagnosticSink& sink, const 
     check_command_dat_parameters(files, sink);
     check_command_dat_commands(files, sink);
   }
-  if (files.command_script) check_command_script(files, sink);
+  if (files.command_script) check_command_script(files, sink, options.script_read_only);
   check_multiphysics(files, sink);
 }
 

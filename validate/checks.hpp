@@ -15,6 +15,9 @@ struct CheckOptions {
   bool command_dat = true;
   // COMMAND.DAT drives the run even when the case has a command.py (--command-dat).
   bool prefer_command_dat = false;
+  // command.py is read, not run (lmgc-solve --read-script, or run-parameter flags): the calls only
+  // a running script does (PutBodyVector, ...) are refused.
+  bool script_read_only = false;
 };
 
 // The driver whose commands and parameters the run takes: the case's command.py (as LMGC90 2025,

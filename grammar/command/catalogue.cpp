@@ -238,6 +238,8 @@ std::string_view support_name(CommandSupport support) {
       return "warm start differs";
     case CommandSupport::first_only:
       return "before the time loop only";
+    case CommandSupport::script_only:
+      return "when the script runs (lmgc-run)";
     case CommandSupport::not_run:
       return "not run";
     case CommandSupport::multiphysics:

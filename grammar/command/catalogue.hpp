@@ -31,6 +31,9 @@ enum class CommandSupport : std::uint8_t {
   multiphysics,  // thermal or electrical fields (MP_DEM): lmgc-solve refuses the case
   deformable,    // acts on MAILx bodies only (lmgc-solve refuses MAILx cases); nothing otherwise
   control,       // CHIC's own words: the program's structure
+  // A call done when lmgc runs the script (lmgc-run, lmgc-solve's default with a command.py);
+  // refused when lmgc-solve only reads the script's literals (--read-script or run-parameter flags).
+  script_only,
 };
 
 struct CommandKeyword {

@@ -11,8 +11,6 @@
 
 namespace lmgc::solver {
 
-namespace {
-
 std::string non_finite_2d(const Scene2D& scene, const RunState2D&) {
   const RigidBodies2D& b = scene.bodies;
   for (std::size_t i = 0; i < b.size(); ++i) {
@@ -22,14 +20,8 @@ std::string non_finite_2d(const Scene2D& scene, const RunState2D&) {
   return {};
 }
 
-}  // namespace
-
-RunSummary run_2d(Scene2D& scene, const run::RunOptions& options, const RunOutputs2D& outputs) {
-  namespace fs = std::filesystem;
-  const fs::path outbox = outputs.case_dir / "OUTBOX";
-  std::error_code ec;
-  fs::create_directories(outbox, ec);
-
+bool start_run_2d(Scene2D& scene, const run::RunOptions& options, const RunOutputs2D& outputs,
+                  RunState2D& state, RunSummary& summary) {
   scene.y_min = options.y_min;
   scene.y_max = options.y_max;
   scene.x_min = options.x_min;
@@ -42,7 +34,7 @@ RunSummary run_2d(Scene2D& scene, const run::RunOptions& options, const RunOutpu
       scene.bodies.velocity[i].setZero();
     }
 
-  RunState2D state;
+  state = RunState2D{};
   state.step = outputs.initial_step;
   state.time = outputs.initial_time;
   state.h = options.dt;
@@ -53,13 +45,23 @@ RunSummary run_2d(Scene2D& scene, const run::RunOptions& options, const RunOutpu
     const WarmStart2D warm = warm_start_2d(*outputs.warm_start, scene, options.dt);
     store_interactions(state, warm.interactions, warm.law_states);
   }
-
-  RunSummary summary;
   if (outputs.exact_state && !restore_exact_state(*outputs.exact_state, scene, state, summary.error)) {
     summary.error = "DATBOX/EXACT_STATE.INI: " + summary.error;
     summary.failure = RunFailure::data;
-    return summary;
+    return false;
   }
+  return true;
+}
+
+RunSummary run_2d(Scene2D& scene, const run::RunOptions& options, const RunOutputs2D& outputs) {
+  namespace fs = std::filesystem;
+  const fs::path outbox = outputs.case_dir / "OUTBOX";
+  std::error_code ec;
+  fs::create_directories(outbox, ec);
+
+  RunSummary summary;
+  RunState2D state;
+  if (!start_run_2d(scene, options, outputs, state, summary)) return summary;
   Postpro2D postpro;
   if (!outputs.postpro.empty() &&
       !postpro.open(outputs.case_dir / "POSTPRO", outputs.postpro, summary.error)) {

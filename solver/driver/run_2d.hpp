@@ -31,6 +31,15 @@ struct RunOutputs2D {
   const grammar::VlocRlocFile* warm_start = nullptr;
 };
 
+// Before the first step: the run's options on the scene (bounds, period), the state at DOF.INI's
+// step and time, the warm start of Vloc_Rloc.INI, EXACT_STATE.INI. False, with the summary's
+// failure set, when the case cannot start.
+bool start_run_2d(Scene2D& scene, const run::RunOptions& options, const RunOutputs2D& outputs,
+                  RunState2D& state, RunSummary& summary);
+
+// The first body whose state is not finite, as "body N: velocity V" (empty when every one is).
+std::string non_finite_2d(const Scene2D& scene, const RunState2D& state);
+
 RunSummary run_2d(Scene2D& scene, const run::RunOptions& options, const RunOutputs2D& outputs);
 
 }  // namespace lmgc::solver

@@ -12,8 +12,6 @@
 
 namespace lmgc::solver {
 
-namespace {
-
 std::string non_finite_3d(const Scene3D& scene, const RunState3D&) {
   const RigidBodies3D& b = scene.bodies;
   for (std::size_t i = 0; i < b.size(); ++i) {
@@ -24,15 +22,9 @@ std::string non_finite_3d(const Scene3D& scene, const RunState3D&) {
   return {};
 }
 
-}  // namespace
-
-RunSummary run_3d(Scene3D& scene, const run::RunOptions& options, const RunOutputs3D& outputs) {
-  RunSummary summary;
-  namespace fs = std::filesystem;
-  const fs::path outbox = outputs.case_dir / "OUTBOX";
-  std::error_code ec;
-  fs::create_directories(outbox, ec);
-
+bool start_run_3d(Scene3D& scene, const run::RunOptions& options, const RunOutputs3D& outputs,
+                  RunState3D& state, RunSummary& summary) {
+  if (options.new_rotation_scheme) scene.rotation = FrameUpdate::cayley;
   scene.x_period = options.x_period;
   scene.y_period = options.y_period;
   scene.cundall_iterations = options.cundall_iterations;
@@ -45,11 +37,11 @@ RunSummary run_3d(Scene3D& scene, const run::RunOptions& options, const RunOutpu
       summary.fail(RunFailure::data,
                    "--ptpt3-network: " + (outputs.case_dir / "DATBOX" / "PTPT3_NETWORK.DAT").string() +
                        " does not exist");
-      return summary;
+      return false;
     }
     if (!network_links_3d(scene, *outputs.ptpt3_network, length, scene.point_links, summary.error)) {
       summary.failure = RunFailure::data;
-      return summary;
+      return false;
     }
   } else if (scene.x_period > 0.0 || scene.y_period > 0.0 || length == LinkLength::current) {
     scene.point_links = link_points_3d(scene, length);
@@ -66,7 +58,7 @@ RunSummary run_3d(Scene3D& scene, const run::RunOptions& options, const RunOutpu
       scene.bodies.velocity[i].setZero();
     }
 
-  RunState3D state;
+  state = RunState3D{};
   state.step = outputs.initial_step;
   state.time = outputs.initial_time;
   state.h = options.dt;
@@ -80,8 +72,20 @@ RunSummary run_3d(Scene3D& scene, const run::RunOptions& options, const RunOutpu
   if (outputs.exact_state && !restore_exact_state(*outputs.exact_state, scene, state, summary.error)) {
     summary.error = "DATBOX/EXACT_STATE.INI: " + summary.error;
     summary.failure = RunFailure::data;
-    return summary;
+    return false;
   }
+  return true;
+}
+
+RunSummary run_3d(Scene3D& scene, const run::RunOptions& options, const RunOutputs3D& outputs) {
+  RunSummary summary;
+  namespace fs = std::filesystem;
+  const fs::path outbox = outputs.case_dir / "OUTBOX";
+  std::error_code ec;
+  fs::create_directories(outbox, ec);
+  RunState3D state;
+  if (!start_run_3d(scene, options, outputs, state, summary)) return summary;
+
   Postpro3D postpro;
   if (!outputs.postpro.empty() &&
       !postpro.open(outputs.case_dir / "POSTPRO", outputs.postpro, summary.error)) {

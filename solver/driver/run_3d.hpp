@@ -27,6 +27,15 @@ struct RunOutputs3D {
   const grammar::Ptpt3NetworkFile* ptpt3_network = nullptr;  // PTPT3_NETWORK.DAT, when present
 };
 
+// Before the first step: periods, PTPT3 links, the source point, the state at DOF.INI's step and
+// time, the warm start of Vloc_Rloc.INI, EXACT_STATE.INI. False, with the summary's failure set,
+// when the case cannot start.
+bool start_run_3d(Scene3D& scene, const run::RunOptions& options, const RunOutputs3D& outputs,
+                  RunState3D& state, RunSummary& summary);
+
+// The first body whose state is not finite, as "body N: velocity V" (empty when every one is).
+std::string non_finite_3d(const Scene3D& scene, const RunState3D& state);
+
 RunSummary run_3d(Scene3D& scene, const run::RunOptions& options, const RunOutputs3D& outputs);
 
 }  // namespace lmgc::solver

@@ -207,15 +207,15 @@ TEST(LmgcSolve, CommandDatDrivesWhenAskedAndTheScriptsDifferencesAreNamed) {
             std::string::npos);
 }
 
-// What the script computes cannot be read without running it: the value run instead is named with
-// its flag. A literal the run cannot take is an error at the call.
+// Read, not run (--read-script): what the script computes cannot be read without running it, and
+// the value run instead is named with its flag. A literal the run cannot take is an error at the call.
 TEST(LmgcSolve, AComputedScriptParameterIsNamedAndABadOneRefused) {
   const fs::path dir = default_case_copy("solve_script_computed");
   std::ofstream(dir / "command.py") << "import sys\nfrom pylmgc90 import chipy\n"
                                        "dt = float(sys.argv[1])\n"
                                        "chipy.TimeEvolution_SetTimeStep(dt)\n"
                                        "for k in range(5):\n  chipy.IncrementStep()\n";
-  ToolRun run = run_tool_both_streams("lmgc-solve", "'" + dir.string() + "'");
+  ToolRun run = run_tool_both_streams("lmgc-solve", "'" + dir.string() + "' --read-script");
   EXPECT_EQ(run.exit_code, 0) << run.output;
   EXPECT_NE(
       run.output.find("command.py:4:7: warning[L4013]: command.py computes dt (dt); lmgc-solve runs 0.001 "
@@ -224,7 +224,7 @@ TEST(LmgcSolve, AComputedScriptParameterIsNamedAndABadOneRefused) {
       << run.output;
   std::ofstream(dir / "command.py") << "from pylmgc90 import chipy\nchipy.TimeEvolution_SetTimeStep(-1e-3)\n"
                                        "for k in range(5):\n  chipy.IncrementStep()\n";
-  run = run_tool_both_streams("lmgc-solve", "'" + dir.string() + "'");
+  run = run_tool_both_streams("lmgc-solve", "'" + dir.string() + "' --read-script");
   EXPECT_EQ(run.exit_code, 1) << run.output;
   EXPECT_NE(run.output.find("command.py:2:7: error[L4010]: dt = -0.001 is not a value a run can take"),
             std::string::npos)

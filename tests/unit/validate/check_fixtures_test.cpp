@@ -388,7 +388,7 @@ std::vector<Row> rows() {
     {"DampingInsideTheTimeLoop", disk, {{"COMMAND.DAT", "COMPUTE Fext                  :\n", "COMPUTE Fext                  :\nFATAL DAMPING                 :\n"}}, "COMMAND.DAT", "L4005", warning, 15, 1},
     {"ScriptAsksForAnotherDetection", spheres, {{"../command.py", "", "from pylmgc90 import chipy\nchipy.PRPRx_UseNcDetection(1e-3)\n"}}, "command.py", "L4005", warning, 2, 7},
     {"ScriptShrinksCundallFaces", spheres, {{"../command.py", "", "from pylmgc90 import chipy\nchipy.PRPRx_UseCpCundallDetection(100, 0.1)\n"}}, "command.py", "L4005", warning, 2, 7},
-    {"ScriptDrivesBodies", disk, {{"../command.py", "", "from pylmgc90 import chipy\nfor k in range(10):\n  chipy.RBDY2_PutBodyVector('Vbeg_', 1, v)\n"}}, "command.py", "L4005", warning, 3, 9},
+    {"ScriptDrivesBodies", disk, {{"../command.py", "", "from pylmgc90 import chipy\nfor k in range(10):\n  chipy.RBDY2_PutBodyValue('Tempe', 1, v)\n"}}, "command.py", "L4005", warning, 3, 9},
     {"DisplayNotWritten", disk, {{"COMMAND.DAT", "COMPUTE MASS                  :\n", "COMPUTE MASS                  :\nDISPLAY TIMES                 :\n"}}, "COMMAND.DAT", "L4006", note, 11, 1},
     {"MultiPhysicsData", disk, {{"MP_DEM.DAT", "", "$model therm\n"}}, "MP_DEM.DAT", "L4007", warning, 0, 0},
     {"ScriptLoadsMultiPhysics", disk, {{"../command.py", "", "from pylmgc90.chipy import *\nReadMpBehaviours(0.)\n"}}, "command.py", "L4007", warning, 2, 1},

@@ -94,7 +94,8 @@ TEST(CommandScript, UnresolvedValuesStayUnresolved) {
 TEST(ChipyCatalogue, KnowsTheExamplesCallsAndFamilies) {
   EXPECT_EQ(find_chipy_function("ExSolver")->support, CommandSupport::run);
   EXPECT_EQ(find_chipy_function("RBDY3_GetBodyVector")->support, CommandSupport::run);
-  EXPECT_EQ(find_chipy_function("RBDY2_PutBodyVector")->support, CommandSupport::not_run);
+  EXPECT_EQ(find_chipy_function("RBDY2_PutBodyVector")->support, CommandSupport::script_only);
+  EXPECT_EQ(find_chipy_function("RBDY2_PutBodyValue")->support, CommandSupport::not_run);
   EXPECT_EQ(find_chipy_function("PRPRx_UseNcDetection")->support, CommandSupport::not_run);
   EXPECT_EQ(find_chipy_function("mecaMAILx_ComputeRayleighDamping")->support, CommandSupport::deformable);
   EXPECT_EQ(find_chipy_function("mp_solver_ReadMpBehaviour")->support, CommandSupport::multiphysics);

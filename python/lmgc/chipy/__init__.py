@@ -1,0 +1,572 @@
+"""LMGC90's chipy on lmgc: the functions LMGC90's command.py scripts call, with LMGC90's names,
+argument names, defaults and meaning (pylmgc90/chipy/macro.py and the RBDY2/RBDY3 wrappers of
+LMGC90 2025), run by lmgc's solver through lmgc._chipy.
+
+What lmgc does not do raises NotImplementedError naming the call; calls out of order, unknown
+bodies and wrong arguments raise RuntimeError, IndexError or ValueError. docs/chipy.md lists every
+call and what it does here.
+"""
+import os
+import sys
+import time as _time
+
+import numpy as _np
+
+from lmgc import _chipy
+
+__all__ = []  # filled below: every function LMGC90 scripts may import with `from ... import *`
+
+_session = None
+_log_messages = True
+_run_options = {"max_steps": -1, "quiet": False}
+_timers = []
+
+
+def _export(function):
+    __all__.append(function.__name__)
+    return function
+
+
+def _configure(max_steps=-1, quiet=False):
+    """lmgc-run's options: end the script after max_steps steps (.LAST written); no warnings."""
+    _run_options["max_steps"] = int(max_steps)
+    _run_options["quiet"] = bool(quiet)
+
+
+def _s():
+    if _session is None:
+        raise RuntimeError("chipy: Initialize() first")
+    return _session
+
+
+# --- set-up ----------------------------------------------------------------------------------
+
+
+@_export
+def Initialize():
+    """Start a session in the current directory (the case folder)."""
+    global _session, _timers
+    if _session is not None:
+        _session.finalize()
+    _session = _chipy.Session(os.getcwd(), _run_options["max_steps"], _run_options["quiet"])
+    _timers = []
+
+
+@_export
+def Finalize():
+    """Close the output files and print the run's summary (convergence, worst residual)."""
+    if "--no-finalize" in sys.argv or _session is None:
+        return
+    _session.finalize()
+
+
+@_export
+def checkDirectories(checkDATBOX=True):
+    """Stop when DATBOX/ is missing; create OUTBOX/, POSTPRO/ and DISPLAY/."""
+    if checkDATBOX and not os.path.isdir("DATBOX"):
+        raise RuntimeError("checkDirectories: no DATBOX directory in " + os.getcwd())
+    for folder in ("OUTBOX", "POSTPRO", "DISPLAY"):
+        os.makedirs(folder, exist_ok=True)
+
+
+@_export
+def SetDimension(dim, mod=1):
+    _s().set_dimension(int(dim), int(mod))
+
+
+@_export
+def GetDimension():
+    return _s().dimension()
+
+
+@_export
+def TimeEvolution_SetTimeStep(value):
+    _s().set_time_step(float(value))
+
+
+@_export
+def TimeEvolution_GetTimeStep():
+    return _s().time_step()
+
+
+@_export
+def TimeEvolution_GetTime():
+    return _s().time()
+
+
+@_export
+def TimeEvolution_GetStep():
+    return _s().step()
+
+
+@_export
+def Integrator_InitTheta(value):
+    _s().init_theta(float(value))
+
+
+@_export
+def nlgs_SetWithQuickScramble():
+    _s().set_quick_scramble(2)
+
+
+@_export
+def nlgs_3D_SetWithQuickScramble():
+    _s().set_quick_scramble(3)
+
+
+@_export
+def nlgs_3D_DiagonalResolution():
+    _s().set_diagonal_resolution()
+
+
+@_export
+def SetPeriodicCondition(xperiod=None, yperiod=None):
+    _s().set_periodic(None if xperiod is None else float(xperiod), None if yperiod is None else float(yperiod))
+
+
+def _boundary(axis, maximum):
+    def set_boundary(value):
+        _s().set_boundary(axis, maximum, float(value))
+    return set_boundary
+
+
+for _axis in "XY":
+    for _side, _maximum in (("min", False), ("max", True)):
+        _name = "RBDY2_Set%s%sBoundary" % (_axis, _side)
+        globals()[_name] = _boundary(_axis.lower(), _maximum)
+        globals()[_name].__name__ = _name
+        __all__.append(_name)
+
+
+@_export
+def RBDY3_NewRotationScheme():
+    _s().new_rotation_scheme()
+
+
+@_export
+def RBDY3_SetSourcePoint(first_RBDY3, radius, Xshift, Yshift, Zshift):
+    _s().set_source_point(int(first_RBDY3), float(radius), float(Xshift), float(Yshift), float(Zshift), False)
+
+
+@_export
+def RBDY3_SetSourcePointWithIni(first_RBDY3, radius, Xshift, Yshift, Zshift):
+    _s().set_source_point(int(first_RBDY3), float(radius), float(Xshift), float(Yshift), float(Zshift), True)
+
+
+@_export
+def PRPRx_UseCpCundallDetection(nb_iter):
+    _s().set_cundall_iterations(int(nb_iter))
+
+
+@_export
+def PRPRx_LowSizeArrayPolyr(sizefactor):
+    """Sizes one of LMGC90's arrays: nothing to do in lmgc."""
+
+
+@_export
+def PTPT3_LoadNetwork():
+    _s().ptpt3_load_network()
+
+
+@_export
+def PTPT3_UseCurrentNonuc0(to_use):
+    _s().ptpt3_use_current_nonuc0(int(to_use))
+
+
+# --- messages and timers (no effect on the run) ------------------------------------------------
+
+
+@_export
+def utilities_logMes(mes):
+    if _log_messages:
+        print(mes)
+
+
+@_export
+def utilities_EnableLogMes():
+    global _log_messages
+    _log_messages = True
+
+
+@_export
+def utilities_DisableLogMes():
+    global _log_messages
+    _log_messages = False
+
+
+@_export
+def timer_GetNewTimer(name):
+    _timers.append([name, 0.0, None])
+    return len(_timers)
+
+
+@_export
+def timer_StartTimer(timer_id):
+    _timers[timer_id - 1][2] = _time.perf_counter()
+
+
+@_export
+def timer_StopTimer(timer_id):
+    t = _timers[timer_id - 1]
+    if t[2] is not None:
+        t[1] += _time.perf_counter() - t[2]
+        t[2] = None
+
+
+@_export
+def timer_InitializeTimers():
+    pass
+
+
+@_export
+def timer_ClearAll():
+    del _timers[:]
+
+
+@_export
+def timer_WriteOutTimers():
+    pass
+
+
+@_export
+def PRPRx_VerboseF2F(cd, an):
+    """Prints LMGC90's face-to-face detection details: nothing to print in lmgc."""
+
+
+# --- DATBOX --------------------------------------------------------------------------------------
+
+_R = _chipy.Reading
+
+
+@_export
+def ReadBehaviours():
+    _s().read(_R.behaviours)
+
+
+@_export
+def ReadBodies(version=None):
+    _s().read(_R.bodies)
+
+
+@_export
+def LoadBehaviours():
+    _s().read(_R.load_behaviours)
+
+
+@_export
+def ReadIniDof(record=0):
+    if record:
+        raise NotImplementedError("ReadIniDof(record=%d): lmgc reads DATBOX/DOF.INI only" % record)
+    _s().read(_R.ini_dof)
+
+
+@_export
+def ReadDrivenDof():
+    _s().read(_R.driven_dof)
+
+
+@_export
+def LoadTactors():
+    _s().read(_R.tactors)
+
+
+@_export
+def ReadIniVlocRloc(record=0):
+    if record:
+        raise NotImplementedError("ReadIniVlocRloc(record=%d): lmgc reads DATBOX/Vloc_Rloc.INI only" % record)
+    _s().read(_R.ini_vloc_rloc)
+
+
+def _deformable(call):
+    if os.path.exists(os.path.join("DATBOX", "MODELS.DAT")):
+        raise NotImplementedError(call + ": lmgc does not run deformable (MAILx) bodies yet")
+
+
+@_export
+def ReadModels():
+    _deformable("ReadModels")
+
+
+@_export
+def LoadModels():
+    _deformable("LoadModels")
+
+
+@_export
+def ReadIniGPV(record=0):
+    _deformable("ReadIniGPV")
+
+
+@_export
+def ReadIni(record=0, h5_file=''):
+    if h5_file:
+        raise NotImplementedError("ReadIni(h5_file=...): lmgc reads no HDF5 state")
+    ReadIniDof(record)
+    ReadIniGPV(record)
+    ReadIniVlocRloc(record)
+
+
+@_export
+def WriteBodies(version=None):
+    _s().write_echo("WriteBodies")
+
+
+@_export
+def WriteBehaviours():
+    _s().write_echo("WriteBehaviours")
+
+
+@_export
+def WriteDrivenDof():
+    _s().write_echo("WriteDrivenDof")
+
+
+@_export
+def ReadDatbox(deformable=True):
+    """Read every DATBOX file (and check the case, as lmgc-check does), then write the echo files."""
+    ReadBehaviours()
+    if deformable:
+        ReadModels()
+    ReadBodies()
+    LoadBehaviours()
+    if deformable:
+        LoadModels()
+    ReadIniDof()
+    if deformable:
+        ReadIniGPV()
+    ReadDrivenDof()
+    LoadTactors()
+    ReadIniVlocRloc()
+    WriteBodies()
+    WriteDrivenDof()
+    WriteBehaviours()
+
+
+@_export
+def ComputeMass():
+    _s().compute_mass()
+
+
+# --- the step ----------------------------------------------------------------------------------
+
+
+def _stage(name):
+    def run_stage():
+        _s().stage(name)
+    run_stage.__name__ = name
+    run_stage.__doc__ = "The %s stage of the step." % name
+    return run_stage
+
+
+for _name in ("IncrementStep", "ComputeFext", "ComputeBulk", "ComputeFreeVelocity", "UpdateTactBehav",
+              "StockRloc", "ComputeDof", "UpdateStep"):
+    globals()[_name] = _stage(_name)
+    __all__.append(_name)
+
+
+@_export
+def SelectProxTactors(freq_detec=1, useExt=0, reset=0):
+    _s().select_prox_tactors(int(freq_detec), int(useExt), int(reset))
+
+
+@_export
+def RecupRloc(tol=None):
+    _s().recup_rloc(None if tol is None else float(tol))
+
+
+@_export
+def ExSolver(stype, norm, conv, relax, gsit1, gsit2):
+    _s().ex_solver(str(stype), str(norm), float(conv), float(relax), int(gsit1), int(gsit2))
+
+
+# --- outputs -----------------------------------------------------------------------------------
+
+
+@_export
+def WriteOutDof(nsteps=1):
+    _s().write_out_dof(int(nsteps))
+
+
+@_export
+def WriteOutVlocRloc(nsteps=1):
+    _s().write_out_vloc_rloc(int(nsteps))
+
+
+@_export
+def WriteOut(nsteps=1):
+    WriteOutDof(nsteps)
+    WriteOutVlocRloc(nsteps)
+
+
+@_export
+def WriteLastDof():
+    _s().write_last_dof()
+
+
+@_export
+def WriteLastVlocRloc():
+    _s().write_last_vloc_rloc()
+
+
+@_export
+def WriteLast(filename=None):
+    if filename is not None:
+        raise NotImplementedError("WriteLast(filename): lmgc writes no HDF5 state")
+    WriteLastDof()
+    WriteLastVlocRloc()
+
+
+@_export
+def OpenDisplayFiles(restart=1, mecagp_field=None, thergp_field=None, write_f2f=0, write_parameters=True):
+    if mecagp_field is not None or thergp_field is not None:
+        raise NotImplementedError("OpenDisplayFiles: Gauss-point fields belong to deformable bodies")
+    _s().open_display()
+
+
+@_export
+def WriteDisplayFiles(freq=1, ref_radius=None, normal_orient=None, write_gp=None, **kw):
+    if write_gp:
+        raise NotImplementedError("WriteDisplayFiles(write_gp=...): Gauss-point fields belong to deformable "
+                                  "bodies")
+    _s().write_display(int(freq))
+
+
+@_export
+def CloseDisplayFiles():
+    _s().close_display()
+
+
+@_export
+def OpenPostproFiles(restart=0):
+    if restart:
+        raise NotImplementedError("OpenPostproFiles(restart=%d): lmgc starts the POSTPRO files afresh" % restart)
+    _s().open_postpro()
+
+
+@_export
+def WritePostproFiles(force_flush=False):
+    _s().write_postpro()
+
+
+@_export
+def ClosePostproFiles():
+    _s().close_postpro()
+
+
+# --- state ---------------------------------------------------------------------------------------
+
+
+def _bodies(dimension):
+    prefix = "RBDY%d_" % dimension
+
+    def get_nb():
+        return _s().body_count(dimension)
+
+    def get_body_vector(cvalue1, ivalue1):
+        return _s().body_vector(dimension, str(cvalue1), int(ivalue1))
+
+    def get_all_body_vector(cvalue1):
+        return _s().all_body_vectors(dimension, str(cvalue1))
+
+    def put_body_vector(cvalue1, ivalue1, rvect):
+        _s().put_body_vector(dimension, str(cvalue1), int(ivalue1), _np.asarray(rvect, dtype=float))
+
+    def put_all_body_vector(cvalue1, rmat):
+        rows = _np.asarray(rmat, dtype=float)
+        if rows.ndim != 2 or rows.shape[0] != get_nb():
+            raise ValueError("%sPutAllBodyVector: a matrix of %d rows, one per body" % (prefix, get_nb()))
+        for i, row in enumerate(rows):
+            put_body_vector(cvalue1, i + 1, row)
+
+    def set_vlocy_driven_dof(ibdyty, idrvdof, value):
+        _s().set_vlocy_driven_dof(dimension, int(ibdyty), int(idrvdof), float(value))
+
+    def get_body_mass(ibdyty):
+        return _s().body_mass(dimension, int(ibdyty))
+
+    def get_all_mass():
+        return _np.array([get_body_mass(i + 1) for i in range(get_nb())])
+
+    def is_visible(ibdyty):
+        return 1 if _s().body_visible(dimension, int(ibdyty)) else 0
+
+    calls = {
+        "GetNbRBDY%d" % dimension: get_nb,
+        "GetBodyVector": get_body_vector,
+        "GetAllBodyVector": get_all_body_vector,
+        "PutBodyVector": put_body_vector,
+        "PutAllBodyVector": put_all_body_vector,
+        "SetVlocyDrivenDof": set_vlocy_driven_dof,
+        "GetBodyMass" if dimension == 2 else "GetMass": get_body_mass,
+        "GetAllMass": get_all_mass,
+        "IsVisible": is_visible,
+    }
+    for suffix, function in calls.items():
+        function.__name__ = prefix + suffix
+        globals()[prefix + suffix] = function
+        __all__.append(prefix + suffix)
+
+
+_bodies(2)
+_bodies(3)
+
+
+@_export
+def getInteractions(this=False, human=True):
+    """The step's interactions as a numpy structured array with chipy's field names (inter, icdan,
+    cdbdy, anbdy, icdbdy, ianbdy, cdtac, antac, icdtac, iantac, behav, status, coor, uc, rl, vl,
+    gapTT): the records of Vloc_Rloc, in LMGC90's order; rl is the mean force r/h. human=False
+    (LMGC90's integer ids for names) is not offered."""
+    if not human:
+        raise NotImplementedError("getInteractions(human=False): lmgc gives names, not LMGC90's integer ids")
+    data = _s().interactions()
+    d = _s().dimension()
+    n = len(data["inter"])
+    dtype = [("inter", "U5"), ("icdan", int), ("cdbdy", "U5"), ("anbdy", "U5"), ("icdbdy", int),
+             ("ianbdy", int), ("cdtac", "U5"), ("antac", "U5"), ("icdtac", int), ("iantac", int),
+             ("behav", "U5"), ("status", "U5"), ("coor", float, (d,)), ("uc", float, (d, d)),
+             ("rl", float, (d,)), ("vl", float, (d,)), ("gapTT", float)]
+    inters = _np.zeros(n, dtype=dtype)
+    for field in ("inter", "icdan", "cdbdy", "anbdy", "icdbdy", "ianbdy", "cdtac", "antac", "icdtac",
+                  "iantac", "behav", "status", "coor", "rl", "vl", "gapTT"):
+        inters[field] = data[field]
+    # uc's columns are the local frame's vectors (t, n[, s]), as in chipy.
+    inters["uc"] = _np.transpose(data["uc"], (0, 2, 1))
+    return inters
+
+
+# --- what lmgc does not offer -------------------------------------------------------------------
+
+_SUPPORT_NOT_RUN = {5: "is not done by lmgc", 6: "is LMGC90's multi-physics, which lmgc does not run",
+                    7: "acts on deformable (MAILx) bodies, which lmgc does not run yet"}
+
+
+def _missing(name):
+    entry = _chipy.catalogue_entry(name)
+    what = ""
+    if entry is not None and entry[1]:
+        what = " (it " + entry[1] + ")"
+    reason = _SUPPORT_NOT_RUN.get(entry[0], "is not offered by lmgc") if entry is not None else \
+        "is not offered by lmgc"
+
+    def not_offered(*args, **kwargs):
+        raise NotImplementedError("chipy.%s%s %s; docs/chipy.md lists the calls lmgc offers, and "
+                                  "lmgc-solve --help the run parameters it takes" % (name, what, reason))
+    not_offered.__name__ = name
+    return not_offered
+
+
+# Every chipy name the catalogue knows gets a function, so that `from pylmgc90.chipy import *` gives a
+# script the call it uses, and that call says why it cannot run.
+for _name in _chipy.catalogue_names():
+    if _name not in globals():
+        globals()[_name] = _missing(_name)
+        __all__.append(_name)
+
+
+def __getattr__(name):
+    """A chipy name lmgc does not define: a function that raises NotImplementedError when called
+    (a script may import it and never call it)."""
+    if name.startswith("__"):
+        raise AttributeError(name)
+    return _missing(name)

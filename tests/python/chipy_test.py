@@ -1,0 +1,168 @@
+"""lmgc.chipy from Python: LMGC90's signatures, numpy getters, and bad use turned into clear
+exceptions (never a crash); a script that raises mid-run leaves whole files. Run by ctest with the
+build's python/ folder on PYTHONPATH and the tools folder in LMGC_TOOLS."""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+SOURCE = os.environ["LMGC_SOURCE_DIR"]
+TOOLS = os.environ["LMGC_TOOLS"]
+PUSHER = os.path.join(SOURCE, "reference_cases", "script_driven_pusher")
+
+
+def case_copy():
+    work = tempfile.mkdtemp(prefix="lmgc_chipy_")
+    shutil.copytree(os.path.join(PUSHER, "DATBOX"), os.path.join(work, "DATBOX"))
+    return work
+
+
+class ChipyCalls(unittest.TestCase):
+    def setUp(self):
+        from lmgc import chipy
+        self.chipy = chipy
+        self.work = case_copy()
+        self.cwd = os.getcwd()
+        os.chdir(self.work)
+        chipy._configure(max_steps=-1, quiet=True)
+        chipy.Initialize()
+        chipy.checkDirectories()
+        chipy.SetDimension(2)
+        chipy.TimeEvolution_SetTimeStep(1e-3)
+        chipy.Integrator_InitTheta(0.5)
+        chipy.ReadDatbox(deformable=False)
+
+    def tearDown(self):
+        self.chipy.Finalize()
+        os.chdir(self.cwd)
+        shutil.rmtree(self.work)
+
+    def step(self):
+        c = self.chipy
+        c.IncrementStep()
+        c.ComputeFext()
+        c.ComputeBulk()
+        c.ComputeFreeVelocity()
+        c.SelectProxTactors()
+        c.RecupRloc()
+        c.ExSolver('Stored_Delassus_Loops         ', 'Quad ', 1e-10, 1.0, 50, 100)
+        c.UpdateTactBehav()
+        c.StockRloc()
+        c.ComputeDof()
+        c.UpdateStep()
+
+    def test_getters_are_numpy_arrays_with_lmgc90s_shapes(self):
+        c = self.chipy
+        self.assertEqual(c.RBDY2_GetNbRBDY2(), 6)
+        self.assertEqual(c.RBDY3_GetNbRBDY3(), 0)
+        v = c.RBDY2_GetBodyVector('Coor_', 3)
+        self.assertIsInstance(v, np.ndarray)
+        self.assertEqual(v.shape, (3,))
+        np.testing.assert_allclose(v, [-0.25, 0.1, 0.0])
+        all_coor = c.RBDY2_GetAllBodyVector('Coor0')
+        self.assertEqual(all_coor.shape, (6, 3))
+        # One copy: the array owns its buffer; writing into it does not change the bodies.
+        v[0] = 99.0
+        self.assertEqual(c.RBDY2_GetBodyVector('Coor_', 3)[0], -0.25)
+
+    def test_interactions_after_a_step(self):
+        self.step()
+        inters = self.chipy.getInteractions()
+        self.assertGreaterEqual(len(inters), 4)  # three disks and the small one on the floor, at least
+        self.assertIn('DKJCx', set(inters['inter']))
+        self.assertEqual(inters['uc'].shape[1:], (2, 2))
+        floor = inters[inters['inter'] == 'DKJCx']
+        self.assertTrue(np.all(floor['ianbdy'] == 1))
+        self.assertEqual(np.count_nonzero(floor['rl'][:, 1] > 0.0), 4)  # the floor carries the four free disks
+        np.testing.assert_allclose(floor['uc'][:, :, 1], np.tile([0.0, 1.0], (len(floor), 1)))  # n up
+        np.testing.assert_allclose(floor['uc'][:, :, 0], np.tile([1.0, 0.0], (len(floor), 1)))  # t = (n_y, -n_x)
+
+    def test_wrong_counts_and_types_raise(self):
+        c = self.chipy
+        with self.assertRaises(TypeError):
+            c.RBDY2_GetBodyVector('Coor_')
+        with self.assertRaises(TypeError):
+            c.TimeEvolution_SetTimeStep()
+        with self.assertRaises(ValueError):
+            c.TimeEvolution_SetTimeStep('fast')
+        with self.assertRaises(ValueError):
+            c.RBDY2_PutBodyVector('Vbeg_', 6, [1.0, 2.0])
+        with self.assertRaises(IndexError):
+            c.RBDY2_GetBodyVector('V____', 7)
+        with self.assertRaises(ValueError):
+            c.RBDY2_GetBodyVector('Speed', 1)
+
+    def test_calls_out_of_order_raise_runtime_errors(self):
+        c = self.chipy
+        with self.assertRaisesRegex(RuntimeError, "twice"):
+            c.ReadBodies()
+        with self.assertRaisesRegex(RuntimeError, "before IncrementStep"):
+            c.ComputeDof()
+        c.IncrementStep()
+        c.ComputeFext()
+        c.ComputeFreeVelocity()
+        with self.assertRaisesRegex(RuntimeError, "ExSolver before .*SelectProxTactors"):
+            c.ExSolver('Stored_Delassus_Loops', 'Quad ', 1e-4, 1.0, 10, 10)
+
+    def test_an_unknown_call_names_itself(self):
+        with self.assertRaisesRegex(NotImplementedError, "RBDY2_FatalDamping"):
+            self.chipy.RBDY2_FatalDamping()
+        with self.assertRaisesRegex(NotImplementedError, "chipy.Frobnicate"):
+            self.chipy.Frobnicate(1)
+        self.assertIn('RBDY2_FatalDamping', self.chipy.__all__)
+
+
+class ScriptRuns(unittest.TestCase):
+    def run_script(self, body, *args):
+        work = case_copy()
+        with open(os.path.join(work, "command.py"), "w") as f:
+            f.write(body)
+        run = subprocess.run([os.path.join(TOOLS, "lmgc-run"), work, "--quiet"] + list(args),
+                             capture_output=True, text=True)
+        return work, run
+
+    HEAD = ("from pylmgc90 import chipy\nimport sys\nchipy.Initialize()\nchipy.checkDirectories()\n"
+            "chipy.SetDimension(2)\nchipy.TimeEvolution_SetTimeStep(1e-3)\nchipy.ReadDatbox(deformable=False)\n"
+            "chipy.OpenPostproFiles()\n")
+    LOOP = ("for k in range(NB):\n  chipy.IncrementStep()\n  chipy.ComputeFext()\n  chipy.ComputeFreeVelocity()\n"
+            "  chipy.SelectProxTactors()\n  chipy.RecupRloc()\n"
+            "  chipy.ExSolver('Stored_Delassus_Loops', 'Quad ', 1e-8, 1.0, 50, 100)\n  chipy.UpdateTactBehav()\n"
+            "  chipy.StockRloc()\n  chipy.ComputeDof()\n  chipy.UpdateStep()\n  chipy.WriteOutDof(2)\n"
+            "  chipy.WritePostproFiles()\n")
+
+    def test_a_script_that_raises_leaves_whole_files(self):
+        work, run = self.run_script(self.HEAD + self.LOOP.replace("NB", "5") + "raise RuntimeError('user stop')\n")
+        self.assertEqual(run.returncode, 1, run.stderr)
+        self.assertIn("user stop", run.stderr)
+        report = open(os.path.join(work, "OUTBOX", "run_report.csv")).read()
+        self.assertTrue(report.endswith("\n"))
+        self.assertEqual(report.count("\n"), 6)  # header and five steps
+        self.assertTrue(os.path.exists(os.path.join(work, "OUTBOX", "DOF.OUT.2")))
+        shutil.rmtree(work)
+
+    def test_max_steps_ends_the_script_with_its_last_files(self):
+        work, run = self.run_script(self.HEAD + self.LOOP.replace("NB", "1000"), "--max-steps", "7")
+        self.assertEqual(run.returncode, 0, run.stderr)
+        dof = open(os.path.join(work, "OUTBOX", "DOF.LAST")).read()
+        self.assertRegex(dof, r"\$steps +7 ")
+        shutil.rmtree(work)
+
+    def test_script_arguments_reach_sys_argv(self):
+        body = self.HEAD + "assert sys.argv[1:] == ['--norand', 'x'], sys.argv\n"
+        work, run = self.run_script(body, "--", "--norand", "x")
+        self.assertEqual(run.returncode, 0, run.stderr)
+        shutil.rmtree(work)
+
+    def test_a_call_lmgc_does_not_offer_stops_the_script_with_its_name(self):
+        work, run = self.run_script(self.HEAD + "chipy.RBDY2_FatalDamping()\n")
+        self.assertEqual(run.returncode, 1)
+        self.assertIn("NotImplementedError: chipy.RBDY2_FatalDamping", run.stderr)
+        shutil.rmtree(work)
+
+
+if __name__ == "__main__":
+    unittest.main()
