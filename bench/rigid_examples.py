@@ -1,20 +1,19 @@
 #!/usr/bin/python3
-"""Speed and achieved error of lmgc-solve on LMGC90's RIGID_2D or RIGID_3D examples, against LMGC90's
-own run.
+"""Speed and achieved error of lmgc on LMGC90's RIGID_2D or RIGID_3D examples, against LMGC90's own run.
 
-For every example with reference_lmgc90/RUN.md: runs lmgc-solve (release build) with the parameters
-of the example's command.py (as RUN.md records them, plus the chipy calls of its script that have a
-flag: new rotation scheme, diagonal resolution, periodic sides, source point) for the number of
-steps LMGC90 ran (or --steps-cap), then reads OUTBOX/run_report.csv and prints one markdown table row: seconds per step,
-NLGS sweep rate (contact updates per second = sum(sweeps run x contacts) / time in the sweeps, the
-time LMGC90's "[NLGS2] iter" timer counts), mean NLGS
-iterations (as LMGC90 counts them) and the share of them run (3D skips the rest of a block whose
-sweeps stand still), steps that hit the iteration cap, and the achieved natural-map residual / |q| (median
-and worst over the steps with contacts), next to LMGC90's seconds per step, sweep rate and
-unconverged steps from RUN.md. Single thread.
+For every example with reference_lmgc90/RUN.md: runs the example's own command.py, unchanged, with
+lmgc's chipy module (lmgc-run --max-steps: the number of steps LMGC90 ran, or --steps-cap), then
+reads OUTBOX/run_report.csv and prints one markdown table row: seconds per step (from IncrementStep
+to UpdateStep: the script's writes between steps are not counted, as in LMGC90's figure), NLGS sweep
+rate (contact updates per second = sum(sweeps run x contacts) / time in the sweeps, the time
+LMGC90's "[NLGS2] iter" timer counts), mean NLGS iterations (as LMGC90 counts them) and the share of
+them run (3D skips the rest of a block whose sweeps stand still), steps that hit the iteration cap,
+and the achieved natural-map residual / |q| (median and worst over the steps with contacts), next
+to LMGC90's seconds per step, sweep rate and unconverged steps from RUN.md. Single thread. The
+script runs with `--norand` absent, as LMGC90's reference runs did.
 
 Usage: bench/rigid_examples.py [--dimension 2|3] [--build build/release] [--steps-cap N] [--only NAME]
-       [--out FILE] [--extra "--residual-target 1e-6"]
+       [--out FILE]
 """
 import argparse
 import os
@@ -30,35 +29,6 @@ import numpy as np
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXAMPLES = os.environ.get("LMGC_SHARED_DIR", os.path.join(os.path.dirname(ROOT), "shared"))
 EXAMPLES = os.path.join(EXAMPLES, "lmgc90-examples")
-
-
-def script_flags(case, dimension):
-    """lmgc-solve flags for the chipy calls of the example's command.py that change the run."""
-    flags = []
-    path = os.path.join(case, "command.py")
-    if not os.path.exists(path):
-        return flags
-    text = open(path).read()
-    values = dict(re.findall(r"^(\w+)\s*=\s*([-+0-9.eE]+)\s*$", text, re.M))
-    for line in text.splitlines():
-        line = line.strip()
-        # At the top level or under `if "--norand" not in sys.argv:` (LMGC90's runs: scrambled).
-        if line.startswith(("chipy.nlgs_SetWithQuickScramble(", "chipy.nlgs_3D_SetWithQuickScramble(")):
-            flags.append("--quick-scramble")
-        if dimension != 3:
-            continue
-        if line.startswith("chipy.RBDY3_NewRotationScheme()"):
-            flags.append("--new-rotation-scheme")
-        elif line.startswith("chipy.nlgs_3D_DiagonalResolution()"):
-            flags.append("--diagonal-resolution")
-        elif line.startswith("chipy.SetPeriodicCondition("):
-            names = [n.strip() for n in line.split("(", 1)[1].rsplit(")", 1)[0].split(",")]
-            v = [values.get(n, n) for n in names]
-            flags += ["--xperiod", v[0], "--yperiod", v[1]]
-        elif line.startswith("chipy.RBDY3_SetSourcePointWithIni("):
-            names = [n.strip() for n in line.split("(", 1)[1].rsplit(")", 1)[0].split(",")]
-            flags += ["--source-point", ",".join(values.get(n, n) for n in names)]
-    return flags
 
 
 def run_md(case):
@@ -85,9 +55,11 @@ def main():
     parser.add_argument("--steps-cap", type=int, default=None)
     parser.add_argument("--only", default=None)
     parser.add_argument("--out", default=None)
-    parser.add_argument("--extra", default="", help="extra lmgc-solve flags")
     args = parser.parse_args()
-    solve = os.path.join(args.build, "tools", "lmgc-solve")
+    run = os.path.join(args.build, "tools", "lmgc-run")
+    if not os.path.exists(run):
+        print(f"no {run}: this build has no Python module (python3-dev, pybind11-dev)", file=sys.stderr)
+        return 2
     examples = os.path.join(EXAMPLES, f"RIGID_{args.dimension}D")
     if not os.path.isdir(examples):
         print(f"no examples at {examples}", file=sys.stderr)
@@ -106,20 +78,10 @@ def main():
             steps = min(steps, args.steps_cap)
         work = tempfile.mkdtemp(prefix="lmgc_bench_")
         shutil.copytree(os.path.join(case, "DATBOX"), os.path.join(work, "DATBOX"))
-        os.remove(os.path.join(work, "DATBOX", "COMMAND.DAT")) if os.path.exists(
-            os.path.join(work, "DATBOX", "COMMAND.DAT")) else None
-        command = [solve, work, "--quiet", "--steps", str(steps), "--write-every", "0"]
-        for key, flag in (("dt", "--dt"), ("theta", "--theta"), ("tol", "--tol"), ("relax", "--relax"),
-                          ("gs_it1", "--gs-it1"), ("gs_it2", "--gs-it2"), ("norm", "--norm"),
-                          ("solver_type", "--solver"), ("lx", "--xperiod")):
-            if key in params:
-                command += [flag, params[key]]
-        if name == "BouncingBallsDK":
-            command += ["--ymin-boundary", "0"]
-        command += script_flags(case, args.dimension)
-        command += args.extra.split()
+        shutil.copy(os.path.join(case, "command.py"), work)
+        command = [run, work, "--quiet", "--max-steps", str(steps)]
         start = time.perf_counter()
-        subprocess.run(command, check=True)
+        subprocess.run(command, check=True, env=dict(os.environ, OMP_NUM_THREADS="1"))
         wall = time.perf_counter() - start
         report = np.genfromtxt(os.path.join(work, "OUTBOX", "run_report.csv"), delimiter=",", names=True)
         shutil.rmtree(work)

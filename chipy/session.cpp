@@ -1090,4 +1090,16 @@ Session::Interactions Session::interactions() const {
   return out;
 }
 
+std::vector<std::pair<long, long>> Session::contactors(std::string_view type) const {
+  require_case(std::string(type) + "_GetNb" + std::string(type));
+  std::vector<std::pair<long, long>> out;
+  if (!run_->files.bodies) return out;
+  const auto& bodies = run_->files.bodies->bodies;
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    for (std::size_t t = 0; t < bodies[b].contactors.size(); ++t)
+      if (bodies[b].contactors[t].type.value == type)
+        out.emplace_back(static_cast<long>(b + 1), static_cast<long>(t + 1));
+  return out;
+}
+
 }  // namespace lmgc::chipy

@@ -126,6 +126,9 @@ class Session {
     std::vector<double> point, frame, rl, vl, gap;  // rows of dimension, dimension², dimension, dimension, 1
   };
   Interactions interactions() const;
+  // The contactors of a type (DISKx, SPHER, ...) in BODIES.DAT's order: (body, rank within the
+  // body), both from 1, as LMGC90's <type>2BDYTY tables.
+  std::vector<std::pair<long, long>> contactors(std::string_view type) const;
 
   // Steps ended (UpdateStep) by this session.
   long steps_done() const { return steps_done_; }

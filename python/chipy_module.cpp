@@ -150,6 +150,18 @@ PYBIND11_MODULE(_chipy, m) {
       .def("set_vlocy_driven_dof", &Session::set_vlocy_driven_dof)
       .def("body_mass", &Session::body_mass)
       .def("body_visible", &Session::body_visible)
+      .def("contactors",
+           [](const Session& s, const std::string& type) {
+             const auto list = s.contactors(type);
+             py::array_t<int> a({static_cast<py::ssize_t>(list.size()), py::ssize_t{3}});
+             auto m = a.mutable_unchecked<2>();
+             for (std::size_t k = 0; k < list.size(); ++k) {
+               m(k, 0) = static_cast<int>(list[k].first);
+               m(k, 1) = static_cast<int>(list[k].second);
+               m(k, 2) = s.dimension() == 3 ? 2 : 1;  // LMGC90's body model ids: RBDY2 1, RBDY3 2
+             }
+             return a;
+           })
       .def("interactions", [](const Session& s) {
         Session::Interactions i = s.interactions();
         const auto n = static_cast<py::ssize_t>(i.module.size());

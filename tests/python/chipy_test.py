@@ -69,6 +69,17 @@ class ChipyCalls(unittest.TestCase):
         v[0] = 99.0
         self.assertEqual(c.RBDY2_GetBodyVector('Coor_', 3)[0], -0.25)
 
+    def test_contactor_tables_and_equilibrium(self):
+        c = self.chipy
+        self.assertEqual(c.DISKx_GetNbDISKx(), 5)
+        self.assertEqual(c.JONCx_GetNbJONCx(), 1)
+        np.testing.assert_array_equal(c.DISKx_GetPtrDISKx2BDYTY()[:, 0], [2, 3, 4, 5, 6])
+        self.assertEqual(c.DKJCx_ID, 4)
+        c.RBDY2_SetEquilibriumNorm('Qvlcy', 1e-6)
+        self.assertTrue(c.RBDY2_CheckEquilibriumState())  # every body at rest
+        c.RBDY2_PutBodyVector('Vbeg_', 6, [0.0, 1.0, 0.0])
+        self.assertFalse(c.RBDY2_CheckEquilibriumState())
+
     def test_interactions_after_a_step(self):
         self.step()
         inters = self.chipy.getInteractions()
@@ -114,6 +125,18 @@ class ChipyCalls(unittest.TestCase):
         with self.assertRaisesRegex(NotImplementedError, "chipy.Frobnicate"):
             self.chipy.Frobnicate(1)
         self.assertIn('RBDY2_FatalDamping', self.chipy.__all__)
+
+
+class Documented(unittest.TestCase):
+    def test_every_call_lmgc_offers_is_in_docs_chipy_md(self):
+        import re
+        from lmgc import chipy
+        doc = open(os.path.join(SOURCE, "docs", "chipy.md")).read()
+        named = set(re.findall(r"`(\w+)\(", doc))
+        offered = [n for n in chipy.__all__
+                   if callable(getattr(chipy, n)) and not getattr(getattr(chipy, n), "lmgc_missing", False)]
+        self.assertGreater(len(offered), 80)
+        self.assertEqual(sorted(set(offered) - named), [])
 
 
 class ScriptRuns(unittest.TestCase):

@@ -535,6 +535,96 @@ def getInteractions(this=False, human=True):
     return inters
 
 
+def _contactor_calls(kind):
+    def get_nb():
+        return len(_s().contactors(kind))
+
+    def get_ptr():
+        return _s().contactors(kind)
+
+    for suffix, function in (("GetNb" + kind, get_nb), ("GetPtr%s2BDYTY" % kind, get_ptr)):
+        function.__name__ = kind + "_" + suffix
+        globals()[function.__name__] = function
+        __all__.append(function.__name__)
+
+
+for _kind in ("DISKx", "xKSID", "POLYG", "JONCx", "PT2Dx", "SPHER", "CYLND", "DNLYC", "POLYR", "PLANx", "PT3Dx"):
+    _contactor_calls(_kind)
+
+
+def _equilibrium(dimension):
+    prefix = "RBDY%d_" % dimension
+    norm = {"checktype": "Qvlcy", "tol": 0.0}
+
+    def set_equilibrium_norm(checktype, tol):
+        if checktype not in ("Qvlcy", "Mvlcy"):
+            raise ValueError("%sSetEquilibriumNorm: checktype is 'Qvlcy' or 'Mvlcy', not %r" % (prefix, checktype))
+        norm["checktype"], norm["tol"] = checktype, float(tol)
+
+    def check_equilibrium_state():
+        # mod_RBDY2/3 check_equilibrium_state: |V_begin| of every visible body, their sum over the
+        # number of bodies ('Qvlcy') or their maximum ('Mvlcy') against the tolerance.
+        n = _s().body_count(dimension)
+        if n == 0:
+            return False
+        speeds = [float(_np.linalg.norm(_s().body_vector(dimension, "Vbeg_", i + 1))) for i in range(n)
+                  if _s().body_visible(dimension, i + 1)]
+        value = sum(speeds) / n if norm["checktype"] == "Qvlcy" else max(speeds, default=-1e20)
+        return value <= norm["tol"]
+
+    for suffix, function in (("SetEquilibriumNorm", set_equilibrium_norm),
+                             ("CheckEquilibriumState", check_equilibrium_state)):
+        function.__name__ = prefix + suffix
+        globals()[function.__name__] = function
+        __all__.append(function.__name__)
+
+
+_equilibrium(2)
+_equilibrium(3)
+
+
+@_export
+def RBDY2_ComputeMass():
+    _s().compute_mass()
+
+
+@_export
+def RBDY3_ComputeMass():
+    _s().compute_mass()
+
+
+@_export
+def TimeEvolution_DisplayStep():
+    print("@ Step %d, time %g" % (TimeEvolution_GetStep(), TimeEvolution_GetTime()))
+
+
+@_export
+def PT2Dx_SetDisplayRadius(radius):
+    """The radius PT2Dx points are drawn with: display only."""
+
+
+@_export
+def PT3Dx_SetDisplayRadius(radius):
+    """The radius PT3Dx points are drawn with: display only."""
+
+
+@_export
+def checkInteractiveCommand(last_name='last.h5'):
+    """LMGC90 polls a file of interactive commands here; lmgc has none to poll."""
+
+
+# LMGC90's parameter ids (Initialize sets them in chipy): body models, contactors, interactions.
+for _ids in (("RBDY2", "RBDY3", "MAILx", "MBS3D", "MBS2D"),
+             ("DISKx", "xKSID", "POLYG", "JONCx", "PT2Dx", "SPHER", "CYLND", "DNLYC", "POLYR", "PLANx", "PT3Dx",
+              "ALpxx", "CLxxx", "DISKL", "PT2DL", "ASpxx", "CSxxx"),
+             ("DKDKx", "DKKDx", "DKPLx", "DKJCx", "DKALp", "DKDKL", "PLPLx", "PLJCx", "PLALp", "PTPT2", "P2P2L",
+              "SPSPx", "SPCDx", "SPDCx", "SPPLx", "CDCDx", "CDPLx", "PRPRx", "PRPLx", "PRASp", "PTPT3", "CLALp",
+              "CLJCx", "CSASp", "CSPRx", "SPPRx")):
+    for _k, _name in enumerate(_ids):
+        globals()[_name + "_ID"] = _k + 1
+        __all__.append(_name + "_ID")
+
+
 # --- what lmgc does not offer -------------------------------------------------------------------
 
 _SUPPORT_NOT_RUN = {5: "is not done by lmgc", 6: "is LMGC90's multi-physics, which lmgc does not run",
@@ -553,6 +643,7 @@ def _missing(name):
         raise NotImplementedError("chipy.%s%s %s; docs/chipy.md lists the calls lmgc offers, and "
                                   "lmgc-solve --help the run parameters it takes" % (name, what, reason))
     not_offered.__name__ = name
+    not_offered.lmgc_missing = True
     return not_offered
 
 
