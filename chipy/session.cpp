@@ -192,7 +192,8 @@ struct Session::Run {
   virtual bool write_display(std::string& error) = 0;
   virtual std::size_t bodies() const = 0;
   virtual int dofs() const = 0;
-  virtual std::vector<double> get(BodyVector v, std::size_t body) const = 0;
+  virtual int size_of(BodyVector v) const = 0;
+  virtual void get_into(BodyVector v, std::size_t body, double* out) const = 0;
   virtual void put(BodyVector v, std::size_t body, std::span<const double> value) = 0;
   virtual bool vlocy_driven(std::size_t body, int dof) const = 0;
   virtual void impose_velocity(std::size_t body, int dof, double value, bool after_free_velocity) = 0;
@@ -321,61 +322,58 @@ struct DimensionRun final : Session::Run {
   std::size_t bodies() const override { return scene.bodies.size(); }
   int dofs() const override { return T::kDofs; }
 
-  // Positions: 2D (x, y, angle) = reference + X; 3D (x, y, z) = reference + X(1:3).
-  std::vector<double> position(const auto& displacement, std::size_t i) const {
-    const auto& b = scene.bodies;
-    std::vector<double> p;
-    if constexpr (T::kDimension == 2) {
-      const Eigen::Vector3d c = b.reference[i] + displacement;
-      p.assign(c.data(), c.data() + 3);
-    } else {
-      const Eigen::Vector3d c = b.reference[i] + displacement.template head<3>();
-      p.assign(c.data(), c.data() + 3);
-    }
-    return p;
+  // The size of a body vector: positions 3 (2D: x, y, angle; 3D: x, y, z), the others a value per dof.
+  int size_of(BodyVector v) const override {
+    return v == BodyVector::coor0 || v == BodyVector::coor || v == BodyVector::coorb || v == BodyVector::coorm
+               ? 3
+               : T::kDofs;
   }
   template <class V>
-  static std::vector<double> values(const V& v) {
-    return std::vector<double>(v.data(), v.data() + v.size());
+  static void copy(const V& v, double* out) {
+    for (int k = 0; k < static_cast<int>(v.size()); ++k) out[k] = v(k);
   }
-  std::vector<double> get(BodyVector v, std::size_t i) const override {
+  // Writes body i's vector into out[0, size_of(v)).
+  void get_into(BodyVector v, std::size_t i, double* out) const override {
     const auto& b = scene.bodies;
-    const double h = state.h;
+    // Positions: 2D (x, y, angle) = reference + X; 3D (x, y, z) = reference + X(1:3).
+    const auto position = [&](const auto& displacement) {
+      if constexpr (T::kDimension == 2)
+        copy(Eigen::Vector3d(b.reference[i] + displacement), out);
+      else
+        copy(Eigen::Vector3d(b.reference[i] + displacement.template head<3>()), out);
+    };
     switch (v) {
       case BodyVector::coor0:
-        return values(b.reference[i]);
+        return copy(b.reference[i], out);
       case BodyVector::coor:
-        return position(b.displacement[i], i);
+        return position(b.displacement[i]);
       case BodyVector::coorb:
-        return position(b.displacement_begin[i], i);
+        return position(b.displacement_begin[i]);
       case BodyVector::coorm:
-        if constexpr (T::kDimension == 2) {
-          const Eigen::Vector3d c =
-              b.reference[i] + b.displacement_begin[i] + (1.0 - state.theta) * state.h * b.velocity_begin[i];
-          return values(c);
-        }
-        break;
+        if constexpr (T::kDimension == 2)
+          copy(Eigen::Vector3d(b.reference[i] + b.displacement_begin[i] +
+                               (1.0 - state.theta) * state.h * b.velocity_begin[i]),
+               out);
+        return;
       case BodyVector::x:
-        return values(b.displacement[i]);
+        return copy(b.displacement[i], out);
       case BodyVector::xbeg:
-        return values(b.displacement_begin[i]);
+        return copy(b.displacement_begin[i], out);
       case BodyVector::v:
-        return values(b.velocity[i]);
+        return copy(b.velocity[i], out);
       case BodyVector::vbeg:
-        return values(b.velocity_begin[i]);
+        return copy(b.velocity_begin[i], out);
       case BodyVector::vfree:
-        return values(b.velocity_free[i]);
-      case BodyVector::reac: {
-        std::vector<double> r = values(b.impulse[i]);
-        for (double& x : r) x /= h;
-        return r;
-      }
+        return copy(b.velocity_free[i], out);
+      case BodyVector::reac:
+        copy(b.impulse[i], out);
+        for (int k = 0; k < T::kDofs; ++k) out[k] /= state.h;
+        return;
       case BodyVector::ireac:
-        return values(b.impulse[i]);
+        return copy(b.impulse[i], out);
       case BodyVector::fext:
-        return values(b.external_force[i]);
+        return copy(b.external_force[i], out);
     }
-    return {};
   }
   template <class V>
   static void assign(V& target, std::span<const double> value) {
@@ -937,7 +935,10 @@ std::vector<double> Session::body_vector(int dimension, std::string_view name, l
   if (run_->dimension() != dimension)
     fail(ErrorKind::order, call + " in a " + rbdy(run_->dimension()) + " case");
   const BodyVectorName& v = body_vector_name(name, false, dimension);
-  return run_->get(v.vector, body_index(*run_, body, call));
+  const std::size_t i = body_index(*run_, body, call);
+  std::vector<double> out(static_cast<std::size_t>(run_->size_of(v.vector)));
+  run_->get_into(v.vector, i, out.data());
+  return out;
 }
 
 std::vector<double> Session::all_body_vectors(int dimension, std::string_view name, std::size_t& size) const {
@@ -946,13 +947,9 @@ std::vector<double> Session::all_body_vectors(int dimension, std::string_view na
   if (run_->dimension() != dimension)
     fail(ErrorKind::order, call + " in a " + rbdy(run_->dimension()) + " case");
   const BodyVectorName& v = body_vector_name(name, false, dimension);
-  std::vector<double> all;
-  size = 0;
-  for (std::size_t i = 0; i < run_->bodies(); ++i) {
-    const std::vector<double> row = run_->get(v.vector, i);
-    size = row.size();
-    all.insert(all.end(), row.begin(), row.end());
-  }
+  size = static_cast<std::size_t>(run_->size_of(v.vector));
+  std::vector<double> all(size * run_->bodies());
+  for (std::size_t i = 0; i < run_->bodies(); ++i) run_->get_into(v.vector, i, all.data() + i * size);
   return all;
 }
 

@@ -91,6 +91,11 @@ class ChipyCalls(unittest.TestCase):
         self.assertEqual(np.count_nonzero(floor['rl'][:, 1] > 0.0), 4)  # the floor carries the four free disks
         np.testing.assert_allclose(floor['uc'][:, :, 1], np.tile([0.0, 1.0], (len(floor), 1)))  # n up
         np.testing.assert_allclose(floor['uc'][:, :, 0], np.tile([1.0, 0.0], (len(floor), 1)))  # t = (n_y, -n_x)
+        c = self.chipy
+        self.assertEqual(c.inter_handler_2D_getNb(c.DKJCx_ID), len(floor))
+        rows = c.inter_handler_2D_getAll(c.DKJCx_ID)
+        self.assertEqual(rows.shape, (len(floor), 11))
+        np.testing.assert_allclose(rows[:, 6:8], floor['rl'])
 
     def test_wrong_counts_and_types_raise(self):
         c = self.chipy

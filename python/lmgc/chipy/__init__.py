@@ -20,6 +20,7 @@ _session = None
 _log_messages = True
 _run_options = {"max_steps": -1, "quiet": False}
 _timers = []
+_INTERACTION_NAMES = {}  # interaction module name -> LMGC90's id (DKDKx_ID, ...)
 
 
 def _export(function):
@@ -623,6 +624,37 @@ for _ids in (("RBDY2", "RBDY3", "MAILx", "MBS3D", "MBS2D"),
     for _k, _name in enumerate(_ids):
         globals()[_name + "_ID"] = _k + 1
         __all__.append(_name + "_ID")
+_INTERACTION_NAMES.update({name: globals()[name + "_ID"] for name in _ids})
+
+
+def _inter_handler(dimension):
+    prefix = "inter_handler_%dD_" % dimension
+
+    def rows(inter_id):
+        if _s().dimension() != dimension:
+            raise RuntimeError("%s in a %dD case" % (prefix.rstrip("_"), _s().dimension()))
+        data = _s().interactions()
+        return data, [k for k, name in enumerate(data["inter"]) if _INTERACTION_NAMES.get(name) == int(inter_id)]
+
+    def get_nb(inter_id):
+        return len(rows(inter_id)[1])
+
+    def get_all(inter_id):
+        # chipy's real data per interaction: coor, the local frame (t, n[, s]), rl (r/h), vl, gap.
+        data, keep = rows(inter_id)
+        d = dimension
+        columns = [data["coor"][keep]] + [data["uc"][keep][:, k, :] for k in range(d)] + \
+                  [data["rl"][keep], data["vl"][keep], data["gapTT"][keep][:, None]]
+        return _np.hstack(columns) if keep else _np.zeros((0, d * (d + 3) + 1))
+
+    for suffix, function in (("getNb", get_nb), ("getAll", get_all)):
+        function.__name__ = prefix + suffix
+        globals()[function.__name__] = function
+        __all__.append(function.__name__)
+
+
+_inter_handler(2)
+_inter_handler(3)
 
 
 # --- what lmgc does not offer -------------------------------------------------------------------
