@@ -8,12 +8,12 @@
 #                             include them
 #   lib/cmake/lmgc/           lmgcConfig.cmake, lmgcConfigVersion.cmake, lmgcTargets.cmake
 #   share/doc/lmgc/           README.md, LICENSE, CHANGELOG.md, docs/
-# The Python module (chipy compatibility) will go to lib/python3/dist-packages/lmgc/ and
-# bin/lmgc-run.
+#   lib/python3/dist-packages/lmgc/  the Python module lmgc.chipy (python/CMakeLists.txt), bin/lmgc-run,
+#   lib/lmgc/forward/pylmgc90/        the forwarding package lmgc-run alone puts on its path
 include(CMakePackageConfigHelpers)
 
 set(lmgc_libraries lmgc_options lmgc_spatial lmgc_grammar_common lmgc_grammar lmgc_case_folder lmgc_run lmgc_validate
-                   lmgc_solver)
+                   lmgc_solver lmgc_chipy)
 foreach(kind IN LISTS LMGC_GRAMMAR_KINDS)
   list(APPEND lmgc_libraries lmgc_grammar_${kind})
 endforeach()
@@ -34,7 +34,7 @@ install(TARGETS ${lmgc_libraries} EXPORT lmgcTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lmgc)
-foreach(folder grammar case_folder run validate solver spatial)
+foreach(folder grammar case_folder run validate solver spatial chipy)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lmgc/${folder}
           FILES_MATCHING PATTERN "*.hpp")
 endforeach()
