@@ -53,6 +53,10 @@ int main(int argc, char** argv) {
   app.add_flag("-q,--quiet", quiet, "print only errors and the summary");
   app.add_flag("--werror", werror, "treat warnings as errors (exit code 1)");
   app.add_flag("--no-color", no_color, "never color the output (NO_COLOR in the environment does the same)");
+  bool read_script = false;
+  app.add_flag("--read-script", read_script,
+               "check command.py as lmgc-solve --read-script runs it: read, not run (what it computes is "
+               "named, L4013; the calls only a running script does are refused, L4005)");
   app.add_flag(
       "--command-dat", command_dat,
       "check the case as lmgc-solve --command-dat runs it: driven by DATBOX/COMMAND.DAT even when it "
@@ -78,16 +82,22 @@ int main(int argc, char** argv) {
   // Semantic checks (references, consistency, physics) run on whatever could be read: a file
   // with syntax errors still gets its cross references checked.
   if (files) {
-    const lmgc::validate::CheckOptions options{true, command_dat};
+    lmgc::validate::CheckOptions options{true, command_dat};
+    options.script_read_only = read_script;
     lmgc::validate::check_case(*files, sink, options);
     // What lmgc-solve would refuse or leave out: warnings here, for a case valid for LMGC90.
     lmgc::solver::report_solver_support(*files, sink);
     // The run parameters of the script that drives the run: out of range (L4010) or computed (L4013).
+    // By default the script runs (lmgc-run): a computed value is then known; only --read-script
+    // has to name it.
     if (lmgc::validate::script_drives(*files, options)) {
       lmgc::run::RunOptions run;
       lmgc::run::ParameterSources sources;
+      lmgc::grammar::DiagnosticSink script_sink(5000);
       lmgc::run::apply_script_parameters(*files->command_script, lmgc::solver::is_rigid_3d_case(*files), run,
-                                         sources, sink);
+                                         sources, script_sink);
+      for (const auto& d : script_sink.items())
+        if (read_script || d.code != "L4013") sink.report(d);
     }
   }
 

@@ -301,8 +301,9 @@ constexpr std::array kCatalogue = {
                    "outside (0, 2], a non-positive period or output frequency, an unknown NLGS norm or "
                    "storage."},
     DiagnosticKind{"L4011", warning, "command.py present",
-                   "The case has a command.py: LMGC90 2025 runs it and no longer reads COMMAND.DAT. "
-                   "lmgc-solve does not run Python scripts yet: it reads the script and takes the run "
+                   "The case has a command.py: LMGC90 2025 runs it and no longer reads COMMAND.DAT, and "
+                   "so does lmgc-solve (through lmgc-run). With --read-script or a run-parameter flag, "
+                   "lmgc-solve runs its own loop instead: it reads the script and takes the run "
                    "parameters its chipy calls pass as literals (time step, theta, the step loop's "
                    "count, the NLGS's settings, output frequencies, boundaries, periods, ...), then the "
                    "flags; COMMAND.DAT is not read (--command-dat reads it instead of the script). What "
@@ -314,8 +315,9 @@ constexpr std::array kCatalogue = {
                    "loads MP_DEM.DAT). Without it LMGC90 runs the body as RIGID, and so does lmgc-solve."},
     DiagnosticKind{"L4013", warning, "run parameter computed by command.py",
                    "command.py sets a run parameter with a value computed at run time (a function call, "
-                   "a name bound under a condition, input read from a file) that lmgc-solve, which reads "
-                   "the script without running it, cannot know. The message names the value lmgc-solve "
+                   "a name bound under a condition, input read from a file) that lmgc-solve --read-script, "
+                   "which reads the script without running it, cannot know (lmgc-check reports it with "
+                   "--read-script). The message names the value lmgc-solve "
                    "runs instead and the flag that sets it: give the flag with the script's value."},
     // L9xxx — input/output.
     DiagnosticKind{"L9001", error, "cannot read file",
