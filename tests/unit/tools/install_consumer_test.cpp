@@ -51,5 +51,37 @@ TEST(Install, AProjectBuildsAgainstTheInstalledPackage) {
   EXPECT_NE(run.output.find("step 12, pi_g 3.1415927410"), std::string::npos) << run.output;
 }
 
+// The installed lmgc-run runs a script with the installed module; the forwarding pylmgc90 package
+// is installed off Python's default path, so that `import pylmgc90` outside lmgc-run still means a
+// real LMGC90 (or nothing).
+TEST(Install, LmgcRunRunsFromThePrefixAndPylmgc90IsNotShadowed) {
+#ifdef LMGC_SANITIZED_BUILD
+  GTEST_SKIP() << "a sanitized build has no Python module";
+#endif
+  if (!fs::exists(tool_path("lmgc-run"))) GTEST_SKIP() << "this build has no Python module (lmgc-run)";
+  const fs::path prefix = scratch_dir("install_prefix_python");
+  const ToolRun install = run_command("cmake --install '" + std::string(LMGC_BINARY_DIR) + "' --prefix '" +
+                                      prefix.string() + "'");
+  ASSERT_EQ(install.exit_code, 0) << install.output;
+  EXPECT_TRUE(fs::exists(prefix / "lib" / "python3" / "dist-packages" / "lmgc" / "chipy" / "__init__.py"));
+  EXPECT_FALSE(fs::exists(prefix / "lib" / "python3" / "dist-packages" / "pylmgc90"));
+  EXPECT_TRUE(fs::exists(prefix / "lib" / "lmgc" / "forward" / "pylmgc90" / "chipy" / "__init__.py"));
+  const fs::path dir = scratch_dir("install_lmgc_run");
+  fs::copy(fs::path(LMGC_SOURCE_DIR) / "reference_cases" / "script_driven_pusher", dir,
+           fs::copy_options::recursive);
+  const ToolRun run = run_command("'" + (prefix / "bin" / "lmgc-run").string() + "' '" + dir.string() +
+                                  "' --quiet --max-steps 20");
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(fs::exists(dir / "OUTBOX" / "DOF.LAST"));
+  // With the installed packages' folder on the path, pylmgc90 is not lmgc's.
+  const ToolRun plain = run_command(
+      "PYTHONPATH='" + (prefix / "lib" / "python3" / "dist-packages").string() +
+      "' /usr/bin/python3 -c \"import importlib.util, lmgc.chipy; s = importlib.util.find_spec('pylmgc90'); "
+      "print('pylmgc90 at', s.origin if s else None)\"");
+  EXPECT_EQ(plain.exit_code, 0) << plain.output;
+  EXPECT_NE(plain.output.find("pylmgc90 at "), std::string::npos) << plain.output;
+  EXPECT_EQ(plain.output.find(prefix.string()), std::string::npos) << plain.output;
+}
+
 }  // namespace
 }  // namespace lmgc::test
