@@ -30,40 +30,48 @@ inline int strain_size(Hypothesis h) {
   return 0;
 }
 
-// D of linear isotropic elasticity (Young's modulus E, Poisson's ratio ν) in the strain order above.
+// D of linear isotropic elasticity (Young's modulus E, Poisson's ratio ν) in the strain order above,
+// written as LMGC90 writes it (D_SOLID_ISO, mailx-2d.md §2.2): c(1 − ν), cν and c(1 − 2ν)/2 with
+// c = E/((1 − 2ν)(1 + ν)); plane stress c = E/(1 − ν²).
 inline Eigen::MatrixXd elasticity_matrix(Hypothesis h, double young, double poisson) {
   const double e = young, nu = poisson;
   Eigen::MatrixXd d = Eigen::MatrixXd::Zero(strain_size(h), strain_size(h));
-  const double lambda = e * nu / ((1 + nu) * (1 - 2 * nu)), mu = e / (2 * (1 + nu));
+  const double c = e / ((1.0 - 2.0 * nu) * (1.0 + nu));
+  const double normal = c * (1.0 - nu), coupling = c * nu, shear = c * (1.0 - 2.0 * nu) / 2.0;
   switch (h) {
     case Hypothesis::plane_stress: {
-      const double c = e / (1 - nu * nu);
-      d << c, c * nu, 0, c * nu, c, 0, 0, 0, mu;
+      const double s = e / (1.0 - nu * nu);
+      d << s, s * nu, 0, s * nu, s, 0, 0, 0, s * (1.0 - nu) / 2.0;
       break;
     }
     case Hypothesis::plane_strain:
-      d << lambda + 2 * mu, lambda, 0, lambda, lambda + 2 * mu, 0, 0, 0, mu;
+      d << normal, coupling, 0, coupling, normal, 0, 0, 0, shear;
       break;
     case Hypothesis::axisymmetric:
-      // (rr, zz, rz, θθ): the normal components couple by λ.
-      d << lambda + 2 * mu, lambda, 0, lambda,  //
-          lambda, lambda + 2 * mu, 0, lambda,   //
-          0, 0, mu, 0,                          //
-          lambda, lambda, 0, lambda + 2 * mu;
+      // (rr, zz, rz, θθ): the normal components couple by cν.
+      d << normal, coupling, 0, coupling,  //
+          coupling, normal, 0, coupling,   //
+          0, 0, shear, 0,                  //
+          coupling, coupling, 0, normal;
       break;
     case Hypothesis::three_d:
       for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) d(i, j) = lambda;
-        d(i, i) = lambda + 2 * mu;
-        d(i + 3, i + 3) = mu;
+        for (int j = 0; j < 3; ++j) d(i, j) = coupling;
+        d(i, i) = normal;
+        d(i + 3, i + 3) = shear;
       }
       break;
   }
   return d;
 }
 
+// LMGC90's 2π in axisymmetric integrals: the decimal 6.2831853 (mailx-2d.md §2.4).
+inline constexpr double kAxisymmetricTwoPi = 6.2831853;
+
 // What an element sees at one Gauss point: shape values, physical gradients, the volume weight
 // (|J| w, times 2π r in axisymmetry: the integral over the full revolution), the point's position.
+// A Jacobian that is not positive is refused (LMGC90 takes det J as it comes and integrates a
+// clockwise element with negative stiffness and mass, mailx-2d.md §1.4; lmgc-check reports it).
 template <class E>
 struct PointGeometry {
   Eigen::Matrix<double, E::kNodes, 1> values;
@@ -91,7 +99,7 @@ std::optional<PointGeometry<E>> point_geometry(const NodeCoordinates<E>& x, cons
   g.gradients = reference * j.inverse();
   g.position = x.transpose() * g.values;
   g.weight = g.jacobian * weight;
-  if (h == Hypothesis::axisymmetric) g.weight *= 2.0 * std::numbers::pi * g.position.x();
+  if (h == Hypothesis::axisymmetric) g.weight *= kAxisymmetricTwoPi * g.position.x();
   return g;
 }
 

@@ -21,6 +21,7 @@ struct QuadratureRule {
 enum class Rule : std::uint8_t {
   triangle_1,  // centroid
   triangle_3,  // interior points (1/6, 1/6), (2/3, 1/6), (1/6, 2/3)
+  triangle_6,
   quad_2x2,
   quad_3x3,
   tetrahedron_1,
@@ -28,15 +29,16 @@ enum class Rule : std::uint8_t {
   hexahedron_2x2x2,
 };
 
-// Gauss points of a tensor rule on [−1, 1]ⁿ in LMGC90's order: the first coordinate fastest.
+// Gauss points of a tensor rule on [−1, 1]ⁿ: LMGC90 writes the abscissae and weights as 15-digit
+// decimals (mailx-2d.md §1.3); the same decimals here keep its element matrices to the last bit.
 inline std::vector<double> gauss_line(int n, std::vector<double>& weights) {
   if (n == 2) {
-    const double a = 1.0 / std::sqrt(3.0);
+    const double a = 0.577350269189626;
     weights = {1.0, 1.0};
     return {-a, a};
   }
-  const double a = std::sqrt(0.6);
-  weights = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+  const double a = 0.774596669241483;
+  weights = {0.555555555555556, 0.888888888888889, 0.555555555555556};
   return {-a, 0.0, a};
 }
 
@@ -57,6 +59,17 @@ QuadratureRule<D> quadrature(Rule rule) {
         add(Point<2>(2.0 / 3.0, 1.0 / 6.0), 1.0 / 6.0);
         add(Point<2>(1.0 / 6.0, 2.0 / 3.0), 1.0 / 6.0);
         break;
+      case Rule::triangle_6: {
+        const double a = 0.445948490915965, b = 0.091576213509771;
+        const double wa = 0.111690794839005, wb = 0.054975871827661;
+        add(Point<2>(a, a), wa);
+        add(Point<2>(1 - 2 * a, a), wa);
+        add(Point<2>(a, 1 - 2 * a), wa);
+        add(Point<2>(b, b), wb);
+        add(Point<2>(1 - 2 * b, b), wb);
+        add(Point<2>(b, 1 - 2 * b), wb);
+        break;
+      }
       case Rule::quad_2x2:
       case Rule::quad_3x3: {
         std::vector<double> w;
@@ -74,11 +87,11 @@ QuadratureRule<D> quadrature(Rule rule) {
         add(Point<3>(0.25, 0.25, 0.25), 1.0 / 6.0);
         break;
       case Rule::tetrahedron_4: {
-        const double a = 0.5854101966249685, b = 0.1381966011250105;
-        add(Point<3>(b, b, b), 1.0 / 24.0);
-        add(Point<3>(a, b, b), 1.0 / 24.0);
-        add(Point<3>(b, a, b), 1.0 / 24.0);
-        add(Point<3>(b, b, a), 1.0 / 24.0);
+        const double a = (5.0 - std::sqrt(5.0)) / 20.0, b = (5.0 + 3.0 * std::sqrt(5.0)) / 20.0;
+        add(Point<3>(a, a, a), 1.0 / 24.0);
+        add(Point<3>(a, a, b), 1.0 / 24.0);
+        add(Point<3>(a, b, a), 1.0 / 24.0);
+        add(Point<3>(b, a, a), 1.0 / 24.0);
         break;
       }
       case Rule::hexahedron_2x2x2: {
