@@ -1,0 +1,160 @@
+#include "solver/model/mesh_bodies.hpp"
+
+#include <map>
+
+namespace lmgc::solver {
+
+namespace {
+
+const grammar::ModelOption* option(const grammar::Model& model, std::string_view id) {
+  for (const grammar::ModelOption& o : model.options)
+    if (o.id.value == id) return &o;
+  return nullptr;
+}
+
+}  // namespace
+
+bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypothesis, MeshBodies& out,
+                       grammar::DiagnosticSink& sink) {
+  out = {};
+  if (!files.bodies) return true;
+  const std::string models_path = (files.case_dir / "DATBOX" / "MODELS.DAT").string();
+  const std::string bodies_path = (files.case_dir / "DATBOX" / "BODIES.DAT").string();
+  const std::string bulk_path = (files.case_dir / "DATBOX" / "BULK_BEHAV.DAT").string();
+  const auto refuse = [&](const std::string& path, grammar::SourceSpan span, const std::string& what) {
+    sink.report("L4003", grammar::Location{path, span}, what);
+    return false;
+  };
+  // The models lmgc runs: MECAx, small strain, linear isotropic elasticity.
+  std::map<std::string, const grammar::Model*> models;
+  std::map<std::string, bool> matlib;
+  if (files.models)
+    for (const grammar::Model& m : files.models->models) {
+      models[m.nickname.value] = &m;
+      const auto at = m.nickname.span;
+      if (m.kind.value != "MECAx")
+        return refuse(models_path, m.kind.span,
+                      "model '" + m.nickname.value + "' is " + m.kind.value +
+                          ": lmgc runs mechanical (MECAx) models only for now");
+      if (!fem::find_element(m.element.value))
+        return refuse(models_path, m.element.span,
+                      "model '" + m.nickname.value + "' uses the element " + m.element.value +
+                          ", which lmgc does not have yet (it has T3xxx, Q4xxx, T6xxx, Q8xxx, TE4xx, H8xxx)");
+      const grammar::ModelOption* kine = option(m, "kine_");
+      if (kine && kine->value.value != "small")
+        return refuse(models_path, kine->value.span,
+                      "model '" + m.nickname.value + "' asks for 'kine_ " + kine->value.value +
+                          "': lmgc runs small strain only for now (large strain comes with the Newton loop)");
+      const grammar::ModelOption* mater = option(m, "mater");
+      if (mater && mater->value.value != "elas_")
+        return refuse(models_path, mater->value.span,
+                      "model '" + m.nickname.value + "' asks for 'mater " + mater->value.value +
+                          "': lmgc runs linear elasticity (elas_) only for now");
+      const grammar::ModelOption* aniso = option(m, "aniso");
+      if (aniso && aniso->value.value != "iso__")
+        return refuse(models_path, aniso->value.span,
+                      "model '" + m.nickname.value + "' is anisotropic: lmgc runs isotropic elasticity only");
+      const grammar::ModelOption* isext = option(m, "isext");
+      matlib[m.nickname.value] = isext && isext->value.value == "MatL_";
+      if (matlib[m.nickname.value] && hypothesis == fem::Hypothesis::plane_stress)
+        return refuse(
+            models_path, isext->value.span,
+            "model '" + m.nickname.value +
+                "' hands elasticity to MatLib ('isext MatL_'), whose 2D laws are plane strain: lmgc "
+                "does not know what LMGC90 runs then in plane stress");
+      (void)at;
+    }
+  // Materials: the ELAS laws, by nickname.
+  std::map<std::string, std::int32_t> material_of;
+  std::vector<fem::Material> materials;
+  const auto material = [&](const grammar::Word& behav) -> std::int32_t {
+    auto it = material_of.find(behav.value);
+    if (it != material_of.end()) return it->second;
+    if (!files.bulk_behav) return -1;
+    for (const grammar::BulkLaw& law : files.bulk_behav->laws) {
+      if (law.nickname.value != behav.value) continue;
+      if (law.law_type.value != "ELAS" || law.density_field) return -1;
+      fem::Material m;
+      m.density = law.density.value;
+      for (const grammar::BulkBlock& block : law.blocks)
+        if (block.kind == grammar::BulkBlockKind::elas && !block.lines.empty() && !block.lines[0].field &&
+            block.lines[0].values.size() >= 2) {
+          m.young = block.lines[0].values[0].value;
+          m.poisson = block.lines[0].values[1].value;
+        }
+      if (!(m.young > 0.0)) return -1;
+      const auto id = static_cast<std::int32_t>(materials.size());
+      materials.push_back(m);
+      material_of.emplace(behav.value, id);
+      return id;
+    }
+    return -1;
+  };
+  const int dimension = hypothesis == fem::Hypothesis::three_d ? 3 : 2;
+  for (const grammar::Body& body : files.bodies->bodies) {
+    if (body.type != grammar::BodyType::mailx) continue;
+    fem::MeshBody mesh;
+    mesh.dimension = dimension;
+    mesh.hypothesis = hypothesis;
+    for (const grammar::Node& node : body.nodes)
+      for (int c = 0; c < dimension; ++c)
+        mesh.coordinates.push_back(c < static_cast<int>(node.coordinates.size())
+                                       ? node.coordinates[static_cast<std::size_t>(c)].value
+                                       : 0.0);
+    bool lumped = true, any = false, body_matlib = false;
+    for (const grammar::Element& e : body.elements) {
+      // The element's mechanical model (a MAILx element may carry a thermal one too).
+      const grammar::ModelReference* reference = nullptr;
+      for (const grammar::ModelReference& r : e.models) {
+        auto it = models.find(r.model.value);
+        if (it != models.end() && it->second->kind.value == "MECAx") reference = &r;
+      }
+      if (!reference)
+        return refuse(bodies_path, e.type.span,
+                      "element " + e.type.value + " has no mechanical (MECAx) model");
+      const grammar::Model& model = *models.at(reference->model.value);
+      const fem::ElementEntry& entry = *fem::find_element(model.element.value);
+      if (static_cast<std::size_t>(entry.nodes) != e.nodes.size())
+        return refuse(bodies_path, e.type.span,
+                      "element " + e.type.value + " has " + std::to_string(e.nodes.size()) +
+                          " nodes; its model's " + std::string(entry.name) + " has " +
+                          std::to_string(entry.nodes));
+      if (entry.dimension != dimension)
+        return refuse(models_path, model.element.span,
+                      "the element " + std::string(entry.name) + " is not of the case's dimension");
+      fem::MeshElement element;
+      element.kind = entry.kind;
+      for (std::size_t k = 0; k < e.nodes.size(); ++k) {
+        const std::int64_t n = e.nodes[k].value;
+        if (n < 1 || static_cast<std::size_t>(n) > body.nodes.size())
+          return refuse(bodies_path, e.nodes[k].span,
+                        "node " + std::to_string(n) + " is not a node of this body");
+        element.nodes[k] = static_cast<std::int32_t>(n - 1);
+      }
+      element.material = material(reference->behav);
+      if (element.material < 0)
+        return refuse(
+            bulk_path, reference->behav.span,
+            "bulk behaviour '" + reference->behav.value +
+                "' is not an ELAS law with a density, a Young's modulus and a Poisson's ratio: lmgc runs "
+                "linear isotropic elasticity only for now");
+      const grammar::ModelOption* mstrg = option(model, "mstrg");
+      const bool lump = mstrg && mstrg->value.value == "lump_";  // anything else: consistent (mailx-2d.md §3)
+      if (any && lump != lumped)
+        return refuse(models_path, model.nickname.span,
+                      "a body whose elements mix lumped and consistent masses");
+      lumped = lump;
+      any = true;
+      body_matlib = matlib[model.nickname.value];
+      mesh.elements.push_back(element);
+    }
+    mesh.lumped_mass = lumped;
+    mesh.materials = materials;
+    out.bodies.push_back(std::move(mesh));
+    out.matlib.push_back(body_matlib);
+  }
+  for (auto& mesh : out.bodies) mesh.materials = materials;
+  return true;
+}
+
+}  // namespace lmgc::solver

@@ -1,0 +1,91 @@
+// The MAILx bodies of LMGC90's example mecaMAILx_RIGID_2D/4cubes as linear elastic meshes
+// (solver/model/mesh_bodies.hpp): their elements, materials and lumped masses as the case gives them
+// (each body's mass is ρ times its area, the area from the nodes' coordinates), a stiffness whose
+// kernel is the three rigid modes; and a model lmgc does not run yet is refused at its line.
+#include "solver/model/mesh_bodies.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <filesystem>
+#include <fstream>
+
+#include "tests/support/run_tool.hpp"
+#include "tests/support/shared_data.hpp"
+
+namespace lmgc::solver {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path four_cubes() {
+  return test::examples_dir() / "mecaMAILx_RIGID_2D" / "4cubes";
+}
+
+TEST(MeshBodies, FourCubesMeshesHaveTheirMassAndOnlyRigidModesInTheirKernel) {
+  LMGC_REQUIRE_SHARED();
+  grammar::DiagnosticSink sink(100);
+  const auto files = case_folder::load_case(four_cubes(), sink);
+  ASSERT_TRUE(files);
+  MeshBodies meshes;
+  ASSERT_TRUE(build_mesh_bodies(*files, fem::Hypothesis::plane_strain, meshes, sink));
+  EXPECT_EQ(sink.error_count(), 0u);
+  ASSERT_EQ(meshes.bodies.size(), 3u);
+  const fem::MeshBody& body = meshes.bodies[0];
+  EXPECT_EQ(body.nodes(), 9u);
+  EXPECT_EQ(body.elements.size(), 8u);
+  EXPECT_TRUE(body.lumped_mass);
+  EXPECT_TRUE(meshes.matlib[0]);
+  ASSERT_EQ(body.materials.size(), 1u);
+  EXPECT_EQ(body.materials[0].young, 0.16e11);
+  EXPECT_EQ(body.materials[0].poisson, 0.3);
+  EXPECT_EQ(body.materials[0].density, 2300.0);
+  for (const fem::MeshBody& mesh : meshes.bodies) {
+    fem::LinearBodyMatrices m;
+    std::string error;
+    ASSERT_TRUE(fem::assemble(mesh, m, error)) << error;
+    double area = 0.0;
+    for (const fem::MeshElement& e : mesh.elements) {
+      const auto p = [&](int k) {
+        const auto n = static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(k)]);
+        return Eigen::Vector2d(mesh.coordinates[2 * n], mesh.coordinates[2 * n + 1]);
+      };
+      const Eigen::Vector2d a = p(1) - p(0), b = p(2) - p(0);
+      area += 0.5 * (a.x() * b.y() - a.y() * b.x());
+    }
+    // Lumped mass: diagonal, each component carries the body's mass.
+    const Eigen::VectorXd diagonal = Eigen::MatrixXd(m.mass).diagonal();
+    EXPECT_NEAR((Eigen::MatrixXd(m.mass) - Eigen::MatrixXd(diagonal.asDiagonal())).norm(), 0.0, 0.0);
+    double x_mass = 0.0;
+    for (Eigen::Index i = 0; i < diagonal.size(); i += 2) x_mass += diagonal(i);
+    EXPECT_NEAR(x_mass, 2300.0 * area, 1e-9 * 2300.0 * area);
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen{Eigen::MatrixXd(m.stiffness)};
+    const double largest = eigen.eigenvalues().maxCoeff();
+    for (int i = 0; i < 3; ++i) EXPECT_LT(std::abs(eigen.eigenvalues()(i)), 1e-9 * largest);
+    EXPECT_GT(eigen.eigenvalues()(3), 1e-6 * largest);
+  }
+}
+
+TEST(MeshBodies, AModelLmgcDoesNotRunIsRefusedAtItsLine) {
+  LMGC_REQUIRE_SHARED();
+  const fs::path dir = test::scratch_dir("mesh_bodies_large_strain");
+  fs::copy(four_cubes() / "DATBOX", dir / "DATBOX", fs::copy_options::recursive);
+  std::string models = test::read_file(dir / "DATBOX" / "MODELS.DAT");
+  const auto at = models.find("kine_  small");
+  ASSERT_NE(at, std::string::npos);
+  models.replace(at, 12, "kine_  large");
+  std::ofstream(dir / "DATBOX" / "MODELS.DAT") << models;
+  grammar::DiagnosticSink sink(100);
+  const auto files = case_folder::load_case(dir, sink);
+  ASSERT_TRUE(files);
+  MeshBodies meshes;
+  EXPECT_FALSE(build_mesh_bodies(*files, fem::Hypothesis::plane_strain, meshes, sink));
+  ASSERT_FALSE(sink.items().empty());
+  const grammar::Diagnostic& d = sink.items().back();
+  EXPECT_EQ(d.code, "L4003");
+  EXPECT_NE(d.message.find("kine_ large"), std::string::npos) << d.message;
+  EXPECT_EQ(d.where.span.line, 25u);  // MODELS.DAT's kine_ line
+}
+
+}  // namespace
+}  // namespace lmgc::solver
