@@ -1,0 +1,90 @@
+#include "solver/io/mesh_gauss_values.hpp"
+
+namespace lmgc::solver {
+
+namespace {
+
+using fem::Hypothesis;
+
+// stress and strain of one Gauss point in the written order.
+void point_values(const fem::MeshBody& body, bool matlib, const Eigen::VectorXd& strain_voigt, double poisson,
+                  const Eigen::MatrixXd& d, std::vector<std::vector<grammar::Real>>& lines) {
+  const Eigen::VectorXd stress_voigt = d * strain_voigt;
+  std::vector<double> stress, strain;
+  if (body.dimension == 2) {
+    // Voigt (xx, yy, xy[, θθ]) → the 4-component vectors.
+    double szz = 0.0, ezz = 0.0;
+    if (body.hypothesis == Hypothesis::axisymmetric) {
+      szz = stress_voigt(3);
+      ezz = strain_voigt(3);
+    } else if (body.hypothesis == Hypothesis::plane_strain) {
+      szz = poisson * (stress_voigt(0) + stress_voigt(1));
+    }
+    if (matlib) {
+      stress = {stress_voigt(0), stress_voigt(2), stress_voigt(1), szz};
+      strain = {strain_voigt(0), strain_voigt(2), strain_voigt(1), ezz};
+    } else {
+      stress = {stress_voigt(0), stress_voigt(1), stress_voigt(2), szz};
+      strain = {strain_voigt(0), strain_voigt(1), strain_voigt(2), ezz};
+    }
+  } else {
+    // Voigt (xx, yy, zz, xy, yz, zx).
+    const auto order = matlib ? std::array<int, 6>{0, 3, 1, 5, 4, 2} : std::array<int, 6>{0, 1, 2, 3, 4, 5};
+    for (int k : order) {
+      stress.push_back(stress_voigt(k));
+      strain.push_back(strain_voigt(k));
+    }
+  }
+  const auto line = [](const std::vector<double>& v) {
+    return std::vector<grammar::Real>(v.begin(), v.end());
+  };
+  lines.push_back(line(stress));
+  lines.push_back(line(strain));
+  if (matlib) lines.push_back({grammar::Real{0.5 * stress_voigt.dot(strain_voigt)}});
+}
+
+}  // namespace
+
+grammar::GpvBody gauss_point_values(const fem::MeshBody& body, bool matlib,
+                                    const Eigen::VectorXd& displacement, int body_number) {
+  grammar::GpvBody out;
+  out.number = body_number;
+  for (std::size_t e = 0; e < body.elements.size(); ++e) {
+    const fem::MeshElement& element = body.elements[e];
+    const fem::ElementEntry& entry = fem::element_entry(element.kind);
+    grammar::GpvElement written;
+    written.type = grammar::Word{std::string(entry.name)};
+    written.number = static_cast<std::int64_t>(e + 1);
+    grammar::GpvModelBlock block;
+    block.model = grammar::Word{std::string("MECAx")};
+    const fem::Material& material = body.materials[static_cast<std::size_t>(element.material)];
+    const Eigen::MatrixXd d = fem::elasticity_matrix(body.hypothesis, material.young, material.poisson);
+    fem::with_element(element.kind, [&](auto shape) {
+      using E = decltype(shape);
+      constexpr int D = E::kDimension;
+      if (D != body.dimension) return;
+      fem::NodeCoordinates<E> x;
+      Eigen::Matrix<double, E::kNodes * D, 1> u;
+      for (int k = 0; k < E::kNodes; ++k) {
+        const auto node = static_cast<Eigen::Index>(element.nodes[static_cast<std::size_t>(k)]);
+        for (int c = 0; c < D; ++c) {
+          x(k, c) = body.coordinates[static_cast<std::size_t>(node * D + c)];
+          u(k * D + c) = displacement(node * D + c);
+        }
+      }
+      const fem::QuadratureRule<D> rule = fem::quadrature<D>(entry.stiffness_rule);
+      for (int p = 0; p < rule.size(); ++p) {
+        const auto g = fem::point_geometry<E>(x, rule.points[static_cast<std::size_t>(p)],
+                                              rule.weights[static_cast<std::size_t>(p)], body.hypothesis);
+        if (!g) continue;  // refused when the body was assembled
+        const Eigen::VectorXd strain = fem::strain_matrix<E>(*g, body.hypothesis) * u;
+        point_values(body, matlib, strain, material.poisson, d, block.lines);
+      }
+    });
+    written.models.push_back(std::move(block));
+    out.elements.push_back(std::move(written));
+  }
+  return out;
+}
+
+}  // namespace lmgc::solver

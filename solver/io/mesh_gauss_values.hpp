@@ -1,0 +1,20 @@
+#pragma once
+// The Gauss-point values LMGC90 writes for a linear elastic MAILx body (GPV.OUT.n, GPV.LAST): per
+// element, per Gauss point of its stiffness rule, the stress and the strain of the displacement X on
+// the reference geometry, in LMGC90's component order (docs/lmgc90-facts/mailx-2d.md §5):
+// - its own elasticity ('isext no___'): σ (xx, yy, xy, zz), ε (xx, yy, γxy, 0) in 2D (σzz = ν(σxx + σyy)
+//   in plane strain, 0 in plane stress; axisymmetric (rr, zz, rz, θθ)); 3D (xx, yy, zz, xy, yz, zx);
+// - MatLib's ('isext MatL_'): σ (xx, xy, yy, zz), ε (xx, γxy, yy, zz), then a line with the elastic
+//   energy density ½ σ:ε; 3D (xx, xy, yy, xz, yz, zz).
+#include <Eigen/Core>
+
+#include "grammar/gpv/ast.hpp"
+#include "solver/fem/linear_body.hpp"
+
+namespace lmgc::solver {
+
+// body_number: the MAILx rank (1-based) written on the block.
+grammar::GpvBody gauss_point_values(const fem::MeshBody& body, bool matlib,
+                                    const Eigen::VectorXd& displacement, int body_number);
+
+}  // namespace lmgc::solver
