@@ -128,3 +128,68 @@ for k in range(0, nb_steps):
 chipy.WriteLastVlocRloc()
 chipy.Finalize()
 {timer_file}"""
+
+
+def mailx_rectangle(nx, ny, length, height, element="Q4xxx", distort=0.0):
+    """Nodes and elements of a MAILx rectangle [0, length] × [0, height]: nx × ny cells, each one
+    Q4xxx or two T3xxx; interior nodes moved by up to `distort` (never inverted). Nodes row after
+    row from the bottom; returns ([(x, y, on_boundary)], [[node, ...]])."""
+    nodes, index = [], {}
+    for j in range(ny + 1):
+        for i in range(nx + 1):
+            x, y = length * i / nx, height * j / ny
+            boundary = i in (0, nx) or j in (0, ny)
+            if distort and not boundary:
+                x += distort * math.sin(3.7 * x + 1.3 * y)
+                y += distort * math.cos(2.1 * x - 4.3 * y)
+            index[(i, j)] = len(nodes) + 1
+            nodes.append((x, y, boundary))
+    elements = []
+    for j in range(ny):
+        for i in range(nx):
+            a, b, c, d = index[(i, j)], index[(i + 1, j)], index[(i + 1, j + 1)], index[(i, j + 1)]
+            elements += [[a, b, c, d]] if element == "Q4xxx" else [[a, b, c], [a, c, d]]
+    return nodes, elements
+
+
+def mailx_bodies(nodes, elements, element, model, behav):
+    """BODIES.DAT of one MAILx body (2D nodes)."""
+    out = "$bdyty\n MAILx      1\n$blmty\n"
+    for k, e in enumerate(elements):
+        out += f" {element}{k + 1:7d}  nodes" + "".join(f"{v:7d}" for v in e) + "\n"
+        out += f"               model  {model}  behav  {behav}\n"
+    out += "$nodty\n"
+    for k, (x, y, _) in enumerate(nodes):
+        out += f" NO2xx{k + 1:7d}                coo1={real(x)}  coo2={real(y)}\n"
+    return out + "$$$$$$\n"
+
+
+def mailx_model(model, element, lumped):
+    """MODELS.DAT: one mechanical model, small strain, LMGC90's own linear elasticity."""
+    return (f"$model  mdlty  finel  eleop  value\n {model}\n        MECAx  {element}  isext  no___\n"
+            "                      kine_  small\n                      form_  xxxxx\n"
+            "                      aniso  iso__\n                      mater  elas_\n"
+            f"                      mstrg  {'lump_' if lumped else 'coher'}\n")
+
+
+def elas_bulk(name, density, young, poisson, gravity=(0.0, 0.0)):
+    """BULK_BEHAV.DAT with one ELAS law."""
+    return (f"$gravy\n                   grv1={real(gravity[0])}  grv2={real(gravity[1])}  grv3={real(0.0)}\n\n"
+            f"$behav  lawty\n {name}  ELAS                            Umas={real(density)}\n"
+            "                                        elas: standard\n                                        ani_: isotropic\n"
+            f"                                        EYng={real(young)}  EPss={real(poisson)}\n")
+
+
+def mailx_driven(velocities):
+    """DRV_DOF.DAT of MAILx body 1: {node: [vx or None, vy or None]} constant imposed velocities."""
+    out = "$bdyty\n MAILx      1\n$model\n MECAx\n"
+    for node in sorted(velocities):
+        out += f"$nodty\n NO2xx{node:7d}\n{TEMPLATE}\n"
+        for c, v in enumerate(velocities[node]):
+            if v is not None:
+                out += f" vlocy{c + 1:7d} {real(v)} {real(0.0)} {real(0.0)} {real(0.0)} {real(1.0)} {real(0.0)}\n"
+    return out + "$$$$$$\n"
+
+
+STATE_HEADER = ("! DOF\n\n$steps      0                time= 0.0000000D+00\n\n"
+                "!-----------------------------------------------------------------------\n")

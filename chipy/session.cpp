@@ -10,6 +10,7 @@
 #include "grammar/common/diagnostic_catalogue.hpp"
 #include "grammar/common/output_file.hpp"
 #include "grammar/dof/writer.hpp"
+#include "grammar/gpv/writer.hpp"
 #include "grammar/vloc_rloc/interaction_catalogue.hpp"
 #include "grammar/vloc_rloc/writer.hpp"
 #include "run/run_parameters.hpp"
@@ -20,6 +21,7 @@
 #include "solver/io/display_2d.hpp"
 #include "solver/io/display_3d.hpp"
 #include "solver/io/exact_state.hpp"
+#include "solver/io/mesh_gauss_values.hpp"
 #include "solver/io/postpro_2d.hpp"
 #include "solver/io/postpro_3d.hpp"
 #include "solver/io/state_files_2d.hpp"
@@ -28,6 +30,8 @@
 #include "validate/render.hpp"
 
 namespace lmgc::chipy {
+
+namespace fem = solver::fem;
 
 namespace {
 
@@ -200,6 +204,11 @@ struct Session::Run {
   virtual double mass(std::size_t body) const = 0;
   virtual bool visible(std::size_t body) const = 0;
   virtual grammar::VlocRlocFile vloc_rloc() const = 0;
+  virtual bool has_meshes() const = 0;
+  virtual std::string gpv_text() const = 0;
+  virtual void set_rayleigh(double alpha, double beta) = 0;
+  fem::Hypothesis hypothesis = fem::Hypothesis::plane_strain;
+  long gpv_written = 0;
 };
 
 namespace {
@@ -212,8 +221,9 @@ struct Traits2D {
   using Display = solver::DisplayWriter2D;
   static constexpr int kDimension = 2;
   static constexpr int kDofs = 3;
-  static bool prepare(const case_folder::CaseFiles& f, Scene& s, Outputs& o, grammar::DiagnosticSink& sink) {
-    return solver::prepare_run_2d(f, s, o, sink);
+  static bool prepare(const case_folder::CaseFiles& f, Scene& s, Outputs& o, grammar::DiagnosticSink& sink,
+                      fem::Hypothesis h) {
+    return solver::prepare_run_2d(f, s, o, sink, h);
   }
   static std::vector<case_folder::OutputFile> echo(const case_folder::CaseFiles& f) {
     return solver::echo_files_2d(f);
@@ -239,7 +249,8 @@ struct Traits3D {
   using Display = solver::DisplayWriter3D;
   static constexpr int kDimension = 3;
   static constexpr int kDofs = 6;
-  static bool prepare(const case_folder::CaseFiles& f, Scene& s, Outputs& o, grammar::DiagnosticSink& sink) {
+  static bool prepare(const case_folder::CaseFiles& f, Scene& s, Outputs& o, grammar::DiagnosticSink& sink,
+                      fem::Hypothesis) {
     return solver::prepare_run_3d(f, s, o, sink);
   }
   static std::vector<case_folder::OutputFile> echo(const case_folder::CaseFiles& f) {
@@ -273,7 +284,7 @@ struct DimensionRun final : Session::Run {
   int dimension() const override { return T::kDimension; }
   bool prepare(grammar::DiagnosticSink& sink) override {
     outputs.case_dir = files.case_dir;
-    return T::prepare(files, scene, outputs, sink);
+    return T::prepare(files, scene, outputs, sink, hypothesis);
   }
   std::vector<case_folder::OutputFile> echo_files() const override { return T::echo(files); }
   bool start(const run::RunOptions& options, bool warm_start) override {
@@ -307,6 +318,25 @@ struct DimensionRun final : Session::Run {
   std::string vloc_rloc_text() const override { return grammar::write_vloc_rloc(T::vloc_rloc(scene, state)); }
   std::string exact_state_text() const override { return solver::write_exact_state(scene, state); }
   grammar::VlocRlocFile vloc_rloc() const override { return T::vloc_rloc(scene, state); }
+  bool has_meshes() const override {
+    if constexpr (T::kDimension == 2)
+      return !scene.deformable.empty();
+    else
+      return false;
+  }
+  std::string gpv_text() const override {
+    if constexpr (T::kDimension == 2)
+      return grammar::write_gpv(solver::gauss_point_values_file(scene.deformable, state.step, state.time));
+    else
+      return {};
+  }
+  void set_rayleigh(double alpha, double beta) override {
+    if constexpr (T::kDimension == 2) {
+      scene.deformable.rayleigh_alpha = alpha;
+      scene.deformable.rayleigh_beta = beta;
+      for (auto& body : scene.deformable.states) body.prepared_h = 0.0;  // refactorise K̂
+    }
+  }
   bool open_postpro(std::string& error) override {
     if (outputs.postpro.empty()) return true;
     return postpro.open(files.case_dir / "POSTPRO", outputs.postpro, error);
@@ -462,11 +492,13 @@ void Session::set_dimension(int dimension, int mode) {
   if (dimension != 2 && dimension != 3)
     fail(ErrorKind::value, "SetDimension: the dimension is 2 or 3, not " + std::to_string(dimension));
   if (run_) fail(ErrorKind::order, "SetDimension after the case was read (call it before ReadDatbox)");
-  // mod: LMGC90's 2D hypotheses (1 plane strain, 2 plane stress, 3 axisymmetric ...) matter to
-  // deformable bodies only.
-  if (dimension == 2 && (mode < 1 || mode > 5))
-    fail(ErrorKind::value, "SetDimension: mod is 1 to 5 in 2D, not " + std::to_string(mode));
+  // mod: 1 plane strain, 2 plane stress, 3 axisymmetric (LMGC90 stops on anything else).
+  if (dimension == 2 && (mode < 1 || mode > 3))
+    fail(ErrorKind::value,
+         "SetDimension: mod is 1 (plane strain), 2 (plane stress) or 3 (axisymmetric), not " +
+             std::to_string(mode));
   dimension_ = dimension;
+  mode_ = mode;
 }
 
 void Session::set_time_step(double dt) {
@@ -578,6 +610,10 @@ void Session::read(Reading what) {
       else
         run = std::make_unique<DimensionRun<Traits2D>>();
       run->files = std::move(*files);
+      run->hypothesis = three_d      ? fem::Hypothesis::three_d
+                        : mode_ == 2 ? fem::Hypothesis::plane_stress
+                        : mode_ == 3 ? fem::Hypothesis::axisymmetric
+                                     : fem::Hypothesis::plane_strain;
       run->prepare(sink);
     }
     std::string report;
@@ -617,6 +653,7 @@ void Session::write_echo(std::string_view call) {
   const auto wanted = [&](const fs::path& path) {
     const std::string p = path.generic_string();
     if (call == "WriteBodies") return p == "OUTBOX/BODIES.OUT";
+    if (call == "WriteModels") return p == "OUTBOX/MODELS.OUT";
     if (call == "WriteBehaviours") return p == "OUTBOX/BULK_BEHAV.OUT" || p == "OUTBOX/TACT_BEHAV.OUT";
     if (call == "WriteDrivenDof")  // DRV_DOF.OUT and the evolution files LMGC90 rewrites
       return p.rfind("OUTBOX/", 0) == 0 && p != "OUTBOX/BODIES.OUT" && p != "OUTBOX/BULK_BEHAV.OUT" &&
@@ -633,6 +670,7 @@ void Session::write_echo(std::string_view call) {
 
 void Session::compute_mass() {
   require_case("ComputeMass");  // masses are computed when the case is read
+  mass_computed_ = true;
 }
 
 // The step ---------------------------------------------------------------------------------------
@@ -672,6 +710,17 @@ void Session::stage(std::string_view name) {
   const std::optional<Stage> s = stage_of(name);
   if (!s) fail(ErrorKind::value, "'" + std::string(name) + "' is not a stage of the step");
   Run& r = running(name);
+  // ComputeBulk computes the element stiffnesses and internal forces: lmgc's linear bodies keep
+  // their stiffness and compute the forces in ComputeFreeVelocity, so the call may come before the
+  // time loop (as LMGC90's linear scripts make it) and more than once in a step; it tells only that
+  // the stiffness exists (Rayleigh damping's βK needs it).
+  if (*s == Stage::compute_bulk) {
+    bulk_computed_ = true;
+    if (!r.in_step) return;
+    if (!(r.done & bit(Stage::increment_step))) fail(ErrorKind::order, "ComputeBulk before IncrementStep");
+    r.done |= bit(Stage::compute_bulk);
+    return;
+  }
   const StageRule& rule = kStageRules[static_cast<std::size_t>(*s)];
   if (*s == Stage::increment_step) {
     if (r.in_step)
@@ -682,6 +731,7 @@ void Session::stage(std::string_view name) {
       end_run_files();
       write_last_dof();
       write_last_vloc_rloc();
+      write_last_gpv();
       fail(ErrorKind::step_limit, "--max-steps " + std::to_string(session_options_.max_steps) + " reached");
     }
     if (!r.started) start_run();
@@ -814,13 +864,47 @@ void Session::write_last_dof() {
   if (!r.started) return;
   fs::create_directories(case_dir_ / "OUTBOX");
   write_whole(case_dir_ / "OUTBOX" / "DOF.LAST", r.dof_text(), "WriteLastDof");
-  write_whole(case_dir_ / "OUTBOX" / "EXACT_STATE.LAST", r.exact_state_text(), "WriteLastDof");
+  // EXACT_STATE.LAST holds rigid bodies and interactions only: not written beside deformable bodies.
+  if (!r.has_meshes())
+    write_whole(case_dir_ / "OUTBOX" / "EXACT_STATE.LAST", r.exact_state_text(), "WriteLastDof");
 }
 
 void Session::write_last_vloc_rloc() {
   Run& r = running("WriteLastVlocRloc");
   if (!r.started) return;
   write_whole(case_dir_ / "OUTBOX" / "Vloc_Rloc.LAST", r.vloc_rloc_text(), "WriteLastVlocRloc");
+}
+
+void Session::write_out_gpv(long every) {
+  if (every < 1) fail(ErrorKind::value, "WriteOutGPV: nsteps is at least 1");
+  Run& r = running("WriteOutGPV");
+  if (!r.started || !r.has_meshes() || r.step() % every != 0) return;
+  write_whole(case_dir_ / "OUTBOX" / ("GPV.OUT." + std::to_string(++r.gpv_written)), r.gpv_text(),
+              "WriteOutGPV");
+}
+
+void Session::write_last_gpv() {
+  Run& r = running("WriteLastGPV");
+  if (!r.started || !r.has_meshes()) return;
+  write_whole(case_dir_ / "OUTBOX" / "GPV.LAST", r.gpv_text(), "WriteLastGPV");
+}
+
+bool Session::has_deformable_bodies() const {
+  return run_ && run_->has_meshes();
+}
+
+void Session::set_rayleigh_damping(double alpha, double beta) {
+  if (!std::isfinite(alpha) || !std::isfinite(beta) || alpha < 0.0 || beta < 0.0)
+    fail(ErrorKind::value, "mecaMAILx_ComputeRayleighDamping: alpha and beta are finite and non-negative");
+  require_case("mecaMAILx_ComputeRayleighDamping");
+  // LMGC90 builds C from the element masses and stiffnesses computed so far (mailx-2d.md §4.2):
+  // before ComputeMass the mass part is 0, before the first ComputeBulk the stiffness part.
+  const double a = mass_computed_ ? alpha : 0.0, b = bulk_computed_ ? beta : 0.0;
+  if ((a != alpha || b != beta) && (alpha != 0.0 || beta != 0.0))
+    warn("mecaMAILx_ComputeRayleighDamping before " +
+         std::string(!mass_computed_ ? "ComputeMass" : "the first ComputeBulk") +
+         ": as in LMGC90, the damping built is " + std::to_string(a) + " M + " + std::to_string(b) + " K");
+  run_->set_rayleigh(a, b);
 }
 
 void Session::open_display() {
@@ -897,6 +981,7 @@ void Session::finalize() {
   if (session_options_.max_steps >= 0 && run_ && run_->started && run_->stopped.empty()) {
     write_last_dof();
     write_last_vloc_rloc();
+    write_last_gpv();
   }
   end_run_files();
   finalized_ = true;

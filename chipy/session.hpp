@@ -77,6 +77,8 @@ class Session {
   void set_cundall_iterations(int iterations);
   void ptpt3_load_network();
   void ptpt3_use_current_nonuc0(int use);
+  // mecaMAILx_ComputeRayleighDamping(alpha, beta): C = αM + βK on every deformable body.
+  void set_rayleigh_damping(double alpha, double beta);
 
   // DATBOX. The first reading reads and checks the whole case (errors raise with the diagnostics).
   void read(Reading what);
@@ -97,6 +99,9 @@ class Session {
   void write_out_vloc_rloc(long every);
   void write_last_dof();
   void write_last_vloc_rloc();
+  void write_out_gpv(long every);  // WriteOutGPV: the deformable bodies' Gauss-point values
+  void write_last_gpv();
+  bool has_deformable_bodies() const;
   void open_display();
   void write_display(long every);
   void close_display();
@@ -147,8 +152,11 @@ class Session {
   SessionOptions session_options_;
   run::RunOptions options_;
   int dimension_ = 0;
+  int mode_ = 1;  // SetDimension's mod: 1 plane strain, 2 plane stress, 3 axisymmetric
   bool quick_scramble_2d_ = false, quick_scramble_3d_ = false;
   bool finalized_ = false;
+  bool mass_computed_ = false,
+       bulk_computed_ = false;  // ComputeMass, a ComputeBulk: what C can be built from
   bool read_[static_cast<int>(Reading::count)] = {};
   long steps_done_ = 0;
   mutable bool warned_recup_by_position_ = false;

@@ -335,6 +335,14 @@ int main(int argc, char** argv) {
   }
 
   if (script_runs) return run_script(case_dir, app.count("--steps") ? options.steps : -1, options.quiet);
+  // Deformable bodies take their 2D hypothesis (plane strain, plane stress, axisymmetric) from the
+  // script's SetDimension(2, mhyp): lmgc-solve's own loop does not know it.
+  if (!scene.deformable.empty()) {
+    std::cerr << "lmgc-solve: refused: this case has MAILx bodies, which run through the case's command.py "
+                 "(its SetDimension gives their 2D hypothesis): run lmgc-solve without --read-script and "
+                 "run-parameter flags, or lmgc-run\n";
+    return kExitRefused;
+  }
 
   // Outputs: stale temporaries of a killed run first, then the echo files LMGC90 writes when it reads
   // the case, and the run's parameters.

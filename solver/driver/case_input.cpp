@@ -69,23 +69,33 @@ void fill_scene_input(const case_folder::CaseFiles& files, SceneInput& input) {
 }  // namespace
 
 bool prepare_run_2d(const case_folder::CaseFiles& files, Scene2D& scene, RunOutputs2D& outputs,
-                    grammar::DiagnosticSink& sink) {
+                    grammar::DiagnosticSink& sink, fem::Hypothesis hypothesis) {
   if (!files.bodies || !files.bulk_behav) return false;
   for (const grammar::Body& body : files.bodies->bodies)
-    if (body.type != grammar::BodyType::rbdy2) {
+    if (body.type == grammar::BodyType::rbdy3) {
       sink.report(
           "L4003", grammar::Location{datbox_path(files, "BODIES.DAT"), body.type_span},
-          body.type == grammar::BodyType::mailx
-              ? "lmgc-solve does not run MAILx (deformable) bodies yet"
-              : "lmgc-solve runs cases of RBDY2 bodies only or of RBDY3 bodies only for now; this body "
-                "is not RBDY2");
+          "lmgc-solve runs cases of RBDY2 (and MAILx) bodies only or of RBDY3 bodies only for now; this "
+          "body is RBDY3");
       return false;
     }
+  // Contact on deformable bodies (CLxxx, ALpxx, ...) is not run yet: a visibility row that names a
+  // MAILx body refuses the case.
+  if (files.tact_behav)
+    for (const grammar::SeeEntry& see : files.tact_behav->sees)
+      if (see.candidate_body.value == "MAILx" || see.antagonist_body.value == "MAILx") {
+        sink.report(
+            "L4003", grammar::Location{datbox_path(files, "TACT_BEHAV.DAT"), see.candidate_body.span},
+            "contact with deformable (MAILx) bodies is not run by lmgc yet: this visibility row pairs " +
+                see.candidate_contactor.value + " and " + see.antagonist_contactor.value);
+        return false;
+      }
   SceneInput2D input;
   fill_scene_input(files, input);
   if (files.bulk_behav->has_gravity)
     input.gravity = Eigen::Vector2d(files.bulk_behav->gravity[0].value, files.bulk_behav->gravity[1].value);
   if (!build_scene_2d(input, scene, sink)) return false;
+  if (!build_deformable_bodies(files, hypothesis, scene.deformable, sink)) return false;
 
   outputs.case_dir = files.case_dir;
   if (files.dof_ini) {

@@ -16,8 +16,10 @@ namespace lmgc::solver {
 // Fills `scene` and `outputs` (case folder, POSTPRO commands, Vloc_Rloc writer, warm start).
 // Returns false, with diagnostics, when the case is not a rigid 2D case or uses something the
 // rigid 2D solver does not provide (L4001, L4002).
+// MAILx bodies run as linear elastic meshes in `hypothesis` (SetDimension(2, mhyp)), without contact.
 bool prepare_run_2d(const case_folder::CaseFiles& files, Scene2D& scene, RunOutputs2D& outputs,
-                    grammar::DiagnosticSink& sink);
+                    grammar::DiagnosticSink& sink,
+                    fem::Hypothesis hypothesis = fem::Hypothesis::plane_strain);
 
 // True when every body of the case is RBDY3: lmgc-solve runs it with the rigid 3D pipeline.
 bool is_rigid_3d_case(const case_folder::CaseFiles& files);

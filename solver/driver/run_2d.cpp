@@ -4,9 +4,11 @@
 
 #include "grammar/common/output_file.hpp"
 #include "grammar/dof/writer.hpp"
+#include "grammar/gpv/writer.hpp"
 #include "grammar/vloc_rloc/writer.hpp"
 #include "solver/io/display_2d.hpp"
 #include "solver/io/exact_state.hpp"
+#include "solver/io/mesh_gauss_values.hpp"
 #include "solver/io/state_files_2d.hpp"
 
 namespace lmgc::solver {
@@ -17,6 +19,10 @@ std::string non_finite_2d(const Scene2D& scene, const RunState2D&) {
     if (!b.displacement[i].allFinite()) return "body " + std::to_string(i + 1) + ": displacement X";
     if (!b.velocity[i].allFinite()) return "body " + std::to_string(i + 1) + ": velocity V";
   }
+  const DeformableBodies& d = scene.deformable;
+  for (std::size_t m = 0; m < d.states.size(); ++m)
+    if (!d.states[m].x.allFinite() || !d.states[m].v.allFinite())
+      return "MAILx " + std::to_string(m + 1) + ": nodal displacement or velocity";
   return {};
 }
 
@@ -71,13 +77,19 @@ RunSummary run_2d(Scene2D& scene, const run::RunOptions& options, const RunOutpu
   DisplayWriter2D display(outputs.case_dir / "DISPLAY");
   const RunDimension<Scene2D, RunState2D> dimension{
       [](Scene2D& s, RunState2D& st, const NlgsOptions& o) { return step_2d(s, st, o); },
-      [](const Scene2D& s) { return kinetic_energy(s.bodies); },
+      [](const Scene2D& s) { return kinetic_energy(s.bodies) + kinetic_energy(s.deformable); },
       non_finite_2d,
       [](const Scene2D& s, const RunState2D& st) { return grammar::write_dof(dof_file_2d(s, st)); },
       [](const Scene2D& s, const RunState2D& st) {
         return grammar::write_vloc_rloc(vloc_rloc_file_2d(s, st));
       },
       [](const Scene2D& s, const RunState2D& st) { return write_exact_state(s, st); },
+      [](const Scene2D& s, const RunState2D& st) {
+        return s.deformable.empty()
+                   ? std::string()
+                   : grammar::write_gpv(gauss_point_values_file(s.deformable, st.step, st.time));
+      },
+      [](const Scene2D& s) { return s.deformable.empty(); },
   };
   return run_loop(scene, state, options, outputs.case_dir, postpro, !outputs.postpro.empty(), display,
                   dimension);

@@ -31,6 +31,10 @@ struct RunDimension {
   std::string (*dof_text)(const Scene&, const State&);
   std::string (*vloc_rloc_text)(const Scene&, const State&);
   std::string (*exact_state)(const Scene&, const State&);  // EXACT_STATE.LAST (solver/io/exact_state.hpp)
+  // GPV.OUT.n / GPV.LAST (deformable bodies' Gauss-point values); empty when the scene has none.
+  std::string (*gpv_text)(const Scene&, const State&) = nullptr;
+  // Whether EXACT_STATE.LAST holds the whole state (not when deformable bodies are in the scene).
+  bool (*exact_state_complete)(const Scene&) = nullptr;
 };
 
 template <class Scene, class State, class Postpro, class Display>
@@ -52,7 +56,9 @@ RunSummary run_loop(Scene& scene, State& state, const run::RunOptions& options,
         grammar::write_file_whole(outbox / ("DOF." + suffix), dimension.dof_text(scene, state), error) &&
         grammar::write_file_whole(outbox / ("Vloc_Rloc." + suffix), dimension.vloc_rloc_text(scene, state),
                                   error) &&
-        (suffix != "LAST" ||
+        (!dimension.gpv_text || dimension.gpv_text(scene, state).empty() ||
+         grammar::write_file_whole(outbox / ("GPV." + suffix), dimension.gpv_text(scene, state), error)) &&
+        (suffix != "LAST" || (dimension.exact_state_complete && !dimension.exact_state_complete(scene)) ||
          grammar::write_file_whole(outbox / "EXACT_STATE.LAST", dimension.exact_state(scene, state), error));
     if (!ok) summary.fail(RunFailure::output, error);
     return ok;

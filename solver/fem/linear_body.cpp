@@ -96,15 +96,16 @@ bool LinearThetaScheme::prepare(const LinearBodyMatrices& matrices, double h, do
   const auto f = static_cast<Eigen::Index>(free_dofs_.size());
   iteration_free_.resize(f, f);
   iteration_free_.setFromTriplets(t.begin(), t.end());
-  factor_.compute(iteration_free_);
-  return factor_.info() == Eigen::Success && (factor_.vectorD().array() > 0.0).all();
+  auto factor = std::make_shared<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>(iteration_free_);
+  factor_ = factor;
+  return factor->info() == Eigen::Success && (factor->vectorD().array() > 0.0).all();
 }
 
 Eigen::VectorXd LinearThetaScheme::solve_free(const Eigen::VectorXd& rhs) const {
   Eigen::VectorXd reduced(static_cast<Eigen::Index>(free_dofs_.size()));
   for (std::size_t k = 0; k < free_dofs_.size(); ++k)
     reduced(static_cast<Eigen::Index>(k)) = rhs(free_dofs_[k]);
-  const Eigen::VectorXd solved = factor_.solve(reduced);
+  const Eigen::VectorXd solved = factor_->solve(reduced);
   Eigen::VectorXd out = Eigen::VectorXd::Zero(rhs.size());
   for (std::size_t k = 0; k < free_dofs_.size(); ++k)
     out(free_dofs_[k]) = solved(static_cast<Eigen::Index>(k));

@@ -10,6 +10,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -80,7 +81,8 @@ class LinearThetaScheme {
   std::vector<std::int32_t> free_of_;  // dof → index among the free dofs, or −1 when driven
   std::vector<std::int32_t> free_dofs_;
   Eigen::SparseMatrix<double> iteration_free_;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
+  // Shared by copies (a scene may be copied); prepare() makes a new one.
+  std::shared_ptr<const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>> factor_;
 };
 
 }  // namespace lmgc::solver::fem

@@ -34,6 +34,7 @@ void increment_step(Scene2D& scene, StepContext& step) {
   RigidBodies2D& b = scene.bodies;
   std::fill(b.impulse.begin(), b.impulse.end(), Vector3d::Zero());
   b.velocity = b.velocity_begin;
+  if (!scene.deformable.empty()) increment_deformable(scene.deformable);
 }
 
 void compute_external_forces(Scene2D& scene, const StepContext& step) {
@@ -45,6 +46,8 @@ void compute_external_forces(Scene2D& scene, const StepContext& step) {
     if (d.is_force)
       b.external_force[static_cast<std::size_t>(d.body)](d.dof) +=
           (1.0 - step.theta) * d.value(step.begin_time()) + step.theta * d.value(step.time);
+  if (!scene.deformable.empty())
+    external_forces_deformable(scene.deformable, Vector3d(scene.gravity.x(), scene.gravity.y(), 0.0), step);
 }
 
 void compute_free_velocity(Scene2D& scene, const StepContext& step) {
@@ -57,6 +60,7 @@ void compute_free_velocity(Scene2D& scene, const StepContext& step) {
   for (const DrivenDof2D& d : scene.driven)
     if (!d.is_force && b.visible[static_cast<std::size_t>(d.body)])
       b.velocity_free[static_cast<std::size_t>(d.body)](d.dof) = d.value(step.time);
+  if (!scene.deformable.empty()) free_velocity_deformable(scene.deformable, step);
 }
 
 void select_prox_tactors(Scene2D& scene, RunState2D& state) {
@@ -199,6 +203,7 @@ void compute_dof(Scene2D& scene, const StepContext& step) {
       b.displacement[i] = b.displacement_begin[i] +
                           step.h * ((1.0 - step.theta) * b.velocity_begin[i] + step.theta * b.velocity[i]);
   apply_bounds(scene);
+  if (!scene.deformable.empty()) dof_deformable(scene.deformable, step);
 }
 
 void apply_bounds(Scene2D& scene) {
@@ -238,6 +243,7 @@ void update_step(Scene2D& scene) {
   RigidBodies2D& b = scene.bodies;
   b.displacement_begin = b.displacement;
   b.velocity_begin = b.velocity;
+  if (!scene.deformable.empty()) update_deformable(scene.deformable);
 }
 
 namespace {

@@ -87,4 +87,14 @@ grammar::GpvBody gauss_point_values(const fem::MeshBody& body, bool matlib,
   return out;
 }
 
+grammar::GpvFile gauss_point_values_file(const DeformableBodies& bodies, long step, double time) {
+  grammar::GpvFile file;
+  file.step = grammar::Integer{step};
+  file.time = grammar::Real{time};
+  for (std::size_t b = 0; b < bodies.states.size(); ++b)
+    file.bodies.push_back(gauss_point_values(bodies.meshes.bodies[b], bodies.meshes.matlib[b],
+                                             bodies.states[b].x, static_cast<int>(b + 1)));
+  return file;
+}
+
 }  // namespace lmgc::solver

@@ -10,11 +10,15 @@
 
 #include "grammar/gpv/ast.hpp"
 #include "solver/fem/linear_body.hpp"
+#include "solver/model/deformable_bodies.hpp"
 
 namespace lmgc::solver {
 
 // body_number: the MAILx rank (1-based) written on the block.
 grammar::GpvBody gauss_point_values(const fem::MeshBody& body, bool matlib,
                                     const Eigen::VectorXd& displacement, int body_number);
+
+// GPV.OUT.n / GPV.LAST of a scene's deformable bodies at its current displacements.
+grammar::GpvFile gauss_point_values_file(const DeformableBodies& bodies, long step, double time);
 
 }  // namespace lmgc::solver

@@ -31,8 +31,35 @@ grammar::DofFile dof_file_2d(const Scene2D& scene, const RunState2D& state) {
     section.bodies.push_back(std::move(body));
   }
   file.sections.push_back(std::move(section));
-  // The MAILx module writes its dashed line even when it has no body (state-and-outputs.md §1.3).
-  file.sections.push_back(grammar::DofSection{{}, true});
+  // The MAILx module's section (its dashed line even without a body, state-and-outputs.md §1.3):
+  // per body, per node, X and V (mecaMAILx write_xxx_dof).
+  grammar::DofSection mailx{{}, true};
+  const DeformableBodies& d = scene.deformable;
+  for (std::size_t m = 0; m < d.states.size(); ++m) {
+    const int dimension = d.meshes.bodies[m].dimension;
+    grammar::DofBody body;
+    body.body_type = grammar::Word{"MAILx"};
+    body.number = grammar::Integer{static_cast<std::int64_t>(m + 1)};
+    body.model = grammar::Word{"MECAx"};
+    const std::string node_type = dimension == 2 ? "NO2xx" : "NO3xx";
+    for (std::size_t k = 0; k < d.meshes.bodies[m].nodes(); ++k) {
+      grammar::DofNode node;
+      node.node_type = grammar::Word{node_type};
+      node.number = grammar::Integer{static_cast<std::int64_t>(k + 1)};
+      for (int c = 0; c < dimension; ++c) {
+        const auto i =
+            static_cast<Eigen::Index>(k * static_cast<std::size_t>(dimension) + static_cast<std::size_t>(c));
+        node.x.push_back(grammar::Real{d.states[m].x(i)});
+        node.v.push_back(grammar::Real{d.states[m].v(i)});
+      }
+      body.nodes.push_back(std::move(node));
+    }
+    mailx.bodies.push_back(std::move(body));
+  }
+  file.sections.push_back(std::move(mailx));
+  // With MAILx bodies a second dashed line follows (LMGC90's DOF files of 4cubes and of a MAILx-only
+  // case end so; a rigid-only file has one).
+  if (!d.empty()) file.sections.push_back(grammar::DofSection{{}, true});
   return file;
 }
 

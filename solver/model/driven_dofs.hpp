@@ -12,7 +12,7 @@
 #include "grammar/common/diagnostic.hpp"
 #include "grammar/dof/ast.hpp"
 #include "grammar/drv_dof/ast.hpp"
-#include "solver/model/scene_2d.hpp"
+#include "solver/model/driven_dof.hpp"
 
 namespace lmgc::solver {
 

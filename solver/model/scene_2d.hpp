@@ -9,6 +9,8 @@
 
 #include "solver/bodies/rigid_bodies_2d.hpp"
 #include "solver/laws/contact_law.hpp"
+#include "solver/model/deformable_bodies.hpp"
+#include "solver/model/driven_dof.hpp"
 #include "solver/model/interaction_2d.hpp"
 
 namespace lmgc::solver {
@@ -44,17 +46,6 @@ struct NamedLaw {
   ContactLaw law;
 };
 
-// v(t) = (CT + AMP cos(OMEGA t + PHI)) min(1, RAMPI + RAMP t), or an evolution table
-// (linear interpolation and extrapolation). docs/lmgc90-facts/datbox-inputs.md §5.
-struct DrivenDof2D {
-  std::int32_t body = 0;
-  std::int32_t dof = 0;   // 0, 1, 2
-  bool is_force = false;  // 'force' instead of 'vlocy'
-  std::array<double, 6> coefficients{};
-  std::vector<std::array<double, 2>> evolution;  // (t, v) pairs when given by a file
-  double value(double t) const;
-};
-
 // What this scene needs: only these families are detected and only these laws dispatched.
 struct ScenePlan2D {
   std::array<bool, 7> families{};  // indexed by PairFamily2D
@@ -69,6 +60,7 @@ struct Scene2D {
   std::vector<NamedLaw> laws;
   std::vector<Visibility2D> visibility;
   std::vector<DrivenDof2D> driven;
+  DeformableBodies deformable;  // MAILx bodies: meshes, matrices, nodal state
   Eigen::Vector2d gravity = Eigen::Vector2d(0.0, -9.81);
   std::vector<double> density;  // per bulk behaviour [kg/m²]
   std::vector<std::string> behaviour_names;

@@ -278,24 +278,22 @@ def ReadIniVlocRloc(record=0):
     _s().read(_R.ini_vloc_rloc)
 
 
-def _deformable(call):
-    if os.path.exists(os.path.join("DATBOX", "MODELS.DAT")):
-        raise NotImplementedError(call + ": lmgc does not run deformable (MAILx) bodies yet")
-
-
 @_export
 def ReadModels():
-    _deformable("ReadModels")
+    """MODELS.DAT is read with the case (the first reading); deformable bodies run as linear elastic
+    meshes (small strain, ELAS) without contact."""
 
 
 @_export
 def LoadModels():
-    _deformable("LoadModels")
+    """Done with the case's reading."""
 
 
 @_export
 def ReadIniGPV(record=0):
-    _deformable("ReadIniGPV")
+    """GPV.INI holds no state lmgc needs for linear elasticity (stresses follow from the displacements)."""
+    if record:
+        raise NotImplementedError("ReadIniGPV(record=%d): lmgc reads DATBOX/GPV.INI only" % record)
 
 
 @_export
@@ -315,6 +313,11 @@ def WriteBodies(version=None):
 @_export
 def WriteBehaviours():
     _s().write_echo("WriteBehaviours")
+
+
+@_export
+def models_WriteModels():
+    _s().write_echo("WriteModels")
 
 
 @_export
@@ -341,6 +344,8 @@ def ReadDatbox(deformable=True):
     WriteBodies()
     WriteDrivenDof()
     WriteBehaviours()
+    if deformable:
+        models_WriteModels()
 
 
 @_export
@@ -394,8 +399,20 @@ def WriteOutVlocRloc(nsteps=1):
 
 
 @_export
+def WriteOutGPV(nsteps=1):
+    _s().write_out_gpv(int(nsteps))
+
+
+@_export
+def WriteLastGPV():
+    _s().write_last_gpv()
+
+
+@_export
 def WriteOut(nsteps=1):
     WriteOutDof(nsteps)
+    if _s().has_deformable_bodies():
+        WriteOutGPV(nsteps)
     WriteOutVlocRloc(nsteps)
 
 
@@ -414,7 +431,50 @@ def WriteLast(filename=None):
     if filename is not None:
         raise NotImplementedError("WriteLast(filename): lmgc writes no HDF5 state")
     WriteLastDof()
+    if _s().has_deformable_bodies():
+        WriteLastGPV()
     WriteLastVlocRloc()
+
+
+# --- deformable bodies (linear elastic meshes, without contact) ----------------------------------
+
+
+@_export
+def mecaMAILx_ComputeRayleighDamping(alpha, beta):
+    """C = alpha M + beta K on every deformable body."""
+    _s().set_rayleigh_damping(float(alpha), float(beta))
+
+
+@_export
+def mecaMAILx_SetPreconAllBodies():
+    """Precondensation on contact nodes speeds up contact with meshes; lmgc does not run contact on
+    meshes yet (a case with it is refused when read), so there is nothing to condense."""
+
+
+@_export
+def mecaMAILx_ComputePreconW():
+    """See mecaMAILx_SetPreconAllBodies."""
+
+
+@_export
+def CLxxx_PushPreconNodes():
+    """See mecaMAILx_SetPreconAllBodies."""
+
+
+@_export
+def ALpxx_PushPreconNodes():
+    """See mecaMAILx_SetPreconAllBodies."""
+
+
+@_export
+def AssembleMechanicalLHS():
+    """lmgc assembles and factorises the iteration matrix M + θhC + (θh)²K itself, at the first
+    ComputeFreeVelocity and again when h or θ changes."""
+
+
+@_export
+def AssembleMechanicalRHS():
+    """lmgc assembles the right-hand side inside ComputeFreeVelocity."""
 
 
 @_export

@@ -1,0 +1,136 @@
+#include "solver/model/deformable_bodies.hpp"
+
+namespace lmgc::solver {
+
+bool build_deformable_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypothesis,
+                             DeformableBodies& out, grammar::DiagnosticSink& sink) {
+  out = {};
+  if (!build_mesh_bodies(files, hypothesis, out.meshes, sink)) return false;
+  const std::size_t count = out.meshes.bodies.size();
+  if (count == 0) return true;
+  out.states.resize(count);
+  for (std::size_t b = 0; b < count; ++b) {
+    const fem::MeshBody& mesh = out.meshes.bodies[b];
+    MeshBodyState& s = out.states[b];
+    std::string error;
+    if (!fem::assemble(mesh, s.matrices, error)) {
+      sink.report("L4003", grammar::Location{(files.case_dir / "DATBOX" / "BODIES.DAT").string(), {}},
+                  "MAILx body " + std::to_string(b + 1) + ": " + error);
+      return false;
+    }
+    const auto n = static_cast<Eigen::Index>(mesh.dofs());
+    s.x = s.x_begin = s.v = s.v_begin = s.v_free = s.f_ext = Eigen::VectorXd::Zero(n);
+  }
+  // Driven dofs of the nodes: a MAILx block's rank is the body's, its node numbers the body's nodes.
+  if (files.drv_dof)
+    for (const grammar::DrvDofBody& body : files.drv_dof->bodies) {
+      if (body.body_type.value != "MAILx" || body.model.value != "MECAx") continue;
+      const std::int64_t rank = body.rank.value;
+      if (rank < 1 || rank > static_cast<std::int64_t>(count)) continue;  // lmgc-check: L2003
+      const auto b = static_cast<std::size_t>(rank - 1);
+      const int dimension = out.meshes.bodies[b].dimension;
+      for (const grammar::DrvDofNode& node : body.nodes)
+        for (const grammar::DrivenDof& dof : node.dofs) {
+          const std::int64_t k = node.number.value, c = dof.dof.value;
+          if (k < 1 || static_cast<std::size_t>(k) > out.meshes.bodies[b].nodes() || c < 1 || c > dimension)
+            continue;
+          DrivenDof2D d;
+          d.body = static_cast<std::int32_t>(b);
+          d.dof = static_cast<std::int32_t>((k - 1) * dimension + (c - 1));
+          d.is_force = dof.kind.value == "force";
+          if (dof.uses_evolution) {
+            auto it = files.evolutions.find(dof.evolution_file.value);
+            if (it != files.evolutions.end())
+              for (const auto& point : it->second.points)
+                d.evolution.push_back({point.time.value, point.value.value});
+          } else {
+            for (std::size_t p = 0; p < 6; ++p) d.coefficients[p] = dof.parameters[p].value;
+          }
+          if (!d.is_force) out.states[b].velocity_driven.push_back(d.dof);
+          out.driven.push_back(d);
+        }
+    }
+  // DOF.INI: X and V of every node.
+  if (files.dof_ini) {
+    std::size_t b = 0;
+    for (const auto& section : files.dof_ini->sections)
+      for (const grammar::DofBody& body : section.bodies) {
+        if (body.body_type.value != "MAILx" || body.model.value != "MECAx") continue;
+        const std::int64_t rank = body.number.value;
+        if (rank < 1 || rank > static_cast<std::int64_t>(count)) continue;
+        b = static_cast<std::size_t>(rank - 1);
+        MeshBodyState& s = out.states[b];
+        const int dimension = out.meshes.bodies[b].dimension;
+        for (std::size_t k = 0; k < body.nodes.size() && k < out.meshes.bodies[b].nodes(); ++k)
+          for (int c = 0; c < dimension; ++c) {
+            const auto i = static_cast<Eigen::Index>(k * static_cast<std::size_t>(dimension) +
+                                                     static_cast<std::size_t>(c));
+            if (static_cast<std::size_t>(c) < body.nodes[k].x.size())
+              s.x_begin(i) = body.nodes[k].x[static_cast<std::size_t>(c)].value;
+            if (static_cast<std::size_t>(c) < body.nodes[k].v.size())
+              s.v_begin(i) = body.nodes[k].v[static_cast<std::size_t>(c)].value;
+          }
+        s.x = s.x_begin;
+        s.v = s.v_begin;
+      }
+  }
+  return true;
+}
+
+void increment_deformable(DeformableBodies& d) {
+  for (MeshBodyState& s : d.states) s.v = s.v_begin;
+}
+
+void external_forces_deformable(DeformableBodies& d, const Eigen::Vector3d& gravity,
+                                const StepContext& step) {
+  for (std::size_t b = 0; b < d.states.size(); ++b) {
+    MeshBodyState& s = d.states[b];
+    const int dimension = d.meshes.bodies[b].dimension;
+    // Gravity as the mass matrix times the nodal gravity field (lumped or consistent alike).
+    Eigen::VectorXd g(s.x.size());
+    for (Eigen::Index i = 0; i < g.size(); ++i) g(i) = gravity(i % dimension);
+    s.f_ext = s.matrices.mass * g;
+  }
+  for (const DrivenDof2D& dd : d.driven)
+    if (dd.is_force)
+      d.states[static_cast<std::size_t>(dd.body)].f_ext(dd.dof) +=
+          (1.0 - step.theta) * dd.value(step.begin_time()) + step.theta * dd.value(step.time);
+}
+
+void free_velocity_deformable(DeformableBodies& d, const StepContext& step) {
+  for (std::size_t b = 0; b < d.states.size(); ++b) {
+    MeshBodyState& s = d.states[b];
+    if (s.prepared_h != step.h || s.prepared_theta != step.theta) {
+      s.scheme.prepare(s.matrices, step.h, step.theta, d.rayleigh_alpha, d.rayleigh_beta, s.velocity_driven);
+      s.prepared_h = step.h;
+      s.prepared_theta = step.theta;
+    }
+    std::vector<fem::DrivenVelocity> driven;
+    for (const DrivenDof2D& dd : d.driven)
+      if (!dd.is_force && static_cast<std::size_t>(dd.body) == b)
+        driven.push_back({dd.dof, dd.value(step.time)});
+    s.scheme.free_velocity(s.x_begin, s.v_begin, s.f_ext, driven, s.v_free);
+  }
+}
+
+void dof_deformable(DeformableBodies& d, const StepContext&) {
+  for (MeshBodyState& s : d.states) {
+    s.v = s.v_free;
+    s.x = s.scheme.displacement(s.x_begin, s.v_begin, s.v);
+  }
+}
+
+void update_deformable(DeformableBodies& d) {
+  for (MeshBodyState& s : d.states) {
+    s.x_begin = s.x;
+    s.v_begin = s.v;
+  }
+}
+
+double kinetic_energy(const DeformableBodies& d) {
+  double e = 0.0;
+  for (const MeshBodyState& s : d.states) e += 0.5 * s.v.dot(s.matrices.mass * s.v);
+  return e;
+}
+
+}  // namespace lmgc::solver

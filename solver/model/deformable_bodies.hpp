@@ -1,0 +1,54 @@
+#pragma once
+// The deformable (MAILx) bodies of a run and their state: the linear elastic meshes
+// (mesh_bodies.hpp), each with its assembled matrices, its θ-scheme (solver/fem/linear_body.hpp),
+// its nodal displacements and velocities at the beginning and the end of the step, its free
+// velocity and external force; the driven dofs of their nodes (DRV_DOF.DAT); Rayleigh damping.
+// The stages of the step (solver/integrator/step_2d.cpp) call the functions below for them, next
+// to the rigid bodies': docs/lmgc90-facts/mailx-2d.md §4.
+#include <Eigen/Core>
+#include <vector>
+
+#include "case_folder/case_files.hpp"
+#include "grammar/common/diagnostic.hpp"
+#include "solver/model/driven_dofs.hpp"
+#include "solver/model/mesh_bodies.hpp"
+#include "solver/model/step_context.hpp"
+
+namespace lmgc::solver {
+
+struct MeshBodyState {
+  Eigen::VectorXd x, x_begin, v, v_begin, v_free, f_ext;
+  fem::LinearBodyMatrices matrices;
+  fem::LinearThetaScheme scheme;
+  double prepared_h = 0.0, prepared_theta = 0.0;  // K̂ is factorised for these (0: not yet)
+  std::vector<std::int32_t> velocity_driven;      // dofs whose velocity DRV_DOF.DAT imposes
+};
+
+struct DeformableBodies {
+  MeshBodies meshes;
+  std::vector<MeshBodyState> states;
+  std::vector<DrivenDof2D> driven;  // body: mesh index; dof: node × D + component
+  // mecaMAILx_ComputeRayleighDamping(alpha, beta): C = αM + βK on every body (mailx-2d.md §4.2).
+  double rayleigh_alpha = 0.0, rayleigh_beta = 0.0;
+  bool empty() const { return states.empty(); }
+};
+
+// Meshes, matrices (an element whose Jacobian is not positive: L2019 at its line), driven dofs,
+// the initial state of DOF.INI. False with diagnostics when the case cannot run.
+bool build_deformable_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypothesis,
+                             DeformableBodies& out, grammar::DiagnosticSink& sink);
+
+// The stages (each over every deformable body).
+void increment_deformable(DeformableBodies& d);  // V ← V_begin
+// F_ext = M g + driven forces θ-averaged over the step.
+void external_forces_deformable(DeformableBodies& d, const Eigen::Vector3d& gravity, const StepContext& step);
+// V_free from the residual at V_begin; K̂ refactorised when h or θ changed; driven velocities at t.
+void free_velocity_deformable(DeformableBodies& d, const StepContext& step);
+// Without contact on the meshes: V = V_free; X = X_begin + h((1 − θ)V_begin + θV).
+void dof_deformable(DeformableBodies& d, const StepContext& step);
+void update_deformable(DeformableBodies& d);  // begin ← end
+
+// ½VᵀMV of every deformable body.
+double kinetic_energy(const DeformableBodies& d);
+
+}  // namespace lmgc::solver

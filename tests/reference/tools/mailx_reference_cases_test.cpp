@@ -1,0 +1,73 @@
+// The MAILx reference cases (reference_cases/mailx_*; README.md in each gives the expected values,
+// their source and tolerance): run by lmgc-run through their own command.py, they write LMGC90's
+// DOF.LAST and GPV.LAST byte for byte (lmgc90_reference/, LMGC90 2025 running the same script), and
+// the patch carries its uniform stress at every Gauss point.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "grammar/gpv/parser.hpp"
+#include "tests/support/run_tool.hpp"
+#include "tests/support/shared_data.hpp"
+
+namespace lmgc::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path run_case(const std::string& name) {
+  if (!fs::exists(tool_path("lmgc-run"))) return {};
+  const fs::path source = fs::path(LMGC_SOURCE_DIR) / "reference_cases" / name;
+  const fs::path dir = scratch_dir("mailx_" + name);
+  for (const char* entry : {"DATBOX", "command.py"})
+    fs::copy(source / entry, dir / entry, fs::copy_options::recursive);
+  const ToolRun run = run_tool_both_streams("lmgc-run", "'" + dir.string() + "' --quiet");
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  return dir;
+}
+
+void expect_lmgc90_files(const std::string& name, const fs::path& dir) {
+  const fs::path reference = fs::path(LMGC_SOURCE_DIR) / "reference_cases" / name / "lmgc90_reference";
+  for (const char* file : {"DOF.LAST", "GPV.LAST"}) {
+    const std::string ours = read_file(dir / "OUTBOX" / file);
+    EXPECT_FALSE(ours.empty()) << file;
+    EXPECT_TRUE(ours == read_file(reference / file)) << name << ": " << file << " differs from LMGC90's";
+  }
+}
+
+TEST(MailxReferenceCases, PatchCarriesItsUniformStressAndWritesLmgc90sFiles) {
+  const fs::path dir = run_case("mailx_patch_q4");
+  if (dir.empty()) GTEST_SKIP() << "this build has no Python module (lmgc-run)";
+  expect_lmgc90_files("mailx_patch_q4", dir);
+  grammar::DiagnosticSink sink(10);
+  const fs::path gpv_path = dir / "OUTBOX" / "GPV.LAST";
+  const grammar::GpvFile gpv =
+      grammar::parse_gpv(grammar::SourceText(gpv_path.string(), read_file(gpv_path)), sink);
+  ASSERT_EQ(gpv.bodies.size(), 1u);
+  ASSERT_EQ(gpv.bodies[0].elements.size(), 9u);
+  const double expected[4] = {1.8e6, 2.2e6, 0.6e6, 1.0e6};
+  int points = 0;
+  double worst = 0.0;
+  for (const auto& element : gpv.bodies[0].elements) {
+    const auto& lines = element.models[0].lines;
+    ASSERT_EQ(lines.size(), 8u);  // 4 points × (stress, strain)
+    for (std::size_t p = 0; p < lines.size(); p += 2, ++points)
+      for (int k = 0; k < 4; ++k) {
+        const double value = lines[p][static_cast<std::size_t>(k)].value;
+        EXPECT_NEAR(value, expected[k], 5e-6 * 2.2e6);
+        worst = std::max(worst, std::abs(value - expected[k]) / 2.2e6);
+      }
+  }
+  EXPECT_EQ(points, 36);
+  std::printf("largest stress deviation from the uniform stress: %.2e of the largest component\n", worst);
+}
+
+TEST(MailxReferenceCases, DampedCantileverWritesLmgc90sFiles) {
+  const fs::path dir = run_case("mailx_cantilever_t3");
+  if (dir.empty()) GTEST_SKIP() << "this build has no Python module (lmgc-run)";
+  expect_lmgc90_files("mailx_cantilever_t3", dir);
+}
+
+}  // namespace
+}  // namespace lmgc::test
