@@ -8,7 +8,7 @@ packages=(
   libboost-dev libeigen3-dev libfmt-dev
   libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libhdf5-dev
-  python3 python3-dev python3-numpy python3-matplotlib pybind11-dev
+  python3 python3-dev python3-numpy python3-matplotlib python3-vtk9 pybind11-dev
   clang-format
 )
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "grammar/common/output_file.hpp"
+#include "solver/io/mesh_gauss_values.hpp"
 
 namespace lmgc::solver {
 namespace {
@@ -156,12 +157,122 @@ std::string contacts_vtu_2d(const Scene2D& scene, const RunState2D& state) {
   return out;
 }
 
+std::string meshes_vtu_2d(const Scene2D& scene) {
+  const DeformableBodies& d = scene.deformable;
+  struct NodeRef {
+    std::size_t body, node;
+  };
+  std::vector<NodeRef> nodes;
+  std::vector<std::size_t> first_node;  // per body, its first point
+  for (std::size_t b = 0; b < d.states.size(); ++b) {
+    first_node.push_back(nodes.size());
+    for (std::size_t k = 0; k < d.meshes.bodies[b].nodes(); ++k) nodes.push_back({b, k});
+  }
+  // Nodal tensors: the mean of the element means around each node (LMGC90 fits them by least
+  // squares, mailx-2d.md §5: the same on a uniform field).
+  std::vector<Eigen::Matrix3d> strain(nodes.size(), Eigen::Matrix3d::Zero()),
+      stress(nodes.size(), Eigen::Matrix3d::Zero());
+  std::vector<int> around(nodes.size(), 0);
+  std::vector<std::pair<std::size_t, std::size_t>> cells;  // (body, element)
+  for (std::size_t b = 0; b < d.states.size(); ++b) {
+    const fem::MeshBody& mesh = d.meshes.bodies[b];
+    for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
+      cells.emplace_back(b, e);
+      Eigen::Vector4d eps, sig;
+      element_mean_strain_stress(mesh, d.states[b].x, e, eps, sig);
+      Eigen::Matrix3d te, ts;
+      te << eps(0), 0.5 * eps(2), 0, 0.5 * eps(2), eps(1), 0, 0, 0, eps(3);
+      ts << sig(0), sig(2), 0, sig(2), sig(1), 0, 0, 0, sig(3);
+      const int count = fem::element_entry(mesh.elements[e].kind).nodes;
+      for (int k = 0; k < count; ++k) {
+        const std::size_t p =
+            first_node[b] + static_cast<std::size_t>(mesh.elements[e].nodes[static_cast<std::size_t>(k)]);
+        strain[p] += te;
+        stress[p] += ts;
+        ++around[p];
+      }
+    }
+  }
+  for (std::size_t p = 0; p < nodes.size(); ++p)
+    if (around[p] > 0) {
+      strain[p] /= around[p];
+      stress[p] /= around[p];
+    }
+  const auto x = [&](std::size_t p, int c) {
+    const auto& [b, k] = nodes[p];
+    return d.states[b].x(static_cast<Eigen::Index>(2 * k + static_cast<std::size_t>(c)));
+  };
+  std::string out;
+  out +=
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
+      "byte_order=\"LittleEndian\">\n";
+  out += fmt::format("  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
+                     nodes.size(), cells.size());
+  out += "      <Points>\n";
+  data_array(out, "Float64", "Points", 3, nodes.size(), [&](std::size_t p, int c) {
+    const auto& [b, k] = nodes[p];
+    return c < 2 ? d.meshes.bodies[b].coordinates[2 * k + static_cast<std::size_t>(c)] + x(p, c) : 0.0;
+  });
+  out += "      </Points>\n      <Cells>\n";
+  std::vector<long long> connectivity, offsets;
+  std::vector<int> types;
+  for (const auto& [b, e] : cells) {
+    const fem::MeshElement& element = d.meshes.bodies[b].elements[e];
+    const int count = fem::element_entry(element.kind).nodes;
+    for (int k = 0; k < count; ++k)
+      connectivity.push_back(static_cast<long long>(first_node[b]) +
+                             element.nodes[static_cast<std::size_t>(k)]);
+    offsets.push_back(static_cast<long long>(connectivity.size()));
+    // VTK_TRIANGLE 5, VTK_QUAD 9, VTK_QUADRATIC_TRIANGLE 22, VTK_QUADRATIC_QUAD 23 (LMGC90's node orders).
+    types.push_back(element.kind == fem::ElementKind::T3   ? 5
+                    : element.kind == fem::ElementKind::Q4 ? 9
+                    : element.kind == fem::ElementKind::T6 ? 22
+                                                           : 23);
+  }
+  data_array(out, "Int64", "connectivity", 1, connectivity.size(),
+             [&](std::size_t i, int) { return connectivity[i]; });
+  data_array(out, "Int64", "offsets", 1, offsets.size(), [&](std::size_t i, int) { return offsets[i]; });
+  data_array(out, "UInt8", "types", 1, types.size(), [&](std::size_t i, int) { return types[i]; });
+  out += "      </Cells>\n      <PointData>\n";
+  data_array(out, "Int32", "Ids", 1, nodes.size(),
+             [&](std::size_t p, int) { return static_cast<int>(nodes[p].body) + 1; });
+  data_array(out, "Int32", "Node Id", 1, nodes.size(),
+             [&](std::size_t p, int) { return static_cast<int>(nodes[p].node) + 1; });
+  data_array(out, "Float64", "Disp", 3, nodes.size(),
+             [&](std::size_t p, int c) { return c < 2 ? x(p, c) : 0.0; });
+  data_array(out, "Float64", "Velocy", 3, nodes.size(), [&](std::size_t p, int c) {
+    const auto& [b, k] = nodes[p];
+    return c < 2 ? d.states[b].v(static_cast<Eigen::Index>(2 * k + static_cast<std::size_t>(c))) : 0.0;
+  });
+  data_array(out, "Float64", "E", 9, nodes.size(),
+             [&](std::size_t p, int c) { return strain[p](c / 3, c % 3); });
+  data_array(out, "Float64", "S", 9, nodes.size(),
+             [&](std::size_t p, int c) { return stress[p](c / 3, c % 3); });
+  data_array(out, "Float64", "Svm", 1, nodes.size(), [&](std::size_t p, int) {
+    const Eigen::Matrix3d dev = stress[p] - stress[p].trace() / 3.0 * Eigen::Matrix3d::Identity();
+    return std::sqrt(1.5 * (dev.array() * dev.array()).sum());
+  });
+  data_array(out, "Float64", "Fext", 3, nodes.size(), [&](std::size_t p, int c) {
+    const auto& [b, k] = nodes[p];
+    return c < 2 ? d.states[b].f_ext(static_cast<Eigen::Index>(2 * k + static_cast<std::size_t>(c))) : 0.0;
+  });
+  out += "      </PointData>\n      <CellData>\n";
+  data_array(out, "Int32", "Element Id", 1, cells.size(),
+             [&](std::size_t i, int) { return static_cast<int>(cells[i].second) + 1; });
+  out += "      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
+  return out;
+}
+
 bool DisplayWriter2D::write(const Scene2D& scene, const RunState2D& state, std::string& error) {
   const std::size_t k = times_.size() + 1;
   if (!grammar::write_file_whole(dir_ / fmt::format("bodies_{}.vtu", k), bodies_vtu_2d(scene), error))
     return false;
   if (!grammar::write_file_whole(dir_ / fmt::format("contacts_{}.vtu", k), contacts_vtu_2d(scene, state),
                                  error))
+    return false;
+  const bool meshes = !scene.deformable.empty();
+  if (meshes &&
+      !grammar::write_file_whole(dir_ / fmt::format("meshes_{}.vtu", k), meshes_vtu_2d(scene), error))
     return false;
   times_.push_back(state.time);
   std::string pvd =
@@ -171,6 +282,9 @@ bool DisplayWriter2D::write(const Scene2D& scene, const RunState2D& state, std::
                        times_[i], i + 1);
     pvd += fmt::format("    <DataSet timestep=\"{:.10g}\" group=\"\" part=\"1\" file=\"contacts_{}.vtu\"/>\n",
                        times_[i], i + 1);
+    if (meshes)
+      pvd += fmt::format("    <DataSet timestep=\"{:.10g}\" group=\"\" part=\"2\" file=\"meshes_{}.vtu\"/>\n",
+                         times_[i], i + 1);
   }
   pvd += "  </Collection>\n</VTKFile>\n";
   return grammar::write_file_whole(dir_ / "lmgc90.pvd", pvd, error);

@@ -25,5 +25,9 @@ class DisplayWriter2D {
 // The two .vtu documents of one step (exposed for tests).
 std::string bodies_vtu_2d(const Scene2D& scene);
 std::string contacts_vtu_2d(const Scene2D& scene, const RunState2D& state);
+// The deformable bodies' meshes (LMGC90's 'mecafe' block): nodes at reference + X, elements as VTK
+// cells; point fields Ids, Node Id, Disp, Velocy, E and S (3 × 3 tensors: the mean over the Gauss
+// points of the elements around the node), Svm (von Mises of S), Fext; cell field Element Id.
+std::string meshes_vtu_2d(const Scene2D& scene);
 
 }  // namespace lmgc::solver

@@ -87,6 +87,22 @@ grammar::GpvBody gauss_point_values(const fem::MeshBody& body, bool matlib,
   return out;
 }
 
+void element_mean_strain_stress(const fem::MeshBody& body, const Eigen::VectorXd& displacement,
+                                std::size_t element, Eigen::Vector4d& strain, Eigen::Vector4d& stress) {
+  fem::MeshBody one = body;
+  one.elements = {body.elements[element]};
+  const grammar::GpvBody values = gauss_point_values(one, false, displacement, 1);
+  strain.setZero();
+  stress.setZero();
+  const auto& lines = values.elements[0].models[0].lines;
+  const std::size_t points = lines.size() / 2;
+  for (std::size_t p = 0; p < points; ++p)
+    for (int k = 0; k < 4 && static_cast<std::size_t>(k) < lines[2 * p].size(); ++k) {
+      stress(k) += lines[2 * p][static_cast<std::size_t>(k)].value / static_cast<double>(points);
+      strain(k) += lines[2 * p + 1][static_cast<std::size_t>(k)].value / static_cast<double>(points);
+    }
+}
+
 grammar::GpvFile gauss_point_values_file(const DeformableBodies& bodies, long step, double time) {
   grammar::GpvFile file;
   file.step = grammar::Integer{step};

@@ -18,6 +18,11 @@ namespace lmgc::solver {
 grammar::GpvBody gauss_point_values(const fem::MeshBody& body, bool matlib,
                                     const Eigen::VectorXd& displacement, int body_number);
 
+// The mean over an element's Gauss points of its 2D strain (xx, yy, γxy, zz) and stress (xx, yy, xy,
+// zz) in LMGC90's own order, for the display's nodal fields.
+void element_mean_strain_stress(const fem::MeshBody& body, const Eigen::VectorXd& displacement,
+                                std::size_t element, Eigen::Vector4d& strain, Eigen::Vector4d& stress);
+
 // GPV.OUT.n / GPV.LAST of a scene's deformable bodies at its current displacements.
 grammar::GpvFile gauss_point_values_file(const DeformableBodies& bodies, long step, double time);
 
