@@ -14,6 +14,7 @@
 #include <numbers>
 
 #include "tests/support/run_tool.hpp"
+#include "tests/support/shared_data.hpp"
 
 namespace lmgc::chipy {
 namespace {
@@ -175,6 +176,52 @@ TEST(ChipySession, AnInvalidCaseRaisesWithItsDiagnostics) {
   Session t(pusher_copy("chipy_dimension"), SessionOptions{-1, true});
   t.set_dimension(3, 1);
   EXPECT_EQ(kind_of([&] { t.read(Reading::bodies); }), ErrorKind::data);
+}
+
+// A deformable case through the session alone (no Python; the sanitizer build runs it): the patch
+// of reference_cases/mailx_patch_q4 writes LMGC90's DOF.LAST and GPV.LAST byte for byte; Rayleigh
+// damping asked before ComputeMass is built without its mass part, as LMGC90 builds it.
+TEST(ChipySession, AMeshPatchWritesLmgc90sFiles) {
+  const fs::path source = fs::path(LMGC_SOURCE_DIR) / "reference_cases" / "mailx_patch_q4";
+  const fs::path dir = test::scratch_dir("chipy_mailx_patch");
+  fs::copy(source / "DATBOX", dir / "DATBOX", fs::copy_options::recursive);
+  Session s(dir, SessionOptions{-1, true});
+  s.set_dimension(2, 1);
+  s.set_time_step(1.0);
+  s.init_theta(1.0);
+  read_all(s);
+  EXPECT_TRUE(s.has_deformable_bodies());
+  s.compute_mass();
+  s.stage("ComputeBulk");  // before the loop, as LMGC90's linear scripts call it
+  s.stage("IncrementStep");
+  s.stage("ComputeFext");
+  s.stage("ComputeBulk");
+  s.stage("ComputeFreeVelocity");
+  s.select_prox_tactors(1, 0, 0);
+  s.recup_rloc(std::nullopt);
+  s.ex_solver("Stored_Delassus_Loops", "Quad ", 1e-4, 1.0, 10, 10);
+  s.stage("UpdateTactBehav");
+  s.stage("StockRloc");
+  s.stage("ComputeDof");
+  s.stage("UpdateStep");
+  s.write_last_dof();
+  s.write_last_gpv();
+  s.finalize();
+  for (const char* file : {"DOF.LAST", "GPV.LAST"})
+    EXPECT_TRUE(test::read_file(dir / "OUTBOX" / file) == test::read_file(source / "lmgc90_reference" / file))
+        << file;
+  EXPECT_FALSE(fs::exists(dir / "OUTBOX" / "EXACT_STATE.LAST"));  // not written beside meshes
+}
+
+TEST(ChipySession, MeshCasesNeedTheirHypothesis) {
+  const fs::path dir = test::scratch_dir("chipy_mailx_mode");
+  fs::copy(fs::path(LMGC_SOURCE_DIR) / "reference_cases" / "mailx_patch_q4" / "DATBOX", dir / "DATBOX",
+           fs::copy_options::recursive);
+  Session s(dir, SessionOptions{-1, true});
+  EXPECT_EQ(kind_of([&] { s.set_dimension(2, 4); }), ErrorKind::value);  // LMGC90 stops on mod 4
+  s.set_dimension(2, 3);                                                 // axisymmetric
+  read_all(s);
+  EXPECT_TRUE(s.has_deformable_bodies());
 }
 
 }  // namespace
