@@ -37,13 +37,17 @@ LOOP = """for k in range(nb_steps):
   chipy.ComputeDof()
   chipy.UpdateStep()
   chipy.WriteOut(freq_write)
+  chipy.WritePostproFiles()
+chipy.ClosePostproFiles()
 chipy.WriteLastDof()
 chipy.WriteLastGPV()
 chipy.Finalize()
 """
 
 
-def script(comment, mhyp, dt, theta, steps, freq_write, extra=""):
+def script(comment, mhyp, dt, theta, steps, freq_write, extra="", postpro=False):
+    loop = LOOP if postpro else LOOP.replace("  chipy.WritePostproFiles()\n", "").replace("chipy.ClosePostproFiles()\n", "")
+    opening = "chipy.OpenPostproFiles()\n" if postpro else ""
     return f"""{comment}
 # Written by scripts/make_mailx_reference_cases.py; run unchanged by LMGC90 and by lmgc-run.
 from pylmgc90 import chipy
@@ -60,9 +64,9 @@ chipy.SetDimension(2, {mhyp})
 chipy.TimeEvolution_SetTimeStep(dt)
 chipy.Integrator_InitTheta(theta)
 chipy.ReadDatbox(deformable=True)
-chipy.ComputeMass()
+{opening}chipy.ComputeMass()
 chipy.ComputeBulk()
-{extra}""" + LOOP
+{extra}""" + loop
 
 
 def write(folder, files, text):
@@ -94,12 +98,22 @@ def patch_q4(folder):
 def cantilever_t3(folder):
     nodes, elements = w.mailx_rectangle(10, 2, 1.0, 0.1, "T3xxx")
     driven = {k + 1: [0.0, 0.0] for k, (x, y, _) in enumerate(nodes) if x == 0.0}
-    write(folder, {"BODIES.DAT": w.mailx_bodies(nodes, elements, "T3xxx", "M2DT3", "rubbr"),
+    tip = [k + 1 for k, (x, y, _) in enumerate(nodes) if x == 1.0]
+    clamp = sorted(driven)
+    # NEW MECAx SETS (mailx-2d.md §8): sets, then per set its members, per member (body, count) and nodes.
+    sets = f"{2:7d}\n"
+    for nodes_of_set in (tip, clamp):
+        sets += f"{1:7d}\n{1:7d} {len(nodes_of_set):7d}\n" + "".join(f"{n:7d}\n" for n in nodes_of_set)
+    postpro = ("NEW MECAx SETS                :\nSTEP 1                        :\n" + sets +
+               "Dep EVOLUTION                 :\nSTEP 1                        :\n"
+               "Fint EVOLUTION                :\nSTEP 1                        :\nEND                           :\n")
+    write(folder, {"POSTPRO.DAT": postpro,
+                   "BODIES.DAT": w.mailx_bodies(nodes, elements, "T3xxx", "M2DT3", "rubbr"),
                    "MODELS.DAT": w.mailx_model("M2DT3", "T3xxx", lumped=True),
                    "BULK_BEHAV.DAT": w.elas_bulk("rubbr", 1000.0, 1e7, 0.3, gravity=(0.0, -9.81)),
                    "DRV_DOF.DAT": w.mailx_driven(driven)},
           script("# A T3xxx cantilever (plane stress, lumped mass) clamped at x = 0, falling under gravity.",
-                 2, 1e-3, 0.5, 200, 50, extra="chipy.mecaMAILx_ComputeRayleighDamping(0.5, 1e-4)\n"))
+                 2, 1e-3, 0.5, 200, 50, extra="chipy.mecaMAILx_ComputeRayleighDamping(0.5, 1e-4)\n", postpro=True))
 
 
 def main():
@@ -121,6 +135,9 @@ def main():
         os.makedirs(reference, exist_ok=True)
         for f in ("DOF.LAST", "GPV.LAST"):
             shutil.copy(os.path.join(work, "OUTBOX", f), reference)
+        for f in sorted(os.listdir(os.path.join(work, "POSTPRO"))):
+            if f.startswith(("Dep_", "Fint_")):
+                shutil.copy(os.path.join(work, "POSTPRO", f), reference)
         print(f"{name}: LMGC90's DOF.LAST and GPV.LAST stored in {reference}")
     return 0
 

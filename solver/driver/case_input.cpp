@@ -39,6 +39,25 @@ std::vector<PostproCommand2D> postpro_commands_2d(const case_folder::CaseFiles& 
         if (!card.arguments[k].integers.empty())
           command.bodies.push_back(card.arguments[k].integers.front().value);
     }
+    // NEW MECAx SETS: the count of sets; per set its count of members; per member a (body, node
+    // count) line, then the node numbers one per line (mailx-2d.md §8).
+    if (command.kind == PostproKind2D::new_meca_sets) {
+      std::vector<std::int64_t> values;
+      for (const grammar::PostproArgument& a : card.arguments)
+        for (const grammar::Integer& i : a.integers) values.push_back(i.value);
+      std::size_t at = 0;
+      const auto next = [&]() { return at < values.size() ? values[at++] : 0; };
+      const std::int64_t sets = next();
+      for (std::int64_t k = 0; k < sets && at < values.size(); ++k) {
+        std::vector<std::pair<std::int64_t, std::int64_t>> set;
+        const std::int64_t members = next();
+        for (std::int64_t m = 0; m < members && at < values.size(); ++m) {
+          const std::int64_t body = next(), nodes = next();
+          for (std::int64_t n = 0; n < nodes && at < values.size(); ++n) set.emplace_back(body, next());
+        }
+        command.sets.push_back(std::move(set));
+      }
+    }
     if (command.kind == PostproKind2D::average_velocity_evolution && !card.arguments.empty())
       command.color = card.arguments.front().word.value;
     commands.push_back(std::move(command));

@@ -71,6 +71,10 @@ class LinearThetaScheme {
   // X = X_begin + h((1 − θ)V_begin + θV).
   Eigen::VectorXd displacement(const Eigen::VectorXd& x_begin, const Eigen::VectorXd& v_begin,
                                const Eigen::VectorXd& v) const;
+  // K X + C V: the internal force of displacement X and velocity V.
+  Eigen::VectorXd internal_force(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
+    return stiffness_ * x + damping_ * v;
+  }
   double h() const { return h_; }
   double theta() const { return theta_; }
 

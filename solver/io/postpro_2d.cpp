@@ -39,6 +39,9 @@ bool postpro_kind_of(std::string_view name, PostproKind2D& kind) {
       {"TORQUE EVOLUTION", PostproKind2D::torque_evolution},
       {"COORDINATION NUMBER", PostproKind2D::coordination_number},
       {"AVERAGE VELOCITY EVOLUTION", PostproKind2D::average_velocity_evolution},
+      {"NEW MECAx SETS", PostproKind2D::new_meca_sets},
+      {"Dep EVOLUTION", PostproKind2D::dep_evolution},
+      {"Fint EVOLUTION", PostproKind2D::fint_evolution},
   };
   for (const Row& r : kRows)
     if (r.name == name) {
@@ -60,6 +63,7 @@ bool Postpro2D::open(const std::filesystem::path& dir, std::vector<PostproComman
       return false;
     }
     streams_.push_back({command, body, std::move(file), dir / name});
+    stream_sets_.emplace_back();
     return true;
   };
   // POSTPRO.OUT is created empty (datbox-inputs.md §8).
@@ -88,6 +92,18 @@ bool Postpro2D::open(const std::filesystem::path& dir, std::vector<PostproComman
         break;
       case PostproKind2D::body_tracking:
         for (std::int64_t b : c.bodies) ok = ok && create(fmt::format("BODY_{:07d}.DAT", b), i, b);
+        break;
+      case PostproKind2D::new_meca_sets:
+        sets_ = c.sets;  // the sets of the Dep and Fint commands that follow it
+        break;
+      case PostproKind2D::dep_evolution:
+      case PostproKind2D::fint_evolution:
+        for (std::size_t k = 0; k < sets_.size(); ++k) {
+          ok = ok && create(fmt::format("{}_{:07d}.DAT",
+                                        c.kind == PostproKind2D::dep_evolution ? "Dep" : "Fint", k + 1),
+                            i, static_cast<std::int64_t>(k + 1));
+          if (ok) stream_sets_.back() = sets_[k];
+        }
         break;
       case PostproKind2D::torque_evolution:
         for (std::int64_t b : c.bodies) ok = ok && create(fmt::format("TORQUE_{:07d}.DAT", b), i, b);
@@ -162,6 +178,42 @@ bool Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsR
         external_work_ += h * power;
         line(out, t,
              {kinetic, kinetic, -external_work_, -potential, 0.0, kinetic + external_work_ + potential});
+        break;
+      }
+      case PostproKind2D::new_meca_sets:
+        break;
+      case PostproKind2D::dep_evolution:
+      case PostproKind2D::fint_evolution: {
+        const auto& set = stream_sets_[static_cast<std::size_t>(&s - streams_.data())];
+        const DeformableBodies& d = scene.deformable;
+        // Dep: the mean of X and V over the entries; Fint: the sums of Reac, Fint, Finert, Fext, Res.
+        std::array<double, 10> sum{};
+        for (const auto& [body, node] : set) {
+          if (body < 1 || static_cast<std::size_t>(body) > d.states.size()) continue;
+          const MeshBodyState& m = d.states[static_cast<std::size_t>(body - 1)];
+          const auto dof = static_cast<Eigen::Index>(2 * (node - 1));
+          if (node < 1 || dof + 1 >= m.x.size()) continue;
+          if (c.kind == PostproKind2D::dep_evolution) {
+            for (int k = 0; k < 2; ++k) {
+              sum[static_cast<std::size_t>(k)] += m.x(dof + k);
+              sum[static_cast<std::size_t>(2 + k)] += m.v(dof + k);
+            }
+          } else {
+            for (int k = 0; k < 2; ++k) {
+              const auto at = static_cast<std::size_t>(k);
+              sum[2 + at] += m.internal_force(dof + k);
+              sum[4 + at] += m.inertial_force(dof + k);
+              sum[6 + at] += m.f_ext(dof + k);
+              sum[8 + at] += m.residue(dof + k);
+            }
+          }
+        }
+        if (c.kind == PostproKind2D::dep_evolution) {
+          const auto n = static_cast<double>(set.size());
+          line(out, t, {sum[0] / n, sum[1] / n, sum[2] / n, sum[3] / n});
+        } else {
+          line(out, t, {sum[0], sum[1], sum[2], sum[3], sum[4], sum[5], sum[6], sum[7], sum[8], sum[9]});
+        }
         break;
       }
       case PostproKind2D::body_tracking: {

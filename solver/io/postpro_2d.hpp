@@ -21,6 +21,9 @@ enum class PostproKind2D {
   torque_evolution,
   coordination_number,
   average_velocity_evolution,
+  new_meca_sets,   // NEW MECAx SETS: node sets of deformable bodies, for the two below
+  dep_evolution,   // Dep EVOLUTION: mean displacement and velocity of each set's nodes
+  fint_evolution,  // Fint EVOLUTION: summed reaction, internal, inertial, external forces, residue
 };
 
 struct PostproCommand2D {
@@ -28,6 +31,9 @@ struct PostproCommand2D {
   int period = 1;                    // the command runs when Nstep mod period == 0
   std::vector<std::int64_t> bodies;  // BODY TRACKING, TORQUE EVOLUTION: body ranks (1-based)
   std::string color;                 // AVERAGE VELOCITY EVOLUTION
+  // NEW MECAx SETS: per set, its (mecaMAILx body, node) entries, both 1-based (a node listed twice
+  // counts twice). docs/lmgc90-facts/mailx-2d.md §8.
+  std::vector<std::vector<std::pair<std::int64_t, std::int64_t>>> sets;
 };
 
 // The command of a POSTPRO.DAT name, or false when the 2D post-processor does not provide it.
@@ -70,9 +76,12 @@ class Postpro2D {
   bool streams_good(std::string& error) const;
   std::vector<PostproCommand2D> commands_;
   std::vector<Stream> streams_;
-  double dissipated_ = 0.0;     // cumulated dissipated energy
-  double external_work_ = 0.0;  // cumulated work of reactions and external forces
-  NlgsNorms last_norms_;        // kept when a step has no contact (as LMGC90 does)
+  using NodeSet = std::vector<std::pair<std::int64_t, std::int64_t>>;
+  std::vector<NodeSet> sets_;         // the last NEW MECAx SETS read
+  std::vector<NodeSet> stream_sets_;  // per stream: its set (Dep, Fint EVOLUTION), else empty
+  double dissipated_ = 0.0;           // cumulated dissipated energy
+  double external_work_ = 0.0;        // cumulated work of reactions and external forces
+  NlgsNorms last_norms_;              // kept when a step has no contact (as LMGC90 does)
   PostproFlushClock flush_clock_;
 };
 

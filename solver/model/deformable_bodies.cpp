@@ -20,6 +20,7 @@ bool build_deformable_bodies(const case_folder::CaseFiles& files, fem::Hypothesi
     }
     const auto n = static_cast<Eigen::Index>(mesh.dofs());
     s.x = s.x_begin = s.v = s.v_begin = s.v_free = s.f_ext = Eigen::VectorXd::Zero(n);
+    s.internal_force = s.inertial_force = s.residue = Eigen::VectorXd::Zero(n);
   }
   // Driven dofs of the nodes: a MAILx block's rank is the body's, its node numbers the body's nodes.
   if (files.drv_dof)
@@ -113,10 +114,13 @@ void free_velocity_deformable(DeformableBodies& d, const StepContext& step) {
   }
 }
 
-void dof_deformable(DeformableBodies& d, const StepContext&) {
+void dof_deformable(DeformableBodies& d, const StepContext& step) {
   for (MeshBodyState& s : d.states) {
     s.v = s.v_free;
     s.x = s.scheme.displacement(s.x_begin, s.v_begin, s.v);
+    s.internal_force = s.scheme.internal_force(s.x, s.v);
+    s.inertial_force = s.matrices.mass * (s.v - s.v_begin) / step.h;
+    s.residue = s.internal_force + s.inertial_force - s.f_ext;
   }
 }
 

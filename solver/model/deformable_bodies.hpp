@@ -18,6 +18,9 @@ namespace lmgc::solver {
 
 struct MeshBodyState {
   Eigen::VectorXd x, x_begin, v, v_begin, v_free, f_ext;
+  // At the end of the step (LMGC90's ComputeField): F_int = K X + C V, F_inert = M(V − V_begin)/h,
+  // residue = F_int + F_inert − I_reac/h − F_ext (no contact impulse on meshes yet).
+  Eigen::VectorXd internal_force, inertial_force, residue;
   fem::LinearBodyMatrices matrices;
   fem::LinearThetaScheme scheme;
   double prepared_h = 0.0, prepared_theta = 0.0;  // K̂ is factorised for these (0: not yet)
