@@ -46,7 +46,8 @@ bool add_element(const MeshBody& body, const MeshElement& element, Triplets& k, 
 }
 }  // namespace
 
-bool assemble(const MeshBody& body, LinearBodyMatrices& matrices, std::string& error) {
+bool assemble(const MeshBody& body, LinearBodyMatrices& matrices, std::string& error,
+              std::size_t* failed_element) {
   Triplets k, m;
   for (std::size_t e = 0; e < body.elements.size(); ++e) {
     const MeshElement& element = body.elements[e];
@@ -55,6 +56,7 @@ bool assemble(const MeshBody& body, LinearBodyMatrices& matrices, std::string& e
       return add_element<E>(body, element, k, m);
     });
     if (!ok) {
+      if (failed_element) *failed_element = e;
       error = "element " + std::to_string(e + 1) + " (" + std::string(element_entry(element.kind).name) +
               ") has a Gauss point where its Jacobian is not positive: inverted or degenerate";
       return false;

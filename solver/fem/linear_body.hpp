@@ -49,7 +49,8 @@ struct LinearBodyMatrices {
 
 // Assembles K and M. False, with `error` naming the element (1-based), when an element has a Gauss
 // point whose Jacobian is not positive.
-bool assemble(const MeshBody& body, LinearBodyMatrices& matrices, std::string& error);
+bool assemble(const MeshBody& body, LinearBodyMatrices& matrices, std::string& error,
+              std::size_t* failed_element = nullptr);
 
 struct DrivenVelocity {
   std::int32_t dof = 0;  // node × D + component

@@ -13,8 +13,17 @@ bool build_deformable_bodies(const case_folder::CaseFiles& files, fem::Hypothesi
     const fem::MeshBody& mesh = out.meshes.bodies[b];
     MeshBodyState& s = out.states[b];
     std::string error;
-    if (!fem::assemble(mesh, s.matrices, error)) {
-      sink.report("L4003", grammar::Location{(files.case_dir / "DATBOX" / "BODIES.DAT").string(), {}},
+    std::size_t failed = 0;
+    if (!fem::assemble(mesh, s.matrices, error, &failed)) {
+      // An inverted or degenerate element (a Gauss point where det J ≤ 0): LMGC90 would integrate it
+      // with a negative weight (mailx-2d.md §1.4); lmgc refuses the case, at the element's line.
+      const grammar::Body* body = nullptr;
+      std::size_t rank = 0;
+      for (const grammar::Body& candidate : files.bodies->bodies)
+        if (candidate.type == grammar::BodyType::mailx && rank++ == b) body = &candidate;
+      const grammar::SourceSpan span =
+          body && failed < body->elements.size() ? body->elements[failed].type.span : grammar::SourceSpan{};
+      sink.report("L3011", grammar::Location{(files.case_dir / "DATBOX" / "BODIES.DAT").string(), span},
                   "MAILx body " + std::to_string(b + 1) + ": " + error);
       return false;
     }

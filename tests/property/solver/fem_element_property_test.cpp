@@ -10,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "solver/fem/element_matrices.hpp"
+#include "solver/fem/linear_body.hpp"
 
 namespace lmgc::solver::fem {
 namespace {
@@ -179,6 +180,32 @@ TEST(FemElement, AnInvertedElementIsRefused) {
   ElementMatrix<Q4> k;
   EXPECT_FALSE(stiffness<Q4>(x, elasticity_matrix(Hypothesis::plane_strain, 1.0, 0.3),
                              Hypothesis::plane_strain, quadrature<2>(Rule::quad_2x2), k));
+}
+
+}  // namespace
+}  // namespace lmgc::solver::fem
+
+namespace lmgc::solver::fem {
+namespace {
+
+// A T6 whose corners turn counter-clockwise but whose mid-side node is pushed across the element:
+// the corner test of lmgc-check cannot see it, the Gauss points can (assemble names the element).
+TEST(FemElement, AQuadraticElementInvertedInsideIsNamed) {
+  MeshBody body;
+  body.dimension = 2;
+  body.materials = {Material{1e9, 0.3, 1000.0}};
+  body.coordinates = {0,   0,   1,   0,   0, 1,
+                      0.5, 0.9, 0.5, 0.5, 0, 0.5};  // node 4 (side 1-2) pushed up to y = 0.9
+  MeshElement e;
+  e.kind = ElementKind::T6;
+  e.nodes = {0, 1, 2, 3, 4, 5};
+  body.elements = {e};
+  LinearBodyMatrices m;
+  std::string error;
+  std::size_t failed = 99;
+  EXPECT_FALSE(assemble(body, m, error, &failed));
+  EXPECT_EQ(failed, 0u);
+  EXPECT_NE(error.find("element 1 (T6xxx)"), std::string::npos) << error;
 }
 
 }  // namespace
