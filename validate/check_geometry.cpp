@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -212,6 +213,18 @@ void check_geometry(const CaseFiles& files, grammar::DiagnosticSink& sink) {
                fmt::format("gyrd of {} is {}; it must be >= 0 (0: computed)", owner, b.gyrd.value));
     }
     for (const auto& e : body.elements) check_element(body, e, owner, report);
+    // Two elements on the same nodes: the mesh counts that matter twice (stiffness and mass).
+    std::map<std::vector<std::int64_t>, std::size_t> seen;
+    for (std::size_t k = 0; k < body.elements.size(); ++k) {
+      std::vector<std::int64_t> nodes;
+      for (const auto& n : body.elements[k].nodes) nodes.push_back(n.value);
+      std::sort(nodes.begin(), nodes.end());
+      const auto [it, fresh] = seen.emplace(nodes, k);
+      if (!fresh)
+        report("L3017", body.elements[k].type.span,
+               fmt::format("element {} of {} has the nodes of element {}: the mesh counts them twice", k + 1,
+                           owner, it->second + 1));
+    }
   }
 }
 

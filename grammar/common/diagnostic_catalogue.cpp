@@ -248,6 +248,10 @@ constexpr std::array kCatalogue = {
     DiagnosticKind{"L3016", warning, "dynamic friction above static friction",
                    "A law's dynamic friction coefficient is larger than its static one; usually the two are "
                    "swapped."},
+    DiagnosticKind{
+        "L3017", warning, "duplicate element",
+        "Two elements of a MAILx body have the same nodes: the mesh's stiffness and mass count that "
+        "part twice. Usually a mesh written twice or a merge of overlapping meshes."},
     // L4xxx — run setup: what lmgc-solve does with the case. The codes that refuse a run are
     // warnings here (the case is valid for LMGC90) and make lmgc-solve stop with exit code 5.
     DiagnosticKind{"L4001", warning, "contactor not run by lmgc-solve yet",

@@ -381,6 +381,7 @@ std::vector<Row> rows() {
     {"SphereFallTooFastForTheAlert", spheres, {{"TACT_BEHAV.DAT", "VERTx       0.1000000D-01", "VERTx       0.1000000D-03"}}, "COMMAND.DAT", "L3013", warning, 5, 1},
     {"PenaltySpringNotResolved", disk, {{"TACT_BEHAV.DAT", kRst08, kRepell}}, "COMMAND.DAT", "L3013", warning, 5, 1},
     {"NothingMoves", disk, {{"BULK_BEHAV.DAT", "grv2=-0.9810000D+01", "grv2= 0.0000000D+00"}}, "BULK_BEHAV.DAT", "L3014", warning, 2, 46},
+    {"DuplicateElement", mailx, {{"BODIES.DAT", "               model  M2D_L  behav  stone\n$nodty", "               model  M2D_L  behav  stone\n Q4xxx      3  nodes      2      5      4      1\n               model  M2D_L  behav  stone\n$nodty"}}, "BODIES.DAT", "L3017", warning, 8, 2},
     {"DynamicAboveStaticFriction", disk, {{"TACT_BEHAV.DAT", kRst08, " rst08  IQS_DS_CLB                      dyfr= 0.5000000D+00  stfr= 0.3000000D+00\n"}}, "TACT_BEHAV.DAT", "L3016", warning, 3, 9},
 
     // ---- L4xxx: what the drivers ask of a run, against what lmgc-solve runs
