@@ -185,6 +185,17 @@ class ScriptRuns(unittest.TestCase):
         self.assertEqual(run.returncode, 0, run.stderr)
         shutil.rmtree(work)
 
+    def test_star_import_of_pylmgc90_chipy_runs_a_script(self):
+        body = ("from pylmgc90.chipy import *\nInitialize()\ncheckDirectories()\nSetDimension(2)\n"
+                "TimeEvolution_SetTimeStep(1e-3)\nReadDatbox(deformable=False)\nfor k in range(3):\n"
+                "  IncrementStep(); ComputeFext(); ComputeFreeVelocity(); SelectProxTactors(); RecupRloc()\n"
+                "  ExSolver('Stored_Delassus_Loops', 'Quad ', 1e-8, 1.0, 50, 100); UpdateTactBehav(); StockRloc()\n"
+                "  ComputeDof(); UpdateStep()\nassert TimeEvolution_GetStep() == 3\nWriteLastDof()\nFinalize()\n")
+        work, run = self.run_script(body)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertTrue(os.path.exists(os.path.join(work, "OUTBOX", "DOF.LAST")))
+        shutil.rmtree(work)
+
     def test_a_call_lmgc_does_not_offer_stops_the_script_with_its_name(self):
         work, run = self.run_script(self.HEAD + "chipy.RBDY2_FatalDamping()\n")
         self.assertEqual(run.returncode, 1)
