@@ -54,6 +54,25 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
       if (aniso && aniso->value.value != "iso__")
         return refuse(models_path, aniso->value.span,
                       "model '" + m.nickname.value + "' is anisotropic: lmgc runs isotropic elasticity only");
+      // Options lmgc reads; any other changes the model (external fields, discrete or coupled
+      // elements, ...) and is refused rather than ignored.
+      for (const grammar::ModelOption& o : m.options) {
+        const std::string& id = o.id.value;
+        const std::string& value = o.value.value;
+        const bool known = id == "isext" || id == "kine_" || id == "form_" || id == "aniso" ||
+                           id == "mater" || id == "mstrg" || id == "cplth";
+        const bool accepted = !known          ? false
+                              : id == "isext" ? (value == "no___" || value == "MatL_")
+                              : id == "form_" ? value == "xxxxx"
+                              : id == "cplth" ? value == "no___"
+                                              : true;
+        if (!accepted)
+          return refuse(
+              models_path, o.id.span,
+              "model '" + m.nickname.value + "' asks for '" + id + " " + value +
+                  "', which lmgc does not run yet (it runs small-strain linear elasticity: isext no___ or "
+                  "MatL_, form_ xxxxx, no thermal coupling)");
+      }
       const grammar::ModelOption* isext = option(m, "isext");
       matlib[m.nickname.value] = isext && isext->value.value == "MatL_";
       if (matlib[m.nickname.value] && hypothesis == fem::Hypothesis::plane_stress)
