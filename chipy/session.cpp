@@ -893,6 +893,10 @@ bool Session::has_deformable_bodies() const {
   return run_ && run_->has_meshes();
 }
 
+bool Session::has_contact_laws() const {
+  return run_ && run_->files.tact_behav && !run_->files.tact_behav->laws.empty();
+}
+
 void Session::set_rayleigh_damping(double alpha, double beta) {
   if (!std::isfinite(alpha) || !std::isfinite(beta) || alpha < 0.0 || beta < 0.0)
     fail(ErrorKind::value, "mecaMAILx_ComputeRayleighDamping: alpha and beta are finite and non-negative");

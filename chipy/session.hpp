@@ -102,6 +102,7 @@ class Session {
   void write_out_gpv(long every);  // WriteOutGPV: the deformable bodies' Gauss-point values
   void write_last_gpv();
   bool has_deformable_bodies() const;
+  bool has_contact_laws() const;  // TACT_BEHAV.DAT defines a law (WriteOut's Vloc_Rloc condition)
   void open_display();
   void write_display(long every);
   void close_display();

@@ -120,6 +120,7 @@ PYBIND11_MODULE(_chipy, m) {
       .def("write_out_gpv", &Session::write_out_gpv)
       .def("write_last_gpv", &Session::write_last_gpv)
       .def("has_deformable_bodies", &Session::has_deformable_bodies)
+      .def("has_contact_laws", &Session::has_contact_laws)
       .def("set_rayleigh_damping", &Session::set_rayleigh_damping)
       .def("open_display", &Session::open_display)
       .def("write_display", &Session::write_display)

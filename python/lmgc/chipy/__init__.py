@@ -413,7 +413,9 @@ def WriteOut(nsteps=1):
     WriteOutDof(nsteps)
     if _s().has_deformable_bodies():
         WriteOutGPV(nsteps)
-    WriteOutVlocRloc(nsteps)
+    # As LMGC90's WriteOut: Vloc_Rloc when TACT_BEHAV.DAT defines a law.
+    if _s().has_contact_laws():
+        WriteOutVlocRloc(nsteps)
 
 
 @_export
@@ -433,7 +435,8 @@ def WriteLast(filename=None):
     WriteLastDof()
     if _s().has_deformable_bodies():
         WriteLastGPV()
-    WriteLastVlocRloc()
+    if _s().has_contact_laws():
+        WriteLastVlocRloc()
 
 
 # --- deformable bodies (linear elastic meshes, without contact) ----------------------------------
