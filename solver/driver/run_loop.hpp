@@ -50,14 +50,21 @@ RunSummary run_loop(Scene& scene, State& state, const run::RunOptions& options,
     return summary;
   }
   long written = 0;
+  // GPV.<suffix>, computed once, when the scene has Gauss-point values.
+  const auto write_gpv = [&](const std::string& suffix) {
+    if (!dimension.gpv_text) return true;
+    const std::string gpv = dimension.gpv_text(scene, state);
+    std::string error;
+    return gpv.empty() || grammar::write_file_whole(outbox / ("GPV." + suffix), gpv, error) ||
+           (summary.fail(RunFailure::output, error), false);
+  };
   const auto write_state = [&](const std::string& suffix) {
     std::string error;
     const bool ok =
         grammar::write_file_whole(outbox / ("DOF." + suffix), dimension.dof_text(scene, state), error) &&
         grammar::write_file_whole(outbox / ("Vloc_Rloc." + suffix), dimension.vloc_rloc_text(scene, state),
                                   error) &&
-        (!dimension.gpv_text || dimension.gpv_text(scene, state).empty() ||
-         grammar::write_file_whole(outbox / ("GPV." + suffix), dimension.gpv_text(scene, state), error)) &&
+        write_gpv(suffix) &&
         (suffix != "LAST" || (dimension.exact_state_complete && !dimension.exact_state_complete(scene)) ||
          grammar::write_file_whole(outbox / "EXACT_STATE.LAST", dimension.exact_state(scene, state), error));
     if (!ok) summary.fail(RunFailure::output, error);

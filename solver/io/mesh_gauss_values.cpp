@@ -45,42 +45,54 @@ void point_values(const fem::MeshBody& body, bool matlib, const Eigen::VectorXd&
 
 }  // namespace
 
+namespace {
+
+// The written value lines (stress, strain[, energy] per Gauss point) of one element.
+std::vector<std::vector<grammar::Real>> element_lines(const fem::MeshBody& body, bool matlib,
+                                                      const Eigen::VectorXd& displacement, std::size_t e) {
+  std::vector<std::vector<grammar::Real>> lines;
+  const fem::MeshElement& element = body.elements[e];
+  const fem::ElementEntry& entry = fem::element_entry(element.kind);
+  const fem::Material& material = body.materials[static_cast<std::size_t>(element.material)];
+  const Eigen::MatrixXd d = fem::elasticity_matrix(body.hypothesis, material.young, material.poisson);
+  fem::with_element(element.kind, [&](auto shape) {
+    using E = decltype(shape);
+    constexpr int D = E::kDimension;
+    if (D != body.dimension) return;
+    fem::NodeCoordinates<E> x;
+    Eigen::Matrix<double, E::kNodes * D, 1> u;
+    for (int k = 0; k < E::kNodes; ++k) {
+      const auto node = static_cast<Eigen::Index>(element.nodes[static_cast<std::size_t>(k)]);
+      for (int c = 0; c < D; ++c) {
+        x(k, c) = body.coordinates[static_cast<std::size_t>(node * D + c)];
+        u(k * D + c) = displacement(node * D + c);
+      }
+    }
+    const fem::QuadratureRule<D> rule = fem::quadrature<D>(entry.stiffness_rule);
+    for (int p = 0; p < rule.size(); ++p) {
+      const auto g = fem::point_geometry<E>(x, rule.points[static_cast<std::size_t>(p)],
+                                            rule.weights[static_cast<std::size_t>(p)], body.hypothesis);
+      if (!g) continue;  // refused when the body was assembled
+      const Eigen::VectorXd strain = fem::strain_matrix<E>(*g, body.hypothesis) * u;
+      point_values(body, matlib, strain, material.poisson, d, lines);
+    }
+  });
+  return lines;
+}
+
+}  // namespace
+
 grammar::GpvBody gauss_point_values(const fem::MeshBody& body, bool matlib,
                                     const Eigen::VectorXd& displacement, int body_number) {
   grammar::GpvBody out;
   out.number = body_number;
   for (std::size_t e = 0; e < body.elements.size(); ++e) {
-    const fem::MeshElement& element = body.elements[e];
-    const fem::ElementEntry& entry = fem::element_entry(element.kind);
     grammar::GpvElement written;
-    written.type = grammar::Word{std::string(entry.name)};
+    written.type = grammar::Word{std::string(fem::element_entry(body.elements[e].kind).name)};
     written.number = static_cast<std::int64_t>(e + 1);
     grammar::GpvModelBlock block;
     block.model = grammar::Word{std::string("MECAx")};
-    const fem::Material& material = body.materials[static_cast<std::size_t>(element.material)];
-    const Eigen::MatrixXd d = fem::elasticity_matrix(body.hypothesis, material.young, material.poisson);
-    fem::with_element(element.kind, [&](auto shape) {
-      using E = decltype(shape);
-      constexpr int D = E::kDimension;
-      if (D != body.dimension) return;
-      fem::NodeCoordinates<E> x;
-      Eigen::Matrix<double, E::kNodes * D, 1> u;
-      for (int k = 0; k < E::kNodes; ++k) {
-        const auto node = static_cast<Eigen::Index>(element.nodes[static_cast<std::size_t>(k)]);
-        for (int c = 0; c < D; ++c) {
-          x(k, c) = body.coordinates[static_cast<std::size_t>(node * D + c)];
-          u(k * D + c) = displacement(node * D + c);
-        }
-      }
-      const fem::QuadratureRule<D> rule = fem::quadrature<D>(entry.stiffness_rule);
-      for (int p = 0; p < rule.size(); ++p) {
-        const auto g = fem::point_geometry<E>(x, rule.points[static_cast<std::size_t>(p)],
-                                              rule.weights[static_cast<std::size_t>(p)], body.hypothesis);
-        if (!g) continue;  // refused when the body was assembled
-        const Eigen::VectorXd strain = fem::strain_matrix<E>(*g, body.hypothesis) * u;
-        point_values(body, matlib, strain, material.poisson, d, block.lines);
-      }
-    });
+    block.lines = element_lines(body, matlib, displacement, e);
     written.models.push_back(std::move(block));
     out.elements.push_back(std::move(written));
   }
@@ -89,12 +101,9 @@ grammar::GpvBody gauss_point_values(const fem::MeshBody& body, bool matlib,
 
 void element_mean_strain_stress(const fem::MeshBody& body, const Eigen::VectorXd& displacement,
                                 std::size_t element, Eigen::Vector4d& strain, Eigen::Vector4d& stress) {
-  fem::MeshBody one = body;
-  one.elements = {body.elements[element]};
-  const grammar::GpvBody values = gauss_point_values(one, false, displacement, 1);
+  const auto lines = element_lines(body, false, displacement, element);
   strain.setZero();
   stress.setZero();
-  const auto& lines = values.elements[0].models[0].lines;
   const std::size_t points = lines.size() / 2;
   for (std::size_t p = 0; p < points; ++p)
     for (int k = 0; k < 4 && static_cast<std::size_t>(k) < lines[2 * p].size(); ++k) {
