@@ -193,3 +193,20 @@ def mailx_driven(velocities):
 
 STATE_HEADER = ("! DOF\n\n$steps      0                time= 0.0000000D+00\n\n"
                 "!-----------------------------------------------------------------------\n")
+
+
+# One step of a deformable case in LMGC90's linear driver sequence, indented for the body of a loop.
+MAILX_STEP = """  chipy.IncrementStep()
+  chipy.ComputeFext()
+  chipy.ComputeBulk()
+  chipy.AssembleMechanicalRHS()
+  chipy.AssembleMechanicalLHS()
+  chipy.ComputeFreeVelocity()
+  chipy.SelectProxTactors()
+  chipy.RecupRloc()
+  chipy.ExSolver('Stored_Delassus_Loops         ', 'Quad ', 1e-4, 1.0, 10, 10)
+  chipy.UpdateTactBehav()
+  chipy.StockRloc()
+  chipy.ComputeDof()
+  chipy.UpdateStep()
+"""

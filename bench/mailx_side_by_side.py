@@ -36,20 +36,7 @@ chipy.ComputeMass()
 chipy.ComputeBulk()
 start = time.perf_counter()
 for k in range({steps}):
-  chipy.IncrementStep()
-  chipy.ComputeFext()
-  chipy.ComputeBulk()
-  chipy.AssembleMechanicalRHS()
-  chipy.AssembleMechanicalLHS()
-  chipy.ComputeFreeVelocity()
-  chipy.SelectProxTactors()
-  chipy.RecupRloc()
-  chipy.ExSolver('Stored_Delassus_Loops         ', 'Quad ', 1e-4, 1.0, 10, 10)
-  chipy.UpdateTactBehav()
-  chipy.StockRloc()
-  chipy.ComputeDof()
-  chipy.UpdateStep()
-seconds = time.perf_counter() - start
+{step}seconds = time.perf_counter() - start
 chipy.WriteLastDof()
 chipy.Finalize()
 open('loop_seconds.txt', 'w').write(repr(seconds))
@@ -68,7 +55,7 @@ def make_case(folder, nx, ny, steps):
         with open(os.path.join(folder, "DATBOX", name), "w") as f:
             f.write(text)
     with open(os.path.join(folder, "command.py"), "w") as f:
-        f.write(SCRIPT.format(dt=1e-4, steps=steps))
+        f.write(SCRIPT.format(dt=1e-4, steps=steps, step=w.MAILX_STEP))
 
 
 def dof_values(path):

@@ -22,21 +22,7 @@ import datbox_writer as w  # noqa: E402
 
 A = [[1e-3, 2e-3], [-0.5e-3, 1.5e-3]]
 
-LOOP = """for k in range(nb_steps):
-  chipy.IncrementStep()
-  chipy.ComputeFext()
-  chipy.ComputeBulk()
-  chipy.AssembleMechanicalRHS()
-  chipy.AssembleMechanicalLHS()
-  chipy.ComputeFreeVelocity()
-  chipy.SelectProxTactors()
-  chipy.RecupRloc()
-  chipy.ExSolver('Stored_Delassus_Loops         ', 'Quad ', 1e-4, 1.0, 10, 10)
-  chipy.UpdateTactBehav()
-  chipy.StockRloc()
-  chipy.ComputeDof()
-  chipy.UpdateStep()
-  chipy.WriteOut(freq_write)
+LOOP = "for k in range(nb_steps):\n" + w.MAILX_STEP + """  chipy.WriteOut(freq_write)
   chipy.WritePostproFiles()
 chipy.ClosePostproFiles()
 chipy.WriteLastDof()
