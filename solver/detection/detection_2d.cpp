@@ -24,15 +24,16 @@ Eigen::Matrix2d rotation(double angle) {
 }
 
 // The contactor shapes of a family: candidate, antagonist.
-constexpr std::array<std::pair<ContactorShape2D, ContactorShape2D>, kPairFamily2DCount> kFamilyShapes = {{
-    {ContactorShape2D::disk, ContactorShape2D::disk},         // DKDKx
-    {ContactorShape2D::disk, ContactorShape2D::hollow_disk},  // DKKDx
-    {ContactorShape2D::disk, ContactorShape2D::joncx},        // DKJCx
-    {ContactorShape2D::disk, ContactorShape2D::polygon},      // DKPLx
-    {ContactorShape2D::point, ContactorShape2D::point},       // PTPT2
-    {ContactorShape2D::polygon, ContactorShape2D::polygon},   // PLPLx
-    {ContactorShape2D::polygon, ContactorShape2D::joncx},     // PLJCx
-}};
+constexpr std::array<std::pair<ContactorShape2D, ContactorShape2D>, kRigidPairFamily2DCount> kFamilyShapes = {
+    {
+        {ContactorShape2D::disk, ContactorShape2D::disk},         // DKDKx
+        {ContactorShape2D::disk, ContactorShape2D::hollow_disk},  // DKKDx
+        {ContactorShape2D::disk, ContactorShape2D::joncx},        // DKJCx
+        {ContactorShape2D::disk, ContactorShape2D::polygon},      // DKPLx
+        {ContactorShape2D::point, ContactorShape2D::point},       // PTPT2
+        {ContactorShape2D::polygon, ContactorShape2D::polygon},   // PLPLx
+        {ContactorShape2D::polygon, ContactorShape2D::joncx},     // PLJCx
+    }};
 
 bool of_family(PairFamily2D f, ContactorShape2D shape) {
   const auto& [cd, an] = kFamilyShapes[static_cast<std::size_t>(f)];
@@ -94,20 +95,20 @@ void set_rough_grids(const Scene2D& scene, VisibilityIndex2D& index) {
   };
   mark_big(ContactorShape2D::disk, disk_sum, disks, 5.0, disk_max_small);
   mark_big(ContactorShape2D::polygon, polygon_sum, polygons, 2.0, polygon_max_small);
-  std::array<double, kPairFamily2DCount> alert{};
+  std::array<double, kRigidPairFamily2DCount> alert{};
   for (const Visibility2D& v : scene.visibility) {
     PairFamily2D f;
     if (pair_family_of(v.candidate_type, v.antagonist_type, f))
       alert[static_cast<std::size_t>(f)] = std::max(alert[static_cast<std::size_t>(f)], v.alert);
   }
-  std::array<double, kPairFamily2DCount> ray{};
+  std::array<double, kRigidPairFamily2DCount> ray{};
   ray[static_cast<std::size_t>(PairFamily2D::DKDKx)] = disk_max_small;
   ray[static_cast<std::size_t>(PairFamily2D::DKKDx)] = std::max(disk_max, hollow_max);
   ray[static_cast<std::size_t>(PairFamily2D::DKJCx)] = std::max(disk_max, joncx_max);
   ray[static_cast<std::size_t>(PairFamily2D::DKPLx)] = std::max(polygon_max, disk_max);
   ray[static_cast<std::size_t>(PairFamily2D::PLPLx)] = polygon_max_small;
   ray[static_cast<std::size_t>(PairFamily2D::PLJCx)] = std::max(polygon_max, joncx_max);
-  for (int f = 0; f < kPairFamily2DCount; ++f) {
+  for (int f = 0; f < kRigidPairFamily2DCount; ++f) {
     if (static_cast<PairFamily2D>(f) == PairFamily2D::PTPT2) continue;  // no grid: pairs in index order
     const double box = 1.01 * (2.0 * ray[static_cast<std::size_t>(f)] + alert[static_cast<std::size_t>(f)]);
     index.box_inverse[static_cast<std::size_t>(f)] = box > 0.0 ? 1.0 / box : 0.0;
@@ -118,7 +119,7 @@ bool pair_family_of(const std::string& cd, const std::string& an, PairFamily2D& 
   const grammar::ContactorPair* pair =
       grammar::find_contactor_pair(grammar::see_name(cd), grammar::see_name(an));
   if (!pair) return false;
-  for (int f = 0; f < kPairFamily2DCount; ++f)
+  for (int f = 0; f < kRigidPairFamily2DCount; ++f)
     if (pair_family_name(static_cast<PairFamily2D>(f)) == pair->interaction) {
       family = static_cast<PairFamily2D>(f);
       return true;
@@ -349,8 +350,8 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
     double left = 0.0, down = 0.0, inverse = 0.0;
     bool rows_first = false;  // PLPLx: i2 outer
   };
-  std::array<FamilyGrid, kPairFamily2DCount> grids{};
-  for (int f = 0; f < kPairFamily2DCount; ++f) {
+  std::array<FamilyGrid, kRigidPairFamily2DCount> grids{};
+  for (int f = 0; f < kRigidPairFamily2DCount; ++f) {
     const auto family = static_cast<PairFamily2D>(f);
     if (!scene.plan.families[static_cast<std::size_t>(f)] || family == PairFamily2D::PTPT2) continue;
     FamilyGrid& g = grids[static_cast<std::size_t>(f)];
@@ -377,8 +378,8 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
   };
   // The rank of each candidate in its family's enumeration (boxes in the family's nesting, then
   // index), by a counting sort on the box when the grid is not much larger than its contactors.
-  thread_local std::array<std::vector<std::uint32_t>, kPairFamily2DCount> candidate_rank;
-  for (int f = 0; f < kPairFamily2DCount; ++f) {
+  thread_local std::array<std::vector<std::uint32_t>, kRigidPairFamily2DCount> candidate_rank;
+  for (int f = 0; f < kRigidPairFamily2DCount; ++f) {
     const auto family = static_cast<PairFamily2D>(f);
     std::vector<std::uint32_t>& rank = candidate_rank[static_cast<std::size_t>(f)];
     if (!scene.plan.families[static_cast<std::size_t>(f)]) {
@@ -427,7 +428,7 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
     // Grid pairs: counted into (family, candidate rank) buckets, then each bucket's few pairs by
     // (neighbouring box, antagonist). Big contactors' and periodic pairs (few) follow their family's
     // grid pairs, sorted on their own keys.
-    const std::size_t family_slots = kPairFamily2DCount + 1;  // the last: pairs no row sees
+    const std::size_t family_slots = kRigidPairFamily2DCount + 1;  // the last: pairs no row sees
     thread_local std::vector<std::size_t> bucket;
     thread_local std::vector<std::uint64_t> secondary;
     thread_local std::vector<std::uint32_t> start;
@@ -436,7 +437,7 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
       std::uint32_t pair;
       bool operator<(const Extra& o) const { return std::tie(key, pair) < std::tie(o.key, o.pair); }
     };
-    std::array<std::vector<Extra>, kPairFamily2DCount + 1> extra;
+    std::array<std::vector<Extra>, kRigidPairFamily2DCount + 1> extra;
     bucket.resize(rough.size());
     secondary.resize(rough.size());
     constexpr std::size_t kNoBucket = static_cast<std::size_t>(-1);
@@ -446,7 +447,7 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
       const std::size_t cd = roles.candidate, an = roles.antagonist;
       if (!roles.seen) {
         bucket[k] = kNoBucket;
-        extra[kPairFamily2DCount].push_back(
+        extra[kRigidPairFamily2DCount].push_back(
             {{0, 0, 0, 0, 0, static_cast<std::int64_t>(rp.i), rp.j}, static_cast<std::uint32_t>(k)});
         continue;
       }
@@ -485,7 +486,7 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
       bucket[k] = f * n + candidate_rank[f][cd];
       secondary[k] = (neighbour << 32) | static_cast<std::uint64_t>(an);
     }
-    start.assign(kPairFamily2DCount * n + 1, 0);
+    start.assign(kRigidPairFamily2DCount * n + 1, 0);
     std::size_t grid_pairs = 0;
     for (std::size_t k = 0; k < rough.size(); ++k)
       if (bucket[k] != kNoBucket) ++start[bucket[k] + 1], ++grid_pairs;
@@ -585,6 +586,10 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
       case PairFamily2D::PLJCx:
         count = polygon_joncx(polygon_view(cd, vertices_cd, normals_cd), joncx_of(an), see.alert, found);
         break;
+      case PairFamily2D::CLALp:
+      case PairFamily2D::CLJCx:
+      case PairFamily2D::PLALp:
+        break;  // a side on a mesh: mesh_detection_2d.hpp
     }
     // Fine tests that keep a contact (docs/lmgc90-facts/rigid-2d.md §3.3).
     const bool keep_at_alert =

@@ -31,7 +31,7 @@ struct VisibilityIndex2D {
   std::vector<Eigen::Vector2d> contactor_shift;
   // LMGC90's rough detection grid of each pair family (mod_XXXXx compute_box, fixed at the first
   // detection): 1 / Lbox with Lbox = 1.01 (2 maxray + maxalert); 0 for a family without one.
-  std::array<double, kPairFamily2DCount> box_inverse{};
+  std::array<double, kRigidPairFamily2DCount> box_inverse{};
   // (contactors) LMGC90's "big" contactors, kept out of the grid and tested against every other
   // one after the grid's pairs, as the candidate: DISKx of radius above 5 times the mean radius
   // (DKDKx), POLYG of outer radius above twice the mean (PLPLx).

@@ -2,6 +2,7 @@
 
 #include "grammar/bodies/writer.hpp"
 #include "grammar/command/expand.hpp"
+#include "grammar/tact_behav/contactor_pairs.hpp"
 #include "grammar/vloc_rloc/writer.hpp"
 #include "solver/bodies/rigid_2d_properties.hpp"
 #include "solver/bodies/rigid_3d_properties.hpp"
@@ -98,17 +99,23 @@ bool prepare_run_2d(const case_folder::CaseFiles& files, Scene2D& scene, RunOutp
           "body is RBDY3");
       return false;
     }
-  // Contact on deformable bodies (CLxxx, ALpxx, ...) is not run yet: a visibility row that names a
-  // MAILx body refuses the case.
+  // Contact with deformable bodies: the pairs CLALp, CLJCx and PLALp are run; a visibility row
+  // that names a MAILx body with another pair refuses the case.
   if (files.tact_behav)
-    for (const grammar::SeeEntry& see : files.tact_behav->sees)
-      if (see.candidate_body.value == "MAILx" || see.antagonist_body.value == "MAILx") {
-        sink.report(
-            "L4003", grammar::Location{datbox_path(files, "TACT_BEHAV.DAT"), see.candidate_body.span},
-            "contact with deformable (MAILx) bodies is not run by lmgc yet: this visibility row pairs " +
-                see.candidate_contactor.value + " and " + see.antagonist_contactor.value);
-        return false;
-      }
+    for (const grammar::SeeEntry& see : files.tact_behav->sees) {
+      if (see.candidate_body.value != "MAILx" && see.antagonist_body.value != "MAILx") continue;
+      PairFamily2D family;
+      if (contactor_pair_family_2d(grammar::see_name(see.candidate_contactor.value),
+                                   grammar::see_name(see.antagonist_contactor.value), family) &&
+          is_mesh_family(family))
+        continue;
+      sink.report(
+          "L4003", grammar::Location{datbox_path(files, "TACT_BEHAV.DAT"), see.candidate_body.span},
+          "contact with deformable (MAILx) bodies is run by lmgc for the pairs CLALp, CLJCx and PLALp "
+          "only; this visibility row pairs " +
+              see.candidate_contactor.value + " and " + see.antagonist_contactor.value);
+      return false;
+    }
   SceneInput2D input;
   fill_scene_input(files, input);
   if (files.bulk_behav->has_gravity)

@@ -6,7 +6,9 @@
 #include <cmath>
 #include <span>
 
+#include "solver/detection/mesh_detection_2d.hpp"
 #include "solver/model/large_array.hpp"
+#include "solver/nlgs/nlgs_coupled_2d.hpp"
 
 namespace lmgc::solver {
 
@@ -78,6 +80,12 @@ void select_prox_tactors(Scene2D& scene, RunState2D& state) {
     state.contacts_stored = false;
   }
   detect_contacts_2d(scene, state.visibility, coordinates, state.contacts);
+  if (scene.plan.any_mesh_family) {
+    std::vector<Eigen::VectorXd> nodes(scene.deformable.states.size());
+    for (std::size_t m = 0; m < nodes.size(); ++m)
+      nodes[m] = mesh_detection_coordinates(scene, m, state.theta, state.h);
+    detect_mesh_contacts_2d(scene, coordinates, nodes, state.contacts);
+  }
   state.law_states.clear();
   if (scene_keeps_law_state_2d(scene)) state.law_states.resize(state.contacts.size());
 }
@@ -177,9 +185,13 @@ void recup_rloc(RunState2D& state) {
 NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const bool first = !state.laws_initialized && !state.contacts.empty();
+  const LawStep law_step{state.h, state.time, state.step == 1, first};
+  // Contacts on meshes couple every contact of a mesh: the coupled NLGS (nlgs_coupled_2d.hpp).
   NlgsResult result =
-      solve_nlgs_2d(scene, scene.bodies, state.contacts, state.law_states,
-                    LawStep{state.h, state.time, state.step == 1, first}, options, state.scramble);
+      needs_coupled_nlgs_2d(state.contacts)
+          ? solve_nlgs_coupled_2d(scene, state.contacts, state.law_states, law_step, options, state.scramble)
+          : solve_nlgs_2d(scene, scene.bodies, state.contacts, state.law_states, law_step, options,
+                          state.scramble);
   if (!state.contacts.empty()) state.laws_initialized = true;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -42,6 +42,8 @@ bool postpro_kind_of(std::string_view name, PostproKind2D& kind) {
       {"NEW MECAx SETS", PostproKind2D::new_meca_sets},
       {"Dep EVOLUTION", PostproKind2D::dep_evolution},
       {"Fint EVOLUTION", PostproKind2D::fint_evolution},
+      {"DRY CONTACT NATURE", PostproKind2D::dry_contact_nature},
+      {"WET CONTACT NATURE", PostproKind2D::wet_contact_nature},
   };
   for (const Row& r : kRows)
     if (r.name == name) {
@@ -77,6 +79,12 @@ bool Postpro2D::open(const std::filesystem::path& dir, std::vector<PostproComman
         break;
       case PostproKind2D::violation_evolution:
         ok = create("VIOLATION_EVOLUTION.DAT", i, 0);
+        break;
+      case PostproKind2D::dry_contact_nature:
+        ok = create("DRY_CONTACT_NATURE.DAT", i, 0);
+        break;
+      case PostproKind2D::wet_contact_nature:
+        ok = create("WET_CONTACT_NATURE.DAT", i, 0);
         break;
       case PostproKind2D::kinetic_energy:
         ok = create("KINETIC_ENERGY.DAT", i, 0);
@@ -118,7 +126,10 @@ bool Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsR
                       std::string& error) {
   const RigidBodies2D& b = scene.bodies;
   const double t = state.time, h = state.h;
-  if (!state.contacts.empty()) last_norms_ = solver.norms;
+  if (!state.contacts.empty()) {
+    last_norms_ = solver.norms;
+    last_nature_ = {solver.hover, solver.stick, solver.slide};
+  }
 
   // Quantities shared by several commands, computed once per step when needed.
   double dissipated_step = 0.0;
@@ -146,7 +157,10 @@ bool Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsR
         double sum_begin = 0, sum_end = 0, max_begin = 0, max_end = 0;
         std::size_t n = 0;
         for (const Interaction2D& k : state.contacts) {
-          if (k.family == PairFamily2D::DKPLx || k.family == PairFamily2D::PTPT2) continue;
+          // mailx-2d-contact.md §10: nor PLALp.
+          if (k.family == PairFamily2D::DKPLx || k.family == PairFamily2D::PTPT2 ||
+              k.family == PairFamily2D::PLALp)
+            continue;
           const double gb = std::min(0.0, k.gap_begin), ge = std::min(0.0, k.gap_begin + h * k.u(1));
           sum_begin -= gb;
           sum_end -= ge;
@@ -156,6 +170,34 @@ bool Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsR
         }
         const double count = static_cast<double>(std::max<std::size_t>(n, 1));
         line(out, t, {sum_end / count, sum_begin / count, max_end, max_begin});
+        break;
+      }
+      case PostproKind2D::dry_contact_nature: {
+        // (ES15.8,5(1X,I8)) with three values: hovering, sticking, sliding (mailx-2d-contact.md §10).
+        std::string text;
+        grammar::append_fortran_es(text, t, 15, 8);
+        for (std::size_t n : last_nature_) text += fmt::format(" {:8d}", n);
+        out << text << '\n';
+        break;
+      }
+      case PostproKind2D::wet_contact_nature: {
+        // (ES15.8,3(1X,I16)): wet sticking, wet sliding, wet not touching, over the families LMGC90
+        // lists (DKDKx, DKJCx, DKKDx, DKPLx, PLPLx). LMGC90 2025 leaves the status unread and writes
+        // zeros (mailx-2d-contact.md §10); lmgc counts what the command names.
+        std::size_t stick = 0, slide = 0, open = 0;
+        for (const Interaction2D& k : state.contacts) {
+          if (k.family != PairFamily2D::DKDKx && k.family != PairFamily2D::DKJCx &&
+              k.family != PairFamily2D::DKKDx && k.family != PairFamily2D::DKPLx &&
+              k.family != PairFamily2D::PLPLx)
+            continue;
+          stick += k.status == ContactStatus::Wstck;
+          slide += k.status == ContactStatus::Wslbw || k.status == ContactStatus::Wslfw;
+          open += k.status == ContactStatus::Wnctc;
+        }
+        std::string text;
+        grammar::append_fortran_es(text, t, 15, 8);
+        text += fmt::format(" {:16d} {:16d} {:16d}\n", stick, slide, open);
+        out << text;
         break;
       }
       case PostproKind2D::dissipated_energy:

@@ -1,6 +1,7 @@
 #pragma once
 // POSTPRO time series of a rigid 2D run, in LMGC90's file names and line formats.
 // docs/lmgc90-facts/state-and-outputs.md §4; docs/lmgc90-facts/rigid-2d.md §8.
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -21,9 +22,11 @@ enum class PostproKind2D {
   torque_evolution,
   coordination_number,
   average_velocity_evolution,
-  new_meca_sets,   // NEW MECAx SETS: node sets of deformable bodies, for the two below
-  dep_evolution,   // Dep EVOLUTION: mean displacement and velocity of each set's nodes
-  fint_evolution,  // Fint EVOLUTION: summed reaction, internal, inertial, external forces, residue
+  new_meca_sets,       // NEW MECAx SETS: node sets of deformable bodies, for the two below
+  dep_evolution,       // Dep EVOLUTION: mean displacement and velocity of each set's nodes
+  fint_evolution,      // Fint EVOLUTION: summed reaction, internal, inertial, external forces, residue
+  dry_contact_nature,  // DRY CONTACT NATURE: hovering, sticking, sliding contacts of the last check
+  wet_contact_nature,  // WET CONTACT NATURE: wet sticking, sliding, not touching contacts
 };
 
 struct PostproCommand2D {
@@ -81,7 +84,9 @@ class Postpro2D {
   std::vector<NodeSet> stream_sets_;  // per stream: its set (Dep, Fint EVOLUTION), else empty
   double dissipated_ = 0.0;           // cumulated dissipated energy
   double external_work_ = 0.0;        // cumulated work of reactions and external forces
-  NlgsNorms last_norms_;              // kept when a step has no contact (as LMGC90 does)
+  NlgsNorms last_norms_;
+  std::array<std::size_t, 3> last_nature_{};  // hover, stick, slide: kept like the norms              // kept
+                                              // when a step has no contact (as LMGC90 does)
   PostproFlushClock flush_clock_;
 };
 

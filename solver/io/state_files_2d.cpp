@@ -79,9 +79,18 @@ grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& 
   for (std::size_t k = 0; k < scene.contactors.size(); ++k) serial[k] = ++per_type[scene.contactors[k].type];
   // Modules in the alphabetical order of LMGC90's writer; inside one, by candidate contactor
   // (PLPLx: in detection order).
-  constexpr PairFamily2D kWriteOrder[] = {PairFamily2D::DKDKx, PairFamily2D::DKJCx, PairFamily2D::DKKDx,
-                                          PairFamily2D::DKPLx, PairFamily2D::PLJCx, PairFamily2D::PLPLx,
+  constexpr PairFamily2D kWriteOrder[] = {PairFamily2D::CLALp, PairFamily2D::CLJCx, PairFamily2D::DKDKx,
+                                          PairFamily2D::DKJCx, PairFamily2D::DKKDx, PairFamily2D::DKPLx,
+                                          PairFamily2D::PLALp, PairFamily2D::PLJCx, PairFamily2D::PLPLx,
                                           PairFamily2D::PTPT2};
+  // Mesh contactors (CLxxx, ALpxx) by their MAILx body, rank in it and serial among their type.
+  const std::vector<MeshContactor>& mesh_tactors = scene.deformable.meshes.contactors;
+  const auto mesh_body = [&](std::int32_t t) {
+    return Integer{mesh_tactors[static_cast<std::size_t>(t)].mesh + 1};
+  };
+  const auto mesh_rank = [&](std::int32_t t) {
+    return Integer{mesh_tactors[static_cast<std::size_t>(t)].rank};
+  };
   for (PairFamily2D family : kWriteOrder) {
     std::vector<std::size_t> members;
     for (std::size_t k = 0; k < state.contacts.size(); ++k)
@@ -100,8 +109,12 @@ grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& 
       });
     for (std::size_t m : order) {
       const Interaction2D& c = state.contacts[members[m]];
-      const Contactor2D& cd = scene.contactors[static_cast<std::size_t>(c.candidate)];
-      const Contactor2D& an = scene.contactors[static_cast<std::size_t>(c.antagonist)];
+      // The rigid contactors of the pair (a mesh side reads mesh_tactors instead).
+      static const Contactor2D kNone;
+      const Contactor2D& cd =
+          side_on_mesh(family, 0) ? kNone : scene.contactors[static_cast<std::size_t>(c.candidate)];
+      const Contactor2D& an =
+          side_on_mesh(family, 1) ? kNone : scene.contactors[static_cast<std::size_t>(c.antagonist)];
       const std::string& law = scene.laws[static_cast<std::size_t>(c.law)].nickname;
       grammar::VlocRlocInteraction out;
       out.type = Word{std::string(kind->type)};
@@ -110,6 +123,32 @@ grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& 
       const std::string status(status_name(c.status));
       const Integer cd_body{cd.body + 1}, cd_rank{cd.rank}, an_body{an.body + 1}, an_rank{an.rank};
       switch (family) {
+        case PairFamily2D::CLALp:
+          // mailx-2d-contact.md §9: ALpxx rank in its body, the segment, the ALpxx's serial.
+          out.words = {Word{"MAILx"}, Word{"CLxxx"}, Word{law}, Word{"MAILx"}, Word{"ALpxx"}, Word{status}};
+          out.integers = {mesh_body(c.candidate),
+                          mesh_rank(c.candidate),
+                          mesh_body(c.antagonist),
+                          mesh_rank(c.antagonist),
+                          Integer{c.antagonist_segment},
+                          Integer{mesh_tactors[static_cast<std::size_t>(c.antagonist)].serial}};
+          break;
+        case PairFamily2D::CLJCx:
+          out.words = {Word{"MAILx"}, Word{"CLxxx"}, Word{law}, Word{"RBDY2"}, Word{an.type}, Word{status}};
+          out.integers = {mesh_body(c.candidate), mesh_rank(c.candidate), an_body, an_rank,
+                          Integer{serial[static_cast<std::size_t>(c.antagonist)]}};
+          break;
+        case PairFamily2D::PLALp:
+          out.words = {Word{"RBDY2"}, Word{cd.type}, Word{"CDVER"}, Word{law},
+                       Word{"MAILx"}, Word{"ALpxx"}, Word{status}};
+          out.integers = {cd_body,
+                          cd_rank,
+                          Integer{c.candidate_vertex},
+                          mesh_body(c.antagonist),
+                          mesh_rank(c.antagonist),
+                          Integer{c.antagonist_segment},
+                          Integer{iadj[m]}};
+          break;
         case PairFamily2D::PLJCx:
           out.words = {Word{"RBDY2"}, Word{cd.type}, Word{"CDVER"}, Word{law},
                        Word{"RBDY2"}, Word{an.type}, Word{status}};
@@ -188,6 +227,11 @@ WarmStart2D warm_start_2d(const grammar::VlocRlocFile& file, const Scene2D& scen
   std::map<std::pair<std::int64_t, std::int64_t>, std::int32_t> by_rank;
   for (std::size_t k = 0; k < scene.contactors.size(); ++k)
     by_rank[{scene.contactors[k].body + 1, scene.contactors[k].rank}] = static_cast<std::int32_t>(k);
+  // Mesh contactors by (MAILx body, rank in it).
+  std::map<std::pair<std::int64_t, std::int64_t>, std::int32_t> by_mesh_rank;
+  const std::vector<MeshContactor>& mesh_tactors = scene.deformable.meshes.contactors;
+  for (std::size_t k = 0; k < mesh_tactors.size(); ++k)
+    by_mesh_rank[{mesh_tactors[k].mesh + 1, mesh_tactors[k].rank}] = static_cast<std::int32_t>(k);
   std::vector<std::pair<Interaction2D, LawState2D>> previous;
   for (const auto& b : file.interactions) {
     PairFamily2D family;
@@ -206,15 +250,24 @@ WarmStart2D warm_start_2d(const grammar::VlocRlocFile& file, const Scene2D& scen
       family = PairFamily2D::PLPLx;
     else if (t == "PTPT2")
       family = PairFamily2D::PTPT2;
+    else if (t == "CLALp")
+      family = PairFamily2D::CLALp;
+    else if (t == "CLJCx")
+      family = PairFamily2D::CLJCx;
+    else if (t == "PLALp")
+      family = PairFamily2D::PLALp;
     else
       continue;
-    const bool vertex = family == PairFamily2D::PLJCx || family == PairFamily2D::PLPLx;
+    const bool vertex =
+        family == PairFamily2D::PLJCx || family == PairFamily2D::PLPLx || family == PairFamily2D::PLALp;
     const auto& n = b.integers;
     if (n.size() < 5 || b.vectors.empty() || b.vectors[0].values.size() < 2) continue;
     const std::size_t an_at = vertex ? 3 : 2;
-    auto cd = by_rank.find({n[0].value, n[1].value});
-    auto an = by_rank.find({n[an_at].value, n[an_at + 1].value});
-    if (cd == by_rank.end() || an == by_rank.end()) continue;
+    const auto& cd_ranks = side_on_mesh(family, 0) ? by_mesh_rank : by_rank;
+    const auto& an_ranks = side_on_mesh(family, 1) ? by_mesh_rank : by_rank;
+    auto cd = cd_ranks.find({n[0].value, n[1].value});
+    auto an = an_ranks.find({n[an_at].value, n[an_at + 1].value});
+    if (cd == cd_ranks.end() || an == an_ranks.end()) continue;
     Interaction2D c;
     c.family = family;
     c.candidate = cd->second;

@@ -157,7 +157,15 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
   }
   // LMGC90 looks rows up in its own order (duplicates merged, then sorted): first match wins.
   for (const grammar::SeeEntry& see : grammar::lmgc90_see_order(in.tact_behav->sees)) {
-    if (see.candidate_body.value != "RBDY2" || see.antagonist_body.value != "RBDY2") continue;
+    // Rows between RBDY2 bodies, and rows with a MAILx side whose pair has a mesh family
+    // (CLALp, CLJCx, PLALp); prepare_run_2d refuses the other MAILx rows.
+    const bool rigid = see.candidate_body.value == "RBDY2" && see.antagonist_body.value == "RBDY2";
+    PairFamily2D mesh_family;
+    if (!rigid &&
+        !(contactor_pair_family_2d(grammar::see_name(see.candidate_contactor.value),
+                                   grammar::see_name(see.antagonist_contactor.value), mesh_family) &&
+          is_mesh_family(mesh_family)))
+      continue;
     Visibility2D v;
     v.candidate_type = grammar::see_name(see.candidate_contactor.value);
     v.candidate_color = see.candidate_colour.value;

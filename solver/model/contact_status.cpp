@@ -100,4 +100,29 @@ ContactStatus cohesive_status(ContactStatus s) {
   }
 }
 
+StatusNature status_nature(ContactStatus status) {
+  switch (status) {
+    case ContactStatus::noctc:
+    case ContactStatus::Wnctc:
+    case ContactStatus::Mnctc:
+      return StatusNature::hover;
+    case ContactStatus::stick:
+    case ContactStatus::Wstck:
+    case ContactStatus::Mstck:
+    case ContactStatus::Cstck:
+      return StatusNature::stick;
+    case ContactStatus::slibw:
+    case ContactStatus::slifw:
+    case ContactStatus::Wslbw:
+    case ContactStatus::Wslfw:
+    case ContactStatus::Mslbw:
+    case ContactStatus::Mslfw:
+    case ContactStatus::Cslbw:
+    case ContactStatus::Cslfw:
+      return StatusNature::slide;
+    default:
+      return StatusNature::other;
+  }
+}
+
 }  // namespace lmgc::solver

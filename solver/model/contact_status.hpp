@@ -36,6 +36,11 @@ enum class ContactStatus : std::uint8_t {
 
 std::string_view status_name(ContactStatus status);
 
+// LMGC90's three natures of a contact status (mod_nlgs after-iteration check: Nhover, Nstick,
+// Nslide), whatever the law's family of statuses; `other` for nknow, vnish, the *nnow and RGR.
+enum class StatusNature : std::uint8_t { hover, stick, slide, other };
+StatusNature status_nature(ContactStatus status);
+
 // The same contact state under a wet (IQS_WET_DS_CLB) or cohesive (MAC_CZM) law, and back:
 // nknow/noctc/stick/slibw/slifw <-> W... / C...; other statuses are returned unchanged.
 ContactStatus wet_status(ContactStatus status);

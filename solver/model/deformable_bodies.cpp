@@ -88,7 +88,10 @@ bool build_deformable_bodies(const case_folder::CaseFiles& files, fem::Hypothesi
 }
 
 void increment_deformable(DeformableBodies& d) {
-  for (MeshBodyState& s : d.states) s.v = s.v_begin;
+  for (MeshBodyState& s : d.states) {
+    s.v = s.v_begin;
+    s.contact_impulse.resize(0);  // this step's contacts set it
+  }
 }
 
 void external_forces_deformable(DeformableBodies& d, const Eigen::Vector3d& gravity,
@@ -114,6 +117,8 @@ void free_velocity_deformable(DeformableBodies& d, const StepContext& step) {
       s.scheme.prepare(s.matrices, step.h, step.theta, d.rayleigh_alpha, d.rayleigh_beta, s.velocity_driven);
       s.prepared_h = step.h;
       s.prepared_theta = step.theta;
+      s.contact_compliance.resize(0, 0);  // of the previous K̂
+      s.compliance_row.clear();
     }
     std::vector<fem::DrivenVelocity> driven;
     for (const DrivenDof2D& dd : d.driven)
@@ -125,11 +130,48 @@ void free_velocity_deformable(DeformableBodies& d, const StepContext& step) {
 
 void dof_deformable(DeformableBodies& d, const StepContext& step) {
   for (MeshBodyState& s : d.states) {
-    s.v = s.v_free;
+    const bool contact = s.contact_impulse.size() == s.v_free.size() && !s.contact_impulse.isZero(0.0);
+    // A full solve, not the condensed compliance (mailx-2d-contact.md §8.6).
+    s.v = contact ? Eigen::VectorXd(s.v_free + s.scheme.response(s.contact_impulse)) : s.v_free;
     s.x = s.scheme.displacement(s.x_begin, s.v_begin, s.v);
     s.internal_force = s.scheme.internal_force(s.x, s.v);
     s.inertial_force = s.matrices.mass * (s.v - s.v_begin) / step.h;
     s.residue = s.internal_force + s.inertial_force - s.f_ext;
+    if (contact) s.residue -= s.contact_impulse / step.h;
+  }
+}
+
+void prepare_contact_compliance(DeformableBodies& d) {
+  for (std::size_t b = 0; b < d.states.size(); ++b) {
+    MeshBodyState& s = d.states[b];
+    if (!s.compliance_row.empty()) continue;
+    const std::size_t dofs = d.meshes.bodies[b].dofs();
+    const int dimension = d.meshes.bodies[b].dimension;
+    s.compliance_row.assign(dofs, -1);
+    // The nodes of the body's contactors (CLxxx_PushPreconNodes, ALpxx_PushPreconNodes), their dofs
+    // numbered in node order.
+    std::vector<std::uint8_t> listed(d.meshes.bodies[b].nodes(), 0);
+    for (const MeshContactor& c : d.meshes.contactors)
+      if (static_cast<std::size_t>(c.mesh) == b)
+        for (std::int32_t n : c.nodes) listed[static_cast<std::size_t>(n)] = 1;
+    std::vector<std::int32_t> dof_of_row;
+    for (std::size_t n = 0; n < listed.size(); ++n)
+      if (listed[n])
+        for (int c = 0; c < dimension; ++c) {
+          const std::size_t dof = n * static_cast<std::size_t>(dimension) + static_cast<std::size_t>(c);
+          s.compliance_row[dof] = static_cast<std::int32_t>(dof_of_row.size());
+          dof_of_row.push_back(static_cast<std::int32_t>(dof));
+        }
+    const auto rows = static_cast<Eigen::Index>(dof_of_row.size());
+    s.contact_compliance.resize(rows, rows);
+    Eigen::VectorXd unit = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(dofs));
+    for (Eigen::Index j = 0; j < rows; ++j) {
+      unit(dof_of_row[static_cast<std::size_t>(j)]) = 1.0;
+      const Eigen::VectorXd column = s.scheme.response(unit);
+      unit(dof_of_row[static_cast<std::size_t>(j)]) = 0.0;
+      for (Eigen::Index i = 0; i < rows; ++i)
+        s.contact_compliance(i, j) = column(dof_of_row[static_cast<std::size_t>(i)]);
+    }
   }
 }
 

@@ -19,8 +19,15 @@ namespace lmgc::solver {
 struct MeshBodyState {
   Eigen::VectorXd x, x_begin, v, v_begin, v_free, f_ext;
   // At the end of the step (LMGC90's ComputeField): F_int = K X + C V, F_inert = M(V − V_begin)/h,
-  // residue = F_int + F_inert − I_reac/h − F_ext (no contact impulse on meshes yet).
+  // residue = F_int + F_inert − I_reac/h − F_ext.
   Eigen::VectorXd internal_force, inertial_force, residue;
+  // I_reac: the contact impulses of the step on the nodes (Σ Hᵀ r), set by the contact solve;
+  // V = V_free + K̂⁻¹ I_reac (mailx-2d-contact.md §8.6). Empty when no contact touched the body.
+  Eigen::VectorXd contact_impulse;
+  // K̂⁻¹ condensed on the dofs of the body's contactor nodes (LMGC90's precon W, one solve per dof:
+  // mailx-2d-contact.md §8.5), built when a contact first needs it after K̂ was factorised.
+  Eigen::MatrixXd contact_compliance;
+  std::vector<std::int32_t> compliance_row;  // dof → row of contact_compliance, or −1
   fem::LinearBodyMatrices matrices;
   fem::LinearThetaScheme scheme;
   double prepared_h = 0.0, prepared_theta = 0.0;  // K̂ is factorised for these (0: not yet)
@@ -47,8 +54,11 @@ void increment_deformable(DeformableBodies& d);  // V ← V_begin
 void external_forces_deformable(DeformableBodies& d, const Eigen::Vector3d& gravity, const StepContext& step);
 // V_free from the residual at V_begin; K̂ refactorised when h or θ changed; driven velocities at t.
 void free_velocity_deformable(DeformableBodies& d, const StepContext& step);
-// Without contact on the meshes: V = V_free; X = X_begin + h((1 − θ)V_begin + θV).
+// V = V_free + K̂⁻¹ I_reac (V_free without contact); X = X_begin + h((1 − θ)V_begin + θV).
 void dof_deformable(DeformableBodies& d, const StepContext& step);
+// Builds each body's contact_compliance on the nodes of its contactors, where not built since K̂
+// was last factorised.
+void prepare_contact_compliance(DeformableBodies& d);
 void update_deformable(DeformableBodies& d);  // begin ← end
 
 // ½VᵀMV of every deformable body.

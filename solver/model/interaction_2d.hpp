@@ -10,9 +10,21 @@
 
 namespace lmgc::solver {
 
-// 2D interaction families, in the order LMGC90 sweeps and writes them (numerics.md §4 step 2:
-// DKDKx, DKKDx, DKJCx, DKPLx, PTPT2, PLPLx, PLJCx).
-enum class PairFamily2D : std::uint8_t { DKDKx, DKKDx, DKJCx, DKPLx, PTPT2, PLPLx, PLJCx };
+// 2D interaction families, in the order LMGC90 sweeps them (numerics.md §4 step 2: DKDKx, DKKDx,
+// DKJCx, DKPLx, PTPT2, PLPLx, PLJCx, CLALp, CLJCx, ..., PLALp). The first seven join rigid bodies
+// (solver/detection/detection_2d.hpp); the others have a side on a mesh (mesh_contact_2d.hpp).
+enum class PairFamily2D : std::uint8_t {
+  DKDKx,
+  DKKDx,
+  DKJCx,
+  DKPLx,
+  PTPT2,
+  PLPLx,
+  PLJCx,
+  CLALp,
+  CLJCx,
+  PLALp
+};
 
 // The family's name: its interaction module, as the contactor-pair table and Vloc_Rloc files name it.
 constexpr std::string_view pair_family_name(PairFamily2D family) {
@@ -31,11 +43,38 @@ constexpr std::string_view pair_family_name(PairFamily2D family) {
       return "PLPLx";
     case PairFamily2D::PLJCx:
       return "PLJCx";
+    case PairFamily2D::CLALp:
+      return "CLALp";
+    case PairFamily2D::CLJCx:
+      return "CLJCx";
+    case PairFamily2D::PLALp:
+      return "PLALp";
   }
   return "";
 }
-inline constexpr int kPairFamily2DCount = 7;
-static_assert(static_cast<int>(PairFamily2D::PLJCx) + 1 == kPairFamily2DCount);
+inline constexpr int kPairFamily2DCount = 10;
+static_assert(static_cast<int>(PairFamily2D::PLALp) + 1 == kPairFamily2DCount);
+// The families between rigid bodies: PairFamily2D's first seven.
+inline constexpr int kRigidPairFamily2DCount = 7;
+static_assert(static_cast<int>(PairFamily2D::PLJCx) + 1 == kRigidPairFamily2DCount);
+
+// Whether the candidate (side 0) or the antagonist (side 1) of a family is a mesh contactor
+// (CLxxx, ALpxx: Scene2D::mesh_contactors) rather than a rigid one (Scene2D::contactors).
+constexpr bool side_on_mesh(PairFamily2D family, int side) {
+  switch (family) {
+    case PairFamily2D::CLALp:
+      return true;
+    case PairFamily2D::CLJCx:
+      return side == 0;
+    case PairFamily2D::PLALp:
+      return side == 1;
+    default:
+      return false;
+  }
+}
+constexpr bool is_mesh_family(PairFamily2D family) {
+  return static_cast<int>(family) >= kRigidPairFamily2DCount;
+}
 
 // 64-byte aligned, 192 bytes in three cache lines: the per-step passes over a large list (detection,
 // warm start, NLGS set-up and end) move whole lines. The fields are grouped by the passes that read

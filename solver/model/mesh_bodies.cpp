@@ -14,6 +14,10 @@ const grammar::ModelOption* option(const grammar::Model& model, std::string_view
 
 }  // namespace
 
+bool runs_mesh_contactor_2d(std::string_view type) {
+  return type == "CLxxx" || type == "ALpxx";
+}
+
 bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypothesis, MeshBodies& out,
                        grammar::DiagnosticSink& sink) {
   out = {};
@@ -169,6 +173,47 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
     }
     mesh.lumped_mass = lumped;
     mesh.materials = materials;
+    // Contactors: ranked in the body's list, every type counted; serials per type over the case.
+    const auto mesh_index = static_cast<std::int32_t>(out.bodies.size());
+    std::int32_t rank = 0;
+    for (const grammar::Contactor& t : body.contactors) {
+      ++rank;
+      MeshContactor c;
+      c.type = t.type.value;
+      c.color = t.color.value;
+      c.mesh = mesh_index;
+      c.rank = rank;
+      if (!runs_mesh_contactor_2d(c.type) || dimension != 2) {
+        return refuse(
+            bodies_path, t.type.span,
+            "contactor " + c.type + " on a MAILx body is not run by lmgc yet (CLxxx and ALpxx in 2D are)");
+      }
+      c.shape = c.type == "CLxxx" ? MeshContactorShape::candidate_point : MeshContactorShape::polyline;
+      if (c.type == "CLxxx") c.apab = t.values.empty() ? 0.0 : t.values.front().value;
+      std::vector<const grammar::Integer*> nodes;
+      for (const grammar::Integer& n : t.nodes) nodes.push_back(&n);
+      for (const grammar::ContactorContinuation& more : t.continuations) {
+        // A '+ALpxx' segment starts where the previous one ended (LMGC90 stops on a "non continuous
+        // line"): its second node extends the polyline.
+        if (more.nodes.size() < 2) continue;
+        if (more.nodes[0].value != nodes.back()->value)
+          return refuse(bodies_path, more.nodes[0].span,
+                        "this segment does not start where the previous one ended (node " +
+                            std::to_string(nodes.back()->value) + ")");
+        nodes.push_back(&more.nodes[1]);
+      }
+      for (const grammar::Integer* n : nodes) {
+        if (n->value < 1 || static_cast<std::size_t>(n->value) > body.nodes.size())
+          return refuse(bodies_path, n->span,
+                        "node " + std::to_string(n->value) + " is not a node of this body");
+        c.nodes.push_back(static_cast<std::int32_t>(n->value - 1));
+      }
+      if (c.nodes.size() < 2)
+        return refuse(bodies_path, t.type.span, "contactor " + c.type + " needs two nodes");
+      c.serial = 1;
+      for (const MeshContactor& other : out.contactors) c.serial += other.type == c.type;
+      out.contactors.push_back(std::move(c));
+    }
     out.bodies.push_back(std::move(mesh));
     out.matlib.push_back(body_matlib);
   }

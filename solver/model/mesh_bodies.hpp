@@ -4,7 +4,9 @@
 // BULK_BEHAV.DAT (Umas, EYng, EPss), lumped or consistent mass from the model's 'mstrg'. What lmgc
 // does not run yet (large strain, another material, an anisotropic law, a thermal model, an
 // element outside the catalogue) is refused with L4003 at the model's line: never replaced by
-// another model. docs/lmgc90-facts/mailx-2d.md §1-§3.
+// another model; so is a contactor other than CLxxx and ALpxx. docs/lmgc90-facts/mailx-2d.md §1-§3.
+#include <cstdint>
+#include <string>
 #include <vector>
 
 #include "case_folder/case_files.hpp"
@@ -13,11 +15,32 @@
 
 namespace lmgc::solver {
 
+// A contactor of a mesh (BODIES.DAT '$tacty' of a MAILx body): a CLxxx candidate point on the edge
+// (a, b) at apab from a, or an ALpxx polyline of nodes whose consecutive pairs are its segments
+// ('+ALpxx' continuation lines add segments). docs/lmgc90-facts/mailx-2d-contact.md §1-§2.
+enum class MeshContactorShape : std::uint8_t { candidate_point, polyline };
+
+struct MeshContactor {
+  MeshContactorShape shape = MeshContactorShape::candidate_point;
+  std::string type;  // "CLxxx", "ALpxx"
+  std::string color;
+  std::int32_t mesh = 0;    // index into MeshBodies::bodies (the MAILx body's rank − 1)
+  std::int32_t rank = 1;    // rank within its body's $tacty list, every type counted (Vloc_Rloc 'numbr')
+  std::int32_t serial = 1;  // rank among the case's contactors of its type (LMGC90's module list)
+  std::vector<std::int32_t> nodes;  // 0-based; CLxxx: (a, b); ALpxx: the polyline's nodes
+  double apab = 0.0;                // CLxxx
+  std::size_t segments() const { return nodes.size() < 2 ? 0 : nodes.size() - 1; }
+};
+
 struct MeshBodies {
   std::vector<fem::MeshBody> bodies;
+  std::vector<MeshContactor> contactors;
   // The model options that change outputs, per body: MatLib's GPV layout ('isext MatL_').
   std::vector<bool> matlib;
 };
+
+// The MAILx contactors lmgc runs in 2D: CLxxx and ALpxx.
+bool runs_mesh_contactor_2d(std::string_view type);
 
 // `hypothesis`: SetDimension(2, mhyp)'s (plane strain 1, plane stress 2, axisymmetric 3), or 3D.
 bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypothesis, MeshBodies& out,

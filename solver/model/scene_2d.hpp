@@ -48,10 +48,16 @@ struct NamedLaw {
 
 // What this scene needs: only these families are detected and only these laws dispatched.
 struct ScenePlan2D {
-  std::array<bool, 7> families{};  // indexed by PairFamily2D
+  std::array<bool, kPairFamily2DCount> families{};  // indexed by PairFamily2D
   bool any_polygon = false;
+  bool any_mesh_family = false;  // a visibility row of CLALp, CLJCx or PLALp
   bool any_driven_force = false;
 };
+
+// The family of LMGC90's interaction module for a (candidate, antagonist) pair of '$seety' contactor
+// names, every 2D family (rigid and mesh); false when lmgc has none.
+bool contactor_pair_family_2d(std::string_view candidate_type, std::string_view antagonist_type,
+                              PairFamily2D& family);
 
 struct Scene2D {
   RigidBodies2D bodies;

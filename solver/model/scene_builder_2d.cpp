@@ -3,11 +3,24 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "grammar/tact_behav/contactor_pairs.hpp"
 #include "solver/bodies/lmgc_pi.hpp"
 #include "solver/bodies/rigid_2d_properties.hpp"
 #include "solver/detection/detection_2d.hpp"
 
 namespace lmgc::solver {
+
+bool contactor_pair_family_2d(std::string_view cd, std::string_view an, PairFamily2D& family) {
+  const grammar::ContactorPair* pair =
+      grammar::find_contactor_pair(grammar::see_name(cd), grammar::see_name(an));
+  if (!pair) return false;
+  for (int f = 0; f < kPairFamily2DCount; ++f)
+    if (pair_family_name(static_cast<PairFamily2D>(f)) == pair->interaction) {
+      family = static_cast<PairFamily2D>(f);
+      return true;
+    }
+  return false;
+}
 
 using Eigen::Vector2d;
 using Eigen::Vector3d;
@@ -160,10 +173,11 @@ void finalise_scene(Scene2D& scene) {
         break;
       }
     PairFamily2D family;
-    if (pair_family_of(v.candidate_type, v.antagonist_type, family) ||
-        pair_family_of(v.antagonist_type, v.candidate_type, family)) {
+    if (contactor_pair_family_2d(v.candidate_type, v.antagonist_type, family) ||
+        contactor_pair_family_2d(v.antagonist_type, v.candidate_type, family)) {
       v.family = family;
       scene.plan.families[static_cast<std::size_t>(family)] = true;
+      scene.plan.any_mesh_family |= is_mesh_family(family);
     }
   }
   for (const Contactor2D& c : scene.contactors)

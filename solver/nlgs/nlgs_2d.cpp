@@ -748,6 +748,7 @@ struct Nlgs2D {
     double residual2 = 0;
     std::size_t vanishing = 0;
     result.active = 0;
+    result.hover = result.stick = result.slide = 0;
     const bool normal_only = options.norm == NlgsNorm::quad_normal;
     for (std::size_t a = 0; a < count; ++a) {
       if (prefetch_slots) {
@@ -765,8 +766,10 @@ struct Nlgs2D {
       if (!c.inactive()) {
         ContactStatus status;
         local_solve(c, terms, uft, ufn, r2t, r2n, status);
+        result.count_nature(status_nature(status));
       } else {
         r1t = r1n = 0.0;
+        ++result.hover;
       }
       const Vector2d u2 = w_times(c, r2t, r2n) + uf;
       const double u2t = u2.x(), u2n = u2.y();

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "run/nlgs_options.hpp"
+#include "solver/model/contact_status.hpp"
 
 namespace lmgc::solver {
 
@@ -39,7 +40,15 @@ struct NlgsResult {
   double residual_relative = 0.0;
   double free_velocity_norm = 0.0;
   std::size_t active = 0;  // interactions with a non-zero reaction
-  double seconds = 0.0;    // wall time of the solve (set by the solve_contacts stage)
+  // The statuses of the last check's local solves by nature (LMGC90's Nhover, Nstick, Nslide: DRY
+  // CONTACT NATURE); a contact forecast inactive counts as hovering.
+  std::size_t hover = 0, stick = 0, slide = 0;
+  void count_nature(StatusNature nature) {
+    hover += nature == StatusNature::hover;
+    stick += nature == StatusNature::stick;
+    slide += nature == StatusNature::slide;
+  }
+  double seconds = 0.0;  // wall time of the solve (set by the solve_contacts stage)
   // Wall time of the blocks of sweeps alone (quick scramble included; set-up, checks and the post
   // pass excluded): what LMGC90's "[NLGS2] iter" / "[NLGS3] iter" timer measures (wrap_nlgs.f90),
   // so that sweep rates compare like with like.

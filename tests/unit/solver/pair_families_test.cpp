@@ -28,13 +28,20 @@ TEST(PairFamilies, Every2DFamilyIsAPairOfTheTable) {
     ASSERT_NE(pair, nullptr) << pair_family_name(family);
     EXPECT_EQ(pair->dimension, 2);
     PairFamily2D back;
-    ASSERT_TRUE(pair_family_of(std::string(pair->candidate), std::string(pair->antagonist), back));
+    ASSERT_TRUE(contactor_pair_family_2d(pair->candidate, pair->antagonist, back));
     EXPECT_EQ(back, family);
+    // The rigid detection knows the families between rigid bodies only.
+    EXPECT_EQ(pair_family_of(std::string(pair->candidate), std::string(pair->antagonist), back),
+              !is_mesh_family(family));
+    EXPECT_EQ(is_mesh_family(family), side_on_mesh(family, 0) || side_on_mesh(family, 1));
   }
   PairFamily2D family;
   EXPECT_TRUE(pair_family_of("DISKb", "JONCx", family));  // an alias of DISKx
   EXPECT_EQ(family, PairFamily2D::DKJCx);
-  EXPECT_FALSE(pair_family_of("CLxxx", "JONCx", family));  // LMGC90's, not the rigid solver's
+  EXPECT_FALSE(pair_family_of("CLxxx", "JONCx", family));  // a mesh family: mesh_detection_2d.hpp
+  EXPECT_TRUE(contactor_pair_family_2d("CLxxx", "JONCx", family));
+  EXPECT_EQ(family, PairFamily2D::CLJCx);
+  EXPECT_FALSE(contactor_pair_family_2d("DISKx", "ALpxx", family));  // DKALp: not run yet
 }
 
 TEST(PairFamilies, Every3DFamilyIsAPairOfTheTable) {

@@ -16,6 +16,7 @@
 #include "solver/laws/contact_law.hpp"
 #include "solver/model/build_scene_2d.hpp"
 #include "solver/model/build_scene_3d.hpp"
+#include "solver/model/mesh_bodies.hpp"
 #include "tests/support/run_tool.hpp"
 #include "tests/support/shared_data.hpp"
 
@@ -32,7 +33,8 @@ std::string expected_tables() {
     std::string bodies, runs;
     if (k.bodies & grammar::kOnRbdy2) bodies += "RBDY2 ", runs = yes_no(runs_contactor_2d(k.keyword));
     if (k.bodies & grammar::kOnRbdy3) bodies += "RBDY3 ", runs = yes_no(runs_contactor_3d(k.keyword));
-    if (k.bodies & grammar::kOnMailx) bodies += "MAILx ", runs = "not yet (MAILx)";
+    if (k.bodies & grammar::kOnMailx)
+      bodies += "MAILx ", runs = runs_mesh_contactor_2d(k.keyword) ? "yes (2D)" : "not yet (MAILx)";
     if (!k.guide_only.empty()) runs = "removed from LMGC90 (error)";
     out +=
         "| `" + std::string(k.keyword) + "` | " + bodies.substr(0, bodies.size() - 1) + " | " + runs + " |\n";
@@ -62,6 +64,8 @@ std::string expected_summary() {
     if (!k.guide_only.empty()) continue;
     if (k.bodies & grammar::kOnRbdy2) ++contactors_all[0], contactors[0] += runs_contactor_2d(k.keyword);
     if (k.bodies & grammar::kOnRbdy3) ++contactors_all[1], contactors[1] += runs_contactor_3d(k.keyword);
+    if ((k.bodies & grammar::kOnMailx) && k.dimension == 2)
+      ++contactors_all[0], contactors[0] += runs_mesh_contactor_2d(k.keyword);
   }
   int pairs[2] = {0, 0}, pairs_all[2] = {0, 0};
   for (const grammar::ContactorPair& p : grammar::contactor_pairs()) {
@@ -69,7 +73,7 @@ std::string expected_summary() {
     ++pairs_all[d];
     PairFamily2D family_2d;
     PairFamily3D family_3d;
-    pairs[d] += d == 0 ? pair_family_of(std::string(p.candidate), std::string(p.antagonist), family_2d)
+    pairs[d] += d == 0 ? contactor_pair_family_2d(p.candidate, p.antagonist, family_2d)
                        : pair_family_3d(std::string(p.candidate), std::string(p.antagonist), family_3d);
   }
   int laws[2] = {0, 0}, laws_all = 0;
@@ -89,7 +93,7 @@ std::string expected_summary() {
     if (k.available_in(3)) ++postpro_all[1], postpro[1] += known && Postpro3D::provides(kind);
   }
   const auto of = [](int n, int all) { return std::to_string(n) + " of " + std::to_string(all); };
-  std::string out = "| lmgc-solve runs | rigid 2D (RBDY2) | rigid 3D (RBDY3) |\n| --- | --- | --- |\n";
+  std::string out = "| lmgc-solve runs | 2D (RBDY2, MAILx) | rigid 3D (RBDY3) |\n| --- | --- | --- |\n";
   out += "| contactors | " + of(contactors[0], contactors_all[0]) + " | " +
          of(contactors[1], contactors_all[1]) + " |\n";
   out += "| contactor pairs | " + of(pairs[0], pairs_all[0]) + " | " + of(pairs[1], pairs_all[1]) + " |\n";
