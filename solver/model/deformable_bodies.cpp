@@ -2,34 +2,43 @@
 
 namespace lmgc::solver {
 
+bool initialise_mesh_states(DeformableBodies& d, std::string& error, std::size_t& failed_body,
+                            std::size_t& failed_element) {
+  d.states.assign(d.meshes.bodies.size(), MeshBodyState{});
+  for (std::size_t b = 0; b < d.states.size(); ++b) {
+    const fem::MeshBody& mesh = d.meshes.bodies[b];
+    MeshBodyState& s = d.states[b];
+    if (!fem::assemble(mesh, s.matrices, error, &failed_element)) {
+      failed_body = b;
+      return false;
+    }
+    const auto n = static_cast<Eigen::Index>(mesh.dofs());
+    s.x = s.x_begin = s.v = s.v_begin = s.v_free = s.f_ext = Eigen::VectorXd::Zero(n);
+    s.internal_force = s.inertial_force = s.residue = Eigen::VectorXd::Zero(n);
+  }
+  return true;
+}
+
 bool build_deformable_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypothesis,
                              DeformableBodies& out, grammar::DiagnosticSink& sink) {
   out = {};
   if (!build_mesh_bodies(files, hypothesis, out.meshes, sink)) return false;
   const std::size_t count = out.meshes.bodies.size();
   if (count == 0) return true;
-  out.states.resize(count);
-  for (std::size_t b = 0; b < count; ++b) {
-    const fem::MeshBody& mesh = out.meshes.bodies[b];
-    MeshBodyState& s = out.states[b];
-    std::string error;
-    std::size_t failed = 0;
-    if (!fem::assemble(mesh, s.matrices, error, &failed)) {
-      // An inverted or degenerate element (a Gauss point where det J ≤ 0): LMGC90 would integrate it
-      // with a negative weight (mailx-2d.md §1.4); lmgc refuses the case, at the element's line.
-      const grammar::Body* body = nullptr;
-      std::size_t rank = 0;
-      for (const grammar::Body& candidate : files.bodies->bodies)
-        if (candidate.type == grammar::BodyType::mailx && rank++ == b) body = &candidate;
-      const grammar::SourceSpan span =
-          body && failed < body->elements.size() ? body->elements[failed].type.span : grammar::SourceSpan{};
-      sink.report("L3011", grammar::Location{(files.case_dir / "DATBOX" / "BODIES.DAT").string(), span},
-                  "MAILx body " + std::to_string(b + 1) + ": " + error);
-      return false;
-    }
-    const auto n = static_cast<Eigen::Index>(mesh.dofs());
-    s.x = s.x_begin = s.v = s.v_begin = s.v_free = s.f_ext = Eigen::VectorXd::Zero(n);
-    s.internal_force = s.inertial_force = s.residue = Eigen::VectorXd::Zero(n);
+  std::string error;
+  std::size_t b = 0, failed = 0;
+  if (!initialise_mesh_states(out, error, b, failed)) {
+    // An inverted or degenerate element (a Gauss point where det J ≤ 0): LMGC90 would integrate it
+    // with a negative weight (mailx-2d.md §1.4); lmgc refuses the case, at the element's line.
+    const grammar::Body* body = nullptr;
+    std::size_t rank = 0;
+    for (const grammar::Body& candidate : files.bodies->bodies)
+      if (candidate.type == grammar::BodyType::mailx && rank++ == b) body = &candidate;
+    const grammar::SourceSpan span =
+        body && failed < body->elements.size() ? body->elements[failed].type.span : grammar::SourceSpan{};
+    sink.report("L3011", grammar::Location{(files.case_dir / "DATBOX" / "BODIES.DAT").string(), span},
+                "MAILx body " + std::to_string(b + 1) + ": " + error);
+    return false;
   }
   // Driven dofs of the nodes: a MAILx block's rank is the body's, its node numbers the body's nodes.
   if (files.drv_dof)

@@ -48,6 +48,12 @@ struct DeformableBodies {
 bool build_deformable_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypothesis,
                              DeformableBodies& out, grammar::DiagnosticSink& sink);
 
+// Assembles each mesh's matrices and sets its state to rest at the reference configuration. False,
+// with the body and element (0-based) and what is wrong, when an element has a Gauss point whose
+// Jacobian is not positive.
+bool initialise_mesh_states(DeformableBodies& d, std::string& error, std::size_t& failed_body,
+                            std::size_t& failed_element);
+
 // The stages (each over every deformable body).
 void increment_deformable(DeformableBodies& d);  // V ← V_begin
 // F_ext = M g + driven forces θ-averaged over the step.

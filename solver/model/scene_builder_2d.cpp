@@ -144,8 +144,52 @@ void SceneBuilder2D::set_velocity(int body, const Vector3d& velocity) {
   scene_.bodies.velocity[static_cast<std::size_t>(body)] = velocity;
 }
 
+int SceneBuilder2D::add_mesh(const fem::MeshBody& mesh) {
+  scene_.deformable.meshes.bodies.push_back(mesh);
+  scene_.deformable.meshes.matlib.push_back(false);
+  return static_cast<int>(scene_.deformable.meshes.bodies.size()) - 1;
+}
+
+namespace {
+void add_mesh_contactor(Scene2D& scene, MeshContactor c) {
+  std::vector<MeshContactor>& all = scene.deformable.meshes.contactors;
+  c.rank = 1;
+  c.serial = 1;
+  for (const MeshContactor& other : all) {
+    c.rank += other.mesh == c.mesh;
+    c.serial += other.type == c.type;
+  }
+  all.push_back(std::move(c));
+}
+}  // namespace
+
+void SceneBuilder2D::add_candidate_point(int mesh, int a, int b, double apab, const std::string& color) {
+  MeshContactor c;
+  c.shape = MeshContactorShape::candidate_point;
+  c.type = "CLxxx";
+  c.color = color;
+  c.mesh = mesh;
+  c.nodes = {a, b};
+  c.apab = apab;
+  add_mesh_contactor(scene_, std::move(c));
+}
+
+void SceneBuilder2D::add_polyline(int mesh, const std::vector<int>& nodes, const std::string& color) {
+  MeshContactor c;
+  c.shape = MeshContactorShape::polyline;
+  c.type = "ALpxx";
+  c.color = color;
+  c.mesh = mesh;
+  c.nodes.assign(nodes.begin(), nodes.end());
+  add_mesh_contactor(scene_, std::move(c));
+}
+
 Scene2D SceneBuilder2D::build() {
   finalise_scene(scene_);
+  std::string error;
+  std::size_t body = 0, element = 0;
+  if (!initialise_mesh_states(scene_.deformable, error, body, element))
+    throw std::invalid_argument("mesh " + std::to_string(body) + ": " + error);
   return scene_;
 }
 

@@ -24,8 +24,17 @@ class SceneBuilder2D {
   void fix(int body);
   void set_velocity(int body, const Eigen::Vector3d& velocity);
   void set_gravity(const Eigen::Vector2d& g) { scene_.gravity = g; }
+  // A linear elastic mesh (MAILx) at rest in its reference configuration; returns its index. Its
+  // contactors: a CLxxx point on the edge (a, b) at apab from a, an ALpxx polyline (nodes 0-based,
+  // described clockwise around the body so that its normals point out).
+  int add_mesh(const fem::MeshBody& mesh);
+  void add_candidate_point(int mesh, int a, int b, double apab, const std::string& color = "MESHx");
+  void add_polyline(int mesh, const std::vector<int>& nodes, const std::string& color = "MESHx");
 
-  // Finishes the scene (inverse masses, visibility rows, plan) and returns it.
+  const Scene2D& scene() const { return scene_; }  // as built so far
+
+  // Finishes the scene (inverse masses, visibility rows, plan, the meshes' matrices) and returns it;
+  // throws std::invalid_argument for a mesh with an inverted element.
   Scene2D build();
 
  private:
