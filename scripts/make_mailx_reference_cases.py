@@ -7,10 +7,14 @@ in <case>/lmgc90_reference/ (DOF.LAST, GPV.LAST): the files the tests compare lm
   in one quasi-static step (θ = 1, h = 1): the patch test through the whole run.
 - mailx_cantilever_t3: a T3xxx cantilever (plane stress, lumped mass, Rayleigh damping) clamped at
   one end and falling under gravity for 200 steps: the θ-scheme against LMGC90's.
+- mailx_hertz_cylinder: an elastic half-cylinder (T3xxx, plane strain) pressed by a line load on a
+  rigid JONCx, frictionless CLJCx contacts: the contact half-width and the peak pressure against
+  Hertz's (compared with the closed form, not run by LMGC90 here).
 
 Usage: scripts/make_mailx_reference_cases.py [--lmgc90 /work/lmgc90/build]
 """
 import argparse
+import math
 import os
 import shutil
 import subprocess
@@ -102,15 +106,112 @@ def cantilever_t3(folder):
                  2, 1e-3, 0.5, 200, 50, extra="chipy.mecaMAILx_ComputeRayleighDamping(0.5, 1e-4)\n", postpro=True))
 
 
+HERTZ = {"radius": 0.1, "young": 1e8, "poisson": 0.3, "load": 86300.0}
+
+
+def hertz_cylinder(folder):
+    """The lower half of a cylinder of radius R centred at the origin (flat face y = 0 on top), meshed
+    in polar rings of T3xxx, angular nodes graded towards the bottom and radial rings towards the rim;
+    a CLxxx point at the middle of each rim edge within 0.3 rad of the bottom, a JONCx whose top is
+    y = -R, the load P spread on the flat face as nodal forces ramped over 10 steps."""
+    R, P = HERTZ["radius"], HERTZ["load"]
+    n_angle, n_ring = 120, 40
+    # phi(s) = 3π/2 + π/2 (α s + (1 - α) s³), s in [-1, 1]: fine at the bottom (s = 0).
+    alpha = 0.15
+    angles = [1.5 * math.pi + 0.5 * math.pi * (alpha * s + (1 - alpha) * s ** 3)
+              for s in (-1 + 2 * j / n_angle for j in range(n_angle + 1))]
+    radii = [R * (1 - (1 - i / n_ring) ** 1.5) for i in range(n_ring + 1)]
+    nodes = [(0.0, 0.0, False)]
+    index = {}
+    for i in range(1, n_ring + 1):
+        for j, phi in enumerate(angles):
+            x, y = radii[i] * math.cos(phi), radii[i] * math.sin(phi)
+            if j in (0, n_angle):
+                y = 0.0  # the flat face exactly
+            index[(i, j)] = len(nodes) + 1
+            nodes.append((x, y, False))
+    elements = [[1, index[(1, j)], index[(1, j + 1)]] for j in range(n_angle)]
+    for i in range(1, n_ring):
+        for j in range(n_angle):
+            a, b, c, d = index[(i, j)], index[(i + 1, j)], index[(i + 1, j + 1)], index[(i, j + 1)]
+            elements += [[a, b, c], [a, c, d]]
+    bodies = w.mailx_bodies(nodes, elements, "T3xxx", "M2DT3", "elast")[:-len("$$$$$$\n")] + "$tacty\n"
+    # Rim edges described clockwise (phi decreasing): the CLxxx normal points out.
+    k = 0
+    for j in range(n_angle):
+        if abs(0.5 * (angles[j] + angles[j + 1]) - 1.5 * math.pi) > 0.3:
+            continue
+        k += 1
+        bodies += (f" CLxxx{k:7d}  color  CYLIN  noda={index[(n_ring, j + 1)]:5d}  nodb={index[(n_ring, j)]:5d}"
+                   f"  apab={w.real(0.5)}\n")
+    bodies += "$$$$$$\n" + w.rbdy2(1, "tdurx", 0.0, -R - 0.05, 0.0, w.joncx(0.5, 0.05))
+    # The load: a uniform traction P / 2R on the flat face, as nodal forces (tributary lengths).
+    face = sorted([(nodes[n - 1][0], n) for n in [1] + [index[(i, j)] for i in range(1, n_ring + 1) for j in (0, n_angle)]])
+    forces = {}
+    for m, (x, n) in enumerate(face):
+        left = face[m - 1][0] if m > 0 else x
+        right = face[m + 1][0] if m + 1 < len(face) else x
+        forces[n] = -P / (2 * R) * 0.5 * (right - left)
+    ramp = 1.0 / (10 * 0.005)
+    driven = "$bdyty\n MAILx      1\n$model\n MECAx\n"
+    for n in sorted(forces):
+        driven += (f"$nodty\n NO2xx{n:7d}\n{w.TEMPLATE}\n force{2:7d} {w.real(forces[n])} {w.real(0.0)} {w.real(0.0)}"
+                   f" {w.real(0.0)} {w.real(0.0)} {w.real(ramp)}\n")
+    driven += "$$$$$$\n" + w.fixed([1])
+    bulk = w.elas_bulk("elast", 1000.0, HERTZ["young"], HERTZ["poisson"]) + (
+        f"\n$behav  lawty\n tdurx  RIGID                           Umas={w.real(1000.0)}\n")
+    tact = (f"$behav  lawty\n hertz  IQS_CLB                         fric={w.real(0.0)}\n\n"
+            "$seety\n cdbdy  cdtac  cdcol  behav  anbdy  antac  ancol       alert\n"
+            f" MAILx  CLxxx  CYLIN  hertz  RBDY2  JONCx  WALLx      {w.real(0.01)}\n")
+    loop = """for k in range(nb_steps):
+  chipy.IncrementStep()
+  chipy.ComputeFext()
+  chipy.ComputeBulk()
+  chipy.AssembleMechanicalRHS()
+  chipy.AssembleMechanicalLHS()
+  chipy.ComputeFreeVelocity()
+  chipy.SelectProxTactors()
+  chipy.RecupRloc()
+  chipy.ExSolver('Stored_Delassus_Loops         ', 'Quad ', 1e-8, 1.0, 50, 400)
+  chipy.UpdateTactBehav()
+  chipy.StockRloc()
+  chipy.ComputeDof()
+  chipy.UpdateStep()
+chipy.WriteLastDof()
+chipy.WriteLastVlocRloc()
+chipy.Finalize()
+"""
+    text = f"""# Hertz: an elastic half-cylinder pressed on a rigid plane by a line load, frictionless.
+# Written by scripts/make_mailx_reference_cases.py; run by lmgc-run (and by LMGC90 unchanged).
+from pylmgc90 import chipy
+
+chipy.Initialize()
+chipy.checkDirectories()
+chipy.utilities_DisableLogMes()
+chipy.SetDimension(2, 1)
+chipy.TimeEvolution_SetTimeStep(0.005)
+chipy.Integrator_InitTheta(1.0)
+chipy.ReadDatbox(deformable=True)
+chipy.ComputeMass()
+chipy.ComputeBulk()
+nb_steps = 40
+""" + loop
+    vloc_rloc = w.STATE_HEADER.replace("! DOF", "! Vloc_Rloc")
+    write(folder, {"BODIES.DAT": bodies, "MODELS.DAT": w.mailx_model("M2DT3", "T3xxx", lumped=True),
+                   "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": driven, "TACT_BEHAV.DAT": tact,
+                   "Vloc_Rloc.INI": vloc_rloc}, text)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--lmgc90", default=None, help="LMGC90's build folder (pylmgc90 inside)")
     args = parser.parse_args()
-    cases = {"mailx_patch_q4": patch_q4, "mailx_cantilever_t3": cantilever_t3}
+    cases = {"mailx_patch_q4": patch_q4, "mailx_cantilever_t3": cantilever_t3,
+             "mailx_hertz_cylinder": hertz_cylinder}
     for name, make in cases.items():
         folder = os.path.join(ROOT, "reference_cases", name)
         make(folder)
-        if not args.lmgc90:
+        if not args.lmgc90 or name == "mailx_hertz_cylinder":
             continue
         work = os.path.join("/tmp", "lmgc90_" + name)
         shutil.rmtree(work, ignore_errors=True)

@@ -1,0 +1,31 @@
+# Hertz: an elastic half-cylinder pressed on a rigid plane by a line load, frictionless.
+# Written by scripts/make_mailx_reference_cases.py; run by lmgc-run (and by LMGC90 unchanged).
+from pylmgc90 import chipy
+
+chipy.Initialize()
+chipy.checkDirectories()
+chipy.utilities_DisableLogMes()
+chipy.SetDimension(2, 1)
+chipy.TimeEvolution_SetTimeStep(0.005)
+chipy.Integrator_InitTheta(1.0)
+chipy.ReadDatbox(deformable=True)
+chipy.ComputeMass()
+chipy.ComputeBulk()
+nb_steps = 40
+for k in range(nb_steps):
+  chipy.IncrementStep()
+  chipy.ComputeFext()
+  chipy.ComputeBulk()
+  chipy.AssembleMechanicalRHS()
+  chipy.AssembleMechanicalLHS()
+  chipy.ComputeFreeVelocity()
+  chipy.SelectProxTactors()
+  chipy.RecupRloc()
+  chipy.ExSolver('Stored_Delassus_Loops         ', 'Quad ', 1e-8, 1.0, 50, 400)
+  chipy.UpdateTactBehav()
+  chipy.StockRloc()
+  chipy.ComputeDof()
+  chipy.UpdateStep()
+chipy.WriteLastDof()
+chipy.WriteLastVlocRloc()
+chipy.Finalize()
