@@ -102,11 +102,6 @@ bool first_internal_is_length(const ContactLaw& law) {
          kind->internals_2d.slots[0].text.starts_with("taille_ele");
 }
 
-struct Adjacent {
-  std::uint32_t contact;
-  Matrix2d W;  // velocity of this contact per unit reaction of `contact`
-};
-
 struct CoupledNlgs2D {
   CoupledNlgs2D(Scene2D& scene_, LargeArray<Interaction2D>& contacts_, std::span<LawState2D> law_states_,
                 const LawStep& step_, const NlgsOptions& options_, QuickScramble& scramble_)
@@ -181,9 +176,14 @@ struct CoupledNlgs2D {
                                : on_body_rigid[static_cast<std::size_t>(side.body)];
         if (list.empty() || list.back().first != a) list.emplace_back(static_cast<std::uint32_t>(a), s);
       }
-    adjacent.assign(count, {});
+    // In compressed rows: contact a's coupled contacts adjacent_contact[adjacent_start[a] ..
+    // adjacent_start[a + 1]) and their blocks, side by side in two arrays that a sweep reads in order.
+    adjacent_start.assign(count + 1, 0);
+    adjacent_contact.clear();
+    adjacent_block.clear();
     std::vector<std::int64_t> seen(count, -1);
     for (std::size_t a = 0; a < count; ++a) {
+      adjacent_start[a] = adjacent_contact.size();
       for (int s = 0; s < 2; ++s) {
         const Side& side = sides[a][static_cast<std::size_t>(s)];
         if (!side.moves) continue;
@@ -192,10 +192,14 @@ struct CoupledNlgs2D {
         for (const auto& [j, unused] : list) {
           if (j == a || seen[j] == static_cast<std::int64_t>(a)) continue;
           seen[j] = static_cast<std::int64_t>(a);
-          adjacent[a].push_back({j, block(a, j)});
+          adjacent_contact.push_back(j);
+          adjacent_block.push_back(block(a, j));
         }
       }
     }
+    adjacent_start[count] = adjacent_contact.size();
+    reaction.resize(count);
+    for (std::size_t a = 0; a < count; ++a) reaction[a] = problems[a].r;
     result.free_velocity_norm = std::sqrt(q2);
     if (options.quick_scramble) scramble.prepare(count);
   }
@@ -239,7 +243,8 @@ struct CoupledNlgs2D {
   // v_free_a + Σ_j≠a W_aj r_j: what contact a's law solves for.
   Vector2d others(std::size_t a) const {
     Vector2d u = free_velocity[a];
-    for (const Adjacent& j : adjacent[a]) u += j.W * problems[j.contact].r;
+    for (std::size_t k = adjacent_start[a]; k < adjacent_start[a + 1]; ++k)
+      u += adjacent_block[k] * reaction[adjacent_contact[k]];
     return u;
   }
 
@@ -320,6 +325,7 @@ struct CoupledNlgs2D {
       if (std::fabs(r(0)) < 1e-24) r(0) = 0.0;
       if (std::fabs(r(1)) < 1e-24) r(1) = 0.0;
       p.r = r;
+      reaction[a] = r;
       if (post) final_status[a] = status;
       if (!post) schedule[a].restart_if(r(0) != 0.0 || r(1) != 0.0);
     }
@@ -454,7 +460,10 @@ struct CoupledNlgs2D {
   std::vector<LocalProblem2D> problems;
   std::vector<std::array<Side, 2>> sides;
   std::vector<Vector2d> free_velocity;
-  std::vector<std::vector<Adjacent>> adjacent;
+  std::vector<std::size_t> adjacent_start;
+  std::vector<std::uint32_t> adjacent_contact;
+  std::vector<Matrix2d> adjacent_block;  // velocity of the row's contact per unit reaction of the other
+  std::vector<Vector2d> reaction;        // the contacts' reactions, as problems[a].r, compact for the sweeps
   std::vector<ContactStatus> final_status;
   std::vector<OpenContactSchedule> schedule;
   std::vector<std::uint32_t> order;
