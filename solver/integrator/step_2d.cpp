@@ -186,9 +186,10 @@ NlgsResult solve_contacts(Scene2D& scene, RunState2D& state, const NlgsOptions& 
   const auto start = std::chrono::steady_clock::now();
   const bool first = !state.laws_initialized && !state.contacts.empty();
   const LawStep law_step{state.h, state.time, state.step == 1, first};
-  // Contacts on meshes couple every contact of a mesh: the coupled NLGS (nlgs_coupled_2d.hpp).
+  // Contacts on meshes couple every contact of a mesh: a scene that has them (a visibility row of a
+  // mesh family) is solved by the coupled NLGS (nlgs_coupled_2d.hpp), its rigid contacts with them.
   NlgsResult result =
-      needs_coupled_nlgs_2d(state.contacts)
+      scene.plan.any_mesh_family
           ? solve_nlgs_coupled_2d(scene, state.contacts, state.law_states, law_step, options, state.scramble)
           : solve_nlgs_2d(scene, scene.bodies, state.contacts, state.law_states, law_step, options,
                           state.scramble);

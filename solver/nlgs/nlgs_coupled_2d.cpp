@@ -471,12 +471,6 @@ struct CoupledNlgs2D {
 
 }  // namespace
 
-bool needs_coupled_nlgs_2d(std::span<const Interaction2D> contacts) {
-  for (const Interaction2D& c : contacts)
-    if (is_mesh_family(c.family)) return true;
-  return false;
-}
-
 NlgsResult solve_nlgs_coupled_2d(Scene2D& scene, LargeArray<Interaction2D>& contacts,
                                  std::span<LawState2D> law_states, const LawStep& step,
                                  const NlgsOptions& options, QuickScramble& scramble) {

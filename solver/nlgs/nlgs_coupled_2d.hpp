@@ -27,7 +27,4 @@ NlgsResult solve_nlgs_coupled_2d(Scene2D& scene, LargeArray<Interaction2D>& cont
                                  std::span<LawState2D> law_states, const LawStep& step,
                                  const NlgsOptions& options, QuickScramble& scramble);
 
-// Whether the interactions need the coupled solve: one of them has a side on a mesh.
-bool needs_coupled_nlgs_2d(std::span<const Interaction2D> contacts);
-
 }  // namespace lmgc::solver
