@@ -9,6 +9,7 @@
 // DOF 7.7e-10, GPV 1.1e-7, Vloc_Rloc 2.3e-7 of their scales.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -112,6 +113,42 @@ TEST(MailxContactExample, FourCubesRunsToItsEndAndAgreesWithLmgc90) {
   ASSERT_EQ(violation_ours.size(), violation_theirs.size());
   for (std::size_t k = 0; k < violation_ours.size(); ++k)
     EXPECT_NEAR(violation_ours[k], violation_theirs[k], 1e-8);
+}
+
+}  // namespace
+}  // namespace lmgc::test
+
+namespace lmgc::test {
+namespace {
+
+// A restart from LMGC90's last files of 4cubes (its DOF.LAST, GPV.LAST and Vloc_Rloc.LAST as
+// DOF.INI, GPV.INI in MatLib's layout, and Vloc_Rloc.INI with CLALp, PLALp and PLJCx records): the
+// run goes on from step 500 and its first step starts from the stored reactions, so it converges at
+// the first check (50 sweeps), its contacts still stuck where LMGC90 left them.
+TEST(MailxContactExample, FourCubesRestartsFromLmgc90sLastFiles) {
+  LMGC_REQUIRE_SHARED();
+  if (!fs::exists(tool_path("lmgc-run"))) GTEST_SKIP() << "this build has no Python module (lmgc-run)";
+  const fs::path source = examples_dir() / "mecaMAILx_RIGID_2D" / "4cubes";
+  const fs::path last = source / "reference_lmgc90" / "OUTBOX";
+  const fs::path dir = scratch_dir("mailx_4cubes_restart");
+  fs::copy(source / "DATBOX", dir / "DATBOX", fs::copy_options::recursive);
+  for (const char* name : {"DOF", "GPV", "Vloc_Rloc"})
+    fs::copy_file(last / (std::string(name) + ".LAST"), dir / "DATBOX" / (std::string(name) + ".INI"),
+                  fs::copy_options::overwrite_existing);
+  std::string script = read_file(source / "command.py");
+  const std::string steps = "nb_steps = 500";
+  ASSERT_NE(script.find(steps), std::string::npos);
+  script.replace(script.find(steps), steps.size(), "nb_steps = 10");
+  std::ofstream(dir / "command.py") << script;
+  const ToolRun run = run_tool_both_streams("lmgc-run", "'" + dir.string() + "' --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const std::string first = read_file(dir / "OUTBOX" / "Vloc_Rloc.OUT.1");
+  EXPECT_NE(first.find("$steps      510"), std::string::npos);
+  EXPECT_EQ(interaction_counts(first), interaction_counts(read_file(last / "Vloc_Rloc.LAST")));
+  const std::vector<std::string> iterations =
+      columns(read_file(dir / "POSTPRO" / "SOLVER_INFORMATIONS.DAT"), {1});
+  ASSERT_EQ(iterations.size(), 10u);
+  EXPECT_EQ(iterations.front(), "50 ");
 }
 
 }  // namespace
