@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -213,6 +214,33 @@ void check_geometry(const CaseFiles& files, grammar::DiagnosticSink& sink) {
                fmt::format("gyrd of {} is {}; it must be >= 0 (0: computed)", owner, b.gyrd.value));
     }
     for (const auto& e : body.elements) check_element(body, e, owner, report);
+    // A mesh's CLxxx and ALpxx segments need two distinct points (LMGC90 divides by their length).
+    const auto node_position = [&](std::int64_t n) {
+      std::array<double, 2> p{};
+      if (n >= 1 && static_cast<std::size_t>(n) <= body.nodes.size())
+        for (std::size_t k = 0; k < 2 && k < body.nodes[static_cast<std::size_t>(n - 1)].coordinates.size();
+             ++k)
+          p[k] = body.nodes[static_cast<std::size_t>(n - 1)].coordinates[k].value;
+      return p;
+    };
+    for (const auto& c : body.contactors) {
+      if (c.type.value != "CLxxx" && c.type.value != "ALpxx") continue;
+      std::vector<const grammar::Integer*> chain;
+      for (const auto& n : c.nodes) chain.push_back(&n);
+      for (const auto& more : c.continuations)
+        if (more.nodes.size() >= 2) chain.push_back(&more.nodes[1]);
+      for (std::size_t k = 0; k + 1 < chain.size(); ++k)
+        if (chain[k]->value == chain[k + 1]->value ||
+            node_position(chain[k]->value) == node_position(chain[k + 1]->value))
+          report("L3018", chain[k + 1]->span,
+                 fmt::format("{} {} of {}: nodes {} and {} are one point", c.type.value,
+                             &c - body.contactors.data() + 1, owner, chain[k]->value, chain[k + 1]->value));
+      if (c.type.value == "CLxxx" && !c.values.empty() &&
+          !(c.values[0].value >= 0.0 && c.values[0].value <= 1.0))
+        report("L3018", c.values[0].span,
+               fmt::format("CLxxx {} of {}: apab is {}; it must be in [0, 1]",
+                           &c - body.contactors.data() + 1, owner, c.values[0].value));
+    }
     // Two elements on the same nodes: the mesh counts that matter twice (stiffness and mass).
     std::map<std::vector<std::int64_t>, std::size_t> seen;
     for (std::size_t k = 0; k < body.elements.size(); ++k) {

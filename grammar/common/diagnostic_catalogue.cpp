@@ -252,6 +252,10 @@ constexpr std::array kCatalogue = {
         "L3017", warning, "duplicate element",
         "Two elements of a MAILx body have the same nodes: the mesh's stiffness and mass count that "
         "part twice. Usually a mesh written twice or a merge of overlapping meshes."},
+    DiagnosticKind{"L3018", error, "degenerate contactor of a mesh",
+                   "A CLxxx whose two nodes are one point (or whose apab is outside [0, 1]), or a segment "
+                   "of an ALpxx whose two nodes are one point: the contactor has no direction, and "
+                   "LMGC90 divides by its zero length when it computes its normal."},
     // L4xxx — run setup: what lmgc-solve does with the case. The codes that refuse a run are
     // warnings here (the case is valid for LMGC90) and make lmgc-solve stop with exit code 5.
     DiagnosticKind{"L4001", warning, "contactor not run by lmgc-solve yet",

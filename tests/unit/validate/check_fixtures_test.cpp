@@ -382,6 +382,8 @@ std::vector<Row> rows() {
     {"PenaltySpringNotResolved", disk, {{"TACT_BEHAV.DAT", kRst08, kRepell}}, "COMMAND.DAT", "L3013", warning, 5, 1},
     {"NothingMoves", disk, {{"BULK_BEHAV.DAT", "grv2=-0.9810000D+01", "grv2= 0.0000000D+00"}}, "BULK_BEHAV.DAT", "L3014", warning, 2, 46},
     {"DuplicateElement", mailx, {{"BODIES.DAT", "               model  M2D_L  behav  stone\n$nodty", "               model  M2D_L  behav  stone\n Q4xxx      3  nodes      2      5      4      1\n               model  M2D_L  behav  stone\n$nodty"}}, "BODIES.DAT", "L3017", warning, 8, 2},
+    {"CandidatePointOnOneNode", mailx, {{"BODIES.DAT", "noda=    4  nodb=    5", "noda=    4  nodb=    4"}}, "BODIES.DAT", "L3018", error, 16, 47},
+    {"CandidatePointOffItsEdge", mailx, {{"BODIES.DAT", "apab= 0.5000000D+00", "apab= 0.1500000D+01"}}, "BODIES.DAT", "L3018", error, 16, 59},
     {"DynamicAboveStaticFriction", disk, {{"TACT_BEHAV.DAT", kRst08, " rst08  IQS_DS_CLB                      dyfr= 0.5000000D+00  stfr= 0.3000000D+00\n"}}, "TACT_BEHAV.DAT", "L3016", warning, 3, 9},
 
     // ---- L4xxx: what the drivers ask of a run, against what lmgc-solve runs
