@@ -89,3 +89,63 @@ TEST(MeshBodies, AModelLmgcDoesNotRunIsRefusedAtItsLine) {
 
 }  // namespace
 }  // namespace lmgc::solver
+
+namespace lmgc::solver {
+namespace {
+
+// 4cubes' contactors as LMGC90 numbers them (mailx-2d-contact.md §1): every $tacty line its own
+// contactor, ranked in its body whatever its type, serials per type over the case; an ALpxx with
+// '+ALpxx' lines is one polyline; a continuation that does not start where the polyline ended is
+// refused at its line.
+TEST(MeshBodies, ContactorsAreRankedAsLmgc90RanksThemAndPolylinesContinue) {
+  LMGC_REQUIRE_SHARED();
+  grammar::DiagnosticSink sink(100);
+  const auto files = case_folder::load_case(four_cubes(), sink);
+  ASSERT_TRUE(files);
+  MeshBodies meshes;
+  ASSERT_TRUE(build_mesh_bodies(*files, fem::Hypothesis::plane_strain, meshes, sink));
+  // Body 1: 6 ALpxx and 4 CLxxx; bodies 2 and 3: 4 CLxxx, 4 ALpxx, 4 CLxxx.
+  ASSERT_EQ(meshes.contactors.size(), 34u);
+  const MeshContactor& first = meshes.contactors[0];
+  EXPECT_EQ(first.type, "ALpxx");
+  EXPECT_EQ(first.rank, 1);
+  EXPECT_EQ(first.nodes, (std::vector<std::int32_t>{2, 1}));  // noda= 3 nodb= 2, 0-based
+  const MeshContactor& body2_al = meshes.contactors[14];      // body 2's 5th line: its first ALpxx
+  EXPECT_EQ(body2_al.mesh, 1);
+  EXPECT_EQ(body2_al.rank, 5);
+  EXPECT_EQ(body2_al.serial, 7);  // after body 1's six
+  EXPECT_EQ(meshes.contactors[6].type, "CLxxx");
+  EXPECT_DOUBLE_EQ(meshes.contactors[6].apab, 0.2);
+
+  // Body 1's first two ALpxx lines as one polyline: 3 → 2, then '+ALpxx' 2 → 9 and 9 → 8.
+  const fs::path dir = test::scratch_dir("mesh_bodies_polyline");
+  fs::copy(four_cubes() / "DATBOX", dir / "DATBOX", fs::copy_options::recursive);
+  std::string bodies = test::read_file(dir / "DATBOX" / "BODIES.DAT");
+  const std::string line = " ALpxx      6  color  REDxx  noda=    4  nodb=    3\n";
+  const auto at = bodies.find(line);
+  ASSERT_NE(at, std::string::npos);
+  const std::string plus =
+      "+ALpxx      6  color  REDxx  noda=    2  nodb=    9\n+ALpxx      6  color  REDxx  noda=    9  nodb=   "
+      " 8\n";
+  bodies.replace(at, line.size(), plus);
+  std::ofstream(dir / "DATBOX" / "BODIES.DAT") << bodies;
+  grammar::DiagnosticSink polyline_sink(100);
+  const auto polyline_files = case_folder::load_case(dir, polyline_sink);
+  ASSERT_TRUE(polyline_files);
+  ASSERT_TRUE(build_mesh_bodies(*polyline_files, fem::Hypothesis::plane_strain, meshes, polyline_sink));
+  EXPECT_EQ(meshes.contactors[0].nodes, (std::vector<std::int32_t>{2, 1, 8, 7}));
+  EXPECT_EQ(meshes.contactors[0].segments(), 3u);
+  EXPECT_EQ(meshes.contactors[1].rank, 2);  // the continuation lines are not contactors
+
+  bodies.replace(bodies.find("noda=    9  nodb=    8"), 22, "noda=    7  nodb=    8");
+  std::ofstream(dir / "DATBOX" / "BODIES.DAT") << bodies;
+  grammar::DiagnosticSink broken_sink(100);
+  const auto broken = case_folder::load_case(dir, broken_sink);
+  ASSERT_TRUE(broken);
+  EXPECT_FALSE(build_mesh_bodies(*broken, fem::Hypothesis::plane_strain, meshes, broken_sink));
+  ASSERT_FALSE(broken_sink.items().empty());
+  EXPECT_EQ(broken_sink.items().back().code, "L4003");
+}
+
+}  // namespace
+}  // namespace lmgc::solver
