@@ -281,6 +281,7 @@ bool Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsR
         std::vector<int> plus(b.size(), 0), minus(b.size(), 0);
         for (const Interaction2D& k : state.contacts) {
           if (k.status == ContactStatus::noctc || k.status == ContactStatus::vnish) continue;
+          if (is_mesh_family(k.family)) continue;  // rigid bodies' contacts only (mod_postpro_2D)
           const double rn = k.r(1) / h;
           const bool both = k.family == PairFamily2D::DKDKx || k.family == PairFamily2D::DKPLx ||
                             k.family == PairFamily2D::PLPLx;
