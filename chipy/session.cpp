@@ -1112,11 +1112,12 @@ Session::Interactions Session::interactions() const {
       if (e == std::string::npos) e = i.title.size();
       titles.push_back(i.title.substr(k, e - k));
     }
-    std::string words[5];          // cdbdy cdtac behav anbdy antac / sttus
-    std::int64_t numbers[4] = {};  // the four 'numbr' fields
-    std::string status;
+    std::string words[5];  // cdbdy cdtac behav anbdy antac / sttus
+    // The 'numbr' after cdbdy, cdtac, anbdy and antac (the one after a polygon's 'vertx' is its vertex).
+    std::int64_t numbers[4] = {};
+    std::string status, previous_title;
     if (kind) {
-      std::size_t w = 0, n = 0, t = 0, numbr = 0;
+      std::size_t w = 0, n = 0, t = 0;
       for (const grammar::DataItem& item : grammar::data_items(kind->data_format)) {
         if (item.kind == 'X') continue;
         const std::string title = t < titles.size() ? titles[t] : std::string();
@@ -1133,10 +1134,18 @@ Session::Interactions Session::interactions() const {
         } else {
           const std::int64_t value = n < i.integers.size() ? i.integers[n].value : 0;
           ++n;
-          if (title == "numbr" && numbr < 4) numbers[numbr++] = value;
+          if (title == "numbr") {
+            if (previous_title == "cdbdy") numbers[0] = value;
+            if (previous_title == "cdtac") numbers[1] = value;
+            if (previous_title == "anbdy") numbers[2] = value;
+            if (previous_title == "antac") numbers[3] = value;
+          }
         }
+        previous_title = title;
       }
     }
+    out.candidate_body_type.push_back(words[0]);
+    out.antagonist_body_type.push_back(words[3]);
     out.candidate_body.push_back(numbers[0]);
     out.candidate_type.push_back(words[1]);
     out.candidate_contactor.push_back(numbers[1]);

@@ -127,6 +127,7 @@ class Session {
   // status, point, frame, rl, vl, gap) in LMGC90's order.
   struct Interactions {
     std::vector<std::string> module, candidate_type, antagonist_type, law, status;
+    std::vector<std::string> candidate_body_type, antagonist_body_type;  // RBDY2, RBDY3, MAILx
     std::vector<std::int64_t> number, candidate_body, antagonist_body, candidate_contactor,
         antagonist_contactor;
     std::vector<double> point, frame, rl, vl, gap;  // rows of dimension, dimension², dimension, dimension, 1

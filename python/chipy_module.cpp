@@ -174,8 +174,8 @@ PYBIND11_MODULE(_chipy, m) {
         py::dict out;
         out["inter"] = i.module;
         out["icdan"] = copy_array(i.number);
-        out["cdbdy"] = std::vector<std::string>(i.module.size(), d == 2 ? "RBDY2" : "RBDY3");
-        out["anbdy"] = out["cdbdy"];
+        out["cdbdy"] = i.candidate_body_type;
+        out["anbdy"] = i.antagonist_body_type;
         out["icdbdy"] = copy_array(i.candidate_body);
         out["ianbdy"] = copy_array(i.antagonist_body);
         out["cdtac"] = i.candidate_type;

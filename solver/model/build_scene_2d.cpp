@@ -179,7 +179,7 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
         ContactLaw law;
         if (!contact_law_of(card, law) || !provided_in_2d(law)) {
           sink.report("L4002", grammar::Location{in.tact_behav_path, card.keyword.span},
-                      "contact law '" + card.keyword.value + "' is not solved by the rigid 2D solver yet");
+                      "contact law '" + card.keyword.value + "' is not solved by lmgc in 2D yet");
           ok = false;
         }
         found = true;

@@ -144,6 +144,47 @@ class Documented(unittest.TestCase):
         self.assertEqual(sorted(set(offered) - named), [])
 
 
+class MeshInteractions(unittest.TestCase):
+    """getInteractions on a case with contact on a mesh: its bodies' types and numbers as LMGC90 gives
+    them (reference_cases/mailx_hertz_cylinder: CLxxx points of MAILx 1 on the JONCx of RBDY2 1)."""
+
+    def test_mesh_contacts_name_their_mailx_and_rigid_bodies(self):
+        from lmgc import chipy
+        work = tempfile.mkdtemp(prefix="lmgc_chipy_mesh_")
+        shutil.copytree(os.path.join(SOURCE, "reference_cases", "mailx_hertz_cylinder", "DATBOX"),
+                        os.path.join(work, "DATBOX"))
+        cwd = os.getcwd()
+        os.chdir(work)
+        try:
+            chipy._configure(max_steps=-1, quiet=True)
+            chipy.Initialize()
+            chipy.checkDirectories()
+            chipy.SetDimension(2, 1)
+            chipy.TimeEvolution_SetTimeStep(0.005)
+            chipy.Integrator_InitTheta(1.0)
+            chipy.ReadDatbox(deformable=True)
+            chipy.ComputeMass()
+            chipy.ComputeBulk()
+            for _ in range(3):
+                for call in ("IncrementStep", "ComputeFext", "ComputeBulk", "AssembleMechanicalRHS",
+                             "AssembleMechanicalLHS", "ComputeFreeVelocity", "SelectProxTactors", "RecupRloc"):
+                    getattr(chipy, call)()
+                chipy.ExSolver('Stored_Delassus_Loops         ', 'Quad ', 1e-6, 1.0, 50, 100)
+                for call in ("UpdateTactBehav", "StockRloc", "ComputeDof", "UpdateStep"):
+                    getattr(chipy, call)()
+            inters = chipy.getInteractions()
+            self.assertGreater(len(inters), 0)
+            self.assertEqual(chipy.inter_handler_2D_getNb(chipy.CLJCx_ID), len(inters))
+            for i in inters:
+                self.assertEqual((i[0], i[2], i[3], i[4], i[5], i[6], i[7], i[9]),
+                                 ('CLJCx', 'MAILx', 'RBDY2', 1, 1, 'CLxxx', 'JONCx', 1))
+            self.assertTrue(all(1 <= i[8] <= 62 for i in inters))
+            chipy.Finalize()
+        finally:
+            os.chdir(cwd)
+            shutil.rmtree(work)
+
+
 class ScriptRuns(unittest.TestCase):
     def run_script(self, body, *args):
         work = case_copy()
