@@ -7,6 +7,8 @@ in <case>/lmgc90_reference/ (DOF.LAST, GPV.LAST): the files the tests compare lm
   in one quasi-static step (θ = 1, h = 1): the patch test through the whole run.
 - mailx_cantilever_t3: a T3xxx cantilever (plane stress, lumped mass, Rayleigh damping) clamped at
   one end and falling under gravity for 200 steps: the θ-scheme against LMGC90's.
+- mailx_disk_on_block: a rigid DISKx rolling and sliding on an elastic Q4xxx block whose top is one
+  ALpxx polyline ('+ALpxx' lines), under a tilted gravity (DKALp): against LMGC90.
 - mailx_hertz_cylinder: an elastic half-cylinder (T3xxx, plane strain) pressed by a line load on a
   rigid JONCx, frictionless CLJCx contacts: the contact half-width and the peak pressure against
   Hertz's (compared with the closed form, not run by LMGC90 here).
@@ -104,6 +106,61 @@ def cantilever_t3(folder):
                    "DRV_DOF.DAT": w.mailx_driven(driven)},
           script("# A T3xxx cantilever (plane stress, lumped mass) clamped at x = 0, falling under gravity.",
                  2, 1e-3, 0.5, 200, 50, extra="chipy.mecaMAILx_ComputeRayleighDamping(0.5, 1e-4)\n", postpro=True))
+
+
+def disk_on_block(folder):
+    nx, ny, length, height = 20, 4, 1.0, 0.2
+    nodes, elements = w.mailx_rectangle(nx, ny, length, height, "Q4xxx")
+    clamp = {k + 1: [0.0, 0.0] for k, (x, y, _) in enumerate(nodes) if y == 0.0}
+    top = [ny * (nx + 1) + i + 1 for i in range(nx + 1)]  # left to right: clockwise along the top
+    bodies = w.mailx_bodies(nodes, elements, "Q4xxx", "M2DQ4", "rubbr")[:-len("$$$$$$\n")] + "$tacty\n"
+    bodies += f" ALpxx{1:7d}  color  BLOCK  noda={top[0]:5d}  nodb={top[1]:5d}\n"
+    for i in range(1, nx):
+        bodies += f"+ALpxx{1:7d}  color  BLOCK  noda={top[i]:5d}  nodb={top[i + 1]:5d}\n"
+    radius = 0.05
+    bodies += "$$$$$$\n" + w.rbdy2(1, "steel", 0.2, height + radius + 1e-3, 0.0, w.disk(radius, "DISKS"))
+    bulk = w.elas_bulk("rubbr", 1000.0, 1e7, 0.3, gravity=(3.0, -9.81)) + (
+        f"\n$behav  lawty\n steel  RIGID                           Umas={w.real(7800.0)}\n")
+    tact = (f"$behav  lawty\n iqsc0  IQS_CLB                         fric={w.real(0.3)}\n\n"
+            "$seety\n cdbdy  cdtac  cdcol  behav  anbdy  antac  ancol       alert\n"
+            f" RBDY2  DISKx  DISKS  iqsc0  MAILx  ALpxx  BLOCK      {w.real(0.01)}\n")
+    loop = """for k in range(nb_steps):
+  chipy.IncrementStep()
+  chipy.ComputeFext()
+  chipy.ComputeBulk()
+  chipy.AssembleMechanicalRHS()
+  chipy.AssembleMechanicalLHS()
+  chipy.ComputeFreeVelocity()
+  chipy.SelectProxTactors()
+  chipy.RecupRloc()
+  chipy.ExSolver('Stored_Delassus_Loops         ', 'Quad ', 1e-6, 1.0, 50, 200)
+  chipy.UpdateTactBehav()
+  chipy.StockRloc()
+  chipy.ComputeDof()
+  chipy.UpdateStep()
+chipy.WriteLastDof()
+chipy.WriteLastVlocRloc()
+chipy.Finalize()
+"""
+    text = f"""# A rigid disk rolling and sliding on an elastic block (DKALp), under a tilted gravity.
+# Written by scripts/make_mailx_reference_cases.py; run unchanged by LMGC90 and by lmgc-run.
+from pylmgc90 import chipy
+
+chipy.Initialize()
+chipy.checkDirectories()
+chipy.utilities_DisableLogMes()
+chipy.SetDimension(2, 1)
+chipy.TimeEvolution_SetTimeStep(1e-3)
+chipy.Integrator_InitTheta(0.5)
+chipy.ReadDatbox(deformable=True)
+chipy.ComputeMass()
+chipy.ComputeBulk()
+nb_steps = 300
+""" + loop
+    vloc_rloc = w.STATE_HEADER.replace("! DOF", "! Vloc_Rloc")
+    write(folder, {"BODIES.DAT": bodies, "MODELS.DAT": w.mailx_model("M2DQ4", "Q4xxx", lumped=True),
+                   "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": w.mailx_driven(clamp), "TACT_BEHAV.DAT": tact,
+                   "Vloc_Rloc.INI": vloc_rloc}, text)
 
 
 HERTZ = {"radius": 0.1, "young": 1e8, "poisson": 0.3, "load": 86300.0}
@@ -207,7 +264,7 @@ def main():
     parser.add_argument("--lmgc90", default=None, help="LMGC90's build folder (pylmgc90 inside)")
     args = parser.parse_args()
     cases = {"mailx_patch_q4": patch_q4, "mailx_cantilever_t3": cantilever_t3,
-             "mailx_hertz_cylinder": hertz_cylinder}
+             "mailx_disk_on_block": disk_on_block, "mailx_hertz_cylinder": hertz_cylinder}
     for name, make in cases.items():
         folder = os.path.join(ROOT, "reference_cases", name)
         make(folder)
@@ -220,8 +277,9 @@ def main():
                        env=dict(os.environ, PYTHONPATH=args.lmgc90, OMP_NUM_THREADS="1"))
         reference = os.path.join(folder, "lmgc90_reference")
         os.makedirs(reference, exist_ok=True)
-        for f in ("DOF.LAST", "GPV.LAST"):
-            shutil.copy(os.path.join(work, "OUTBOX", f), reference)
+        for f in ("DOF.LAST", "GPV.LAST", "Vloc_Rloc.LAST"):
+            if os.path.exists(os.path.join(work, "OUTBOX", f)):
+                shutil.copy(os.path.join(work, "OUTBOX", f), reference)
         for f in sorted(os.listdir(os.path.join(work, "POSTPRO"))):
             if f.startswith(("Dep_", "Fint_")):
                 shutil.copy(os.path.join(work, "POSTPRO", f), reference)

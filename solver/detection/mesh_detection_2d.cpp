@@ -382,6 +382,67 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
         }
       }
     }
+
+  // DKALp (mod_DKALp: disks, then ALpxx, then segments): a disk within reach of a segment's bounding
+  // circle is tested against it; beyond the segment's ends (up to the radius plus the alert), the
+  // end node is the antagonist point. One contact per disk and segment.
+  if (scene.plan.families[static_cast<std::size_t>(PairFamily2D::DKALp)])
+    for (std::size_t k = 0; k < scene.contactors.size(); ++k) {
+      const Contactor2D& dk = scene.contactors[k];
+      if (dk.shape != ContactorShape2D::disk || !b.visible[static_cast<std::size_t>(dk.body)]) continue;
+      const Vector3d& q = body_coordinates[static_cast<std::size_t>(dk.body)];
+      const double cs = std::cos(q.z()), sn = std::sin(q.z());
+      const Vector2d centre = q.head<2>() + Vector2d(cs * dk.shift.x() - sn * dk.shift.y(),
+                                                     sn * dk.shift.x() + cs * dk.shift.y());
+      for (std::size_t ial = 0; ial < tactors.size(); ++ial) {
+        const MeshContactor& al = tactors[ial];
+        if (al.shape != MeshContactorShape::polyline) continue;
+        const std::int32_t row = see_row(scene, "DISKx", dk.color, "ALpxx", al.color);
+        if (row < 0) continue;
+        const double alert = scene.visibility[static_cast<std::size_t>(row)].alert;
+        const VectorXd& xa = node_coordinates[static_cast<std::size_t>(al.mesh)];
+        for (std::size_t s = 0; s + 1 < al.nodes.size(); ++s) {
+          const Vector2d a = node_at(xa, al.nodes[s]), bb = node_at(xa, al.nodes[s + 1]);
+          const double L = (bb - a).norm();
+          const Vector2d middle = 0.5 * (a + bb);
+          const double reach = dk.radius + 0.5 * L + alert;
+          if ((middle - centre).squaredNorm() >= reach * reach) continue;
+          Vector2d n = left_normal(a, bb), t(n.y(), -n.x());
+          const double along = (centre - a).dot(t);
+          Frame f;
+          if (along >= 0.0 && along <= L) {
+            f = Frame{(centre - a).dot(n) - dk.radius, n, a + along * t, along / L};
+          } else if (along < 0.0 && along > -(dk.radius + alert)) {
+            n = (centre - a) / (centre - a).norm();
+            f = Frame{(centre - a).dot(n) - dk.radius, n, a, 0.0};
+          } else if (along > L && along < L + dk.radius + alert) {
+            n = (centre - bb) / (centre - bb).norm();
+            f = Frame{(centre - bb).dot(n) - dk.radius, n, bb, 1.0};
+          } else {
+            continue;
+          }
+          if (f.gap > alert || f.gap < -dk.radius) continue;
+          Interaction2D probe;
+          probe.family = PairFamily2D::DKALp;
+          probe.antagonist = static_cast<std::int32_t>(ial);
+          probe.antagonist_segment = static_cast<std::int32_t>(s) + 1;
+          probe.lever_antagonist = Vector2d(1.0 - f.beta, f.beta);
+          if (b.inverse_mass[static_cast<std::size_t>(dk.body)].isZero(0.0) && mesh_side_driven(probe, 1))
+            continue;
+          Interaction2D* c =
+              add(PairFamily2D::DKALp, static_cast<std::int32_t>(k), static_cast<std::int32_t>(ial), row, f);
+          c->candidate_body = dk.body;
+          c->antagonist_body = al.mesh;
+          c->antagonist_segment = probe.antagonist_segment;
+          // Levers from the body's centre to the point on the segment (mod_DKALp), through the disk's
+          // offset on its body.
+          const Vector2d lever = f.point - q.head<2>();
+          c->lever_candidate = Vector2d(cross_2d(lever, c->tangent()), cross_2d(lever, c->normal));
+          c->lever_antagonist = probe.lever_antagonist;
+          relative_velocity_begin(*c);
+        }
+      }
+    }
 }
 
 }  // namespace lmgc::solver

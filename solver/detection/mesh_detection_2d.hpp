@@ -5,7 +5,9 @@
 //   the segment next to the polyline's closest node (a vertex of the polyline gets its own normal);
 // - CLJCx: each CLxxx point against the first JONCx whose box holds it;
 // - PLALp: the vertices of a rigid POLYG against each segment of an ALpxx, one contact per vertex and
-//   segment.
+//   segment;
+// - DKALp: a rigid DISKx against each segment of an ALpxx (its end node beyond its ends), one contact
+//   per disk and segment.
 // Positions are the detection configuration (coorTT): x_ref + X_begin + (1 − θ)h V_begin for mesh
 // nodes, the rigid bodies' coordinates as detect_contacts_2d takes them.
 #include <Eigen/Core>
@@ -17,7 +19,7 @@
 
 namespace lmgc::solver {
 
-// Appends the interactions of the mesh families (CLALp, then CLJCx, then PLALp: LMGC90's sweep
+// Appends the interactions of the mesh families (CLALp, CLJCx, PLALp, then DKALp: LMGC90's sweep
 // order) to `out`, each with its local frame, gap, point, nodes' weights (mesh_contact_2d.hpp) and
 // relative velocity at the beginning of the step. `node_coordinates[m]`: mesh m's nodes (x, y each).
 void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Eigen::Vector3d> body_coordinates,

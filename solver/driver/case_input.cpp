@@ -99,7 +99,7 @@ bool prepare_run_2d(const case_folder::CaseFiles& files, Scene2D& scene, RunOutp
           "body is RBDY3");
       return false;
     }
-  // Contact with deformable bodies: the pairs CLALp, CLJCx and PLALp are run; a visibility row
+  // Contact with deformable bodies: the pairs CLALp, CLJCx, PLALp and DKALp are run; a visibility row
   // that names a MAILx body with another pair refuses the case.
   if (files.tact_behav)
     for (const grammar::SeeEntry& see : files.tact_behav->sees) {
@@ -111,7 +111,7 @@ bool prepare_run_2d(const case_folder::CaseFiles& files, Scene2D& scene, RunOutp
         continue;
       sink.report(
           "L4003", grammar::Location{datbox_path(files, "TACT_BEHAV.DAT"), see.candidate_body.span},
-          "contact with deformable (MAILx) bodies is run by lmgc for the pairs CLALp, CLJCx and PLALp "
+          "contact with deformable (MAILx) bodies is run by lmgc for the pairs CLALp, CLJCx, PLALp and DKALp "
           "only; this visibility row pairs " +
               see.candidate_contactor.value + " and " + see.antagonist_contactor.value);
       return false;

@@ -154,7 +154,9 @@ void recup_rloc(RunState2D& state) {
     bool swapped = false;
     for (std::uint32_t m : stored_of(c.candidate)) {
       const Interaction2D& p = previous[m];
-      if (p.family == c.family && p.antagonist == c.antagonist && p.candidate_vertex == c.candidate_vertex) {
+      // DKALp's verlet keeps the segment too (mod_DKALp recup_rloc); the other families do not.
+      if (p.family == c.family && p.antagonist == c.antagonist && p.candidate_vertex == c.candidate_vertex &&
+          (c.family != PairFamily2D::DKALp || p.antagonist_segment == c.antagonist_segment)) {
         match = &p;
         break;
       }

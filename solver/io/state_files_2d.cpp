@@ -79,10 +79,10 @@ grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& 
   for (std::size_t k = 0; k < scene.contactors.size(); ++k) serial[k] = ++per_type[scene.contactors[k].type];
   // Modules in the alphabetical order of LMGC90's writer; inside one, by candidate contactor
   // (PLPLx: in detection order).
-  constexpr PairFamily2D kWriteOrder[] = {PairFamily2D::CLALp, PairFamily2D::CLJCx, PairFamily2D::DKDKx,
-                                          PairFamily2D::DKJCx, PairFamily2D::DKKDx, PairFamily2D::DKPLx,
-                                          PairFamily2D::PLALp, PairFamily2D::PLJCx, PairFamily2D::PLPLx,
-                                          PairFamily2D::PTPT2};
+  constexpr PairFamily2D kWriteOrder[] = {PairFamily2D::CLALp, PairFamily2D::CLJCx, PairFamily2D::DKALp,
+                                          PairFamily2D::DKDKx, PairFamily2D::DKJCx, PairFamily2D::DKKDx,
+                                          PairFamily2D::DKPLx, PairFamily2D::PLALp, PairFamily2D::PLJCx,
+                                          PairFamily2D::PLPLx, PairFamily2D::PTPT2};
   // Mesh contactors (CLxxx, ALpxx) by their MAILx body, rank in it and serial among their type.
   const std::vector<MeshContactor>& mesh_tactors = scene.deformable.meshes.contactors;
   const auto mesh_body = [&](std::int32_t t) {
@@ -137,6 +137,17 @@ grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& 
           out.words = {Word{"MAILx"}, Word{"CLxxx"}, Word{law}, Word{"RBDY2"}, Word{an.type}, Word{status}};
           out.integers = {mesh_body(c.candidate), mesh_rank(c.candidate), an_body, an_rank,
                           Integer{serial[static_cast<std::size_t>(c.antagonist)]}};
+          break;
+        case PairFamily2D::DKALp:
+          // mod_DKALp write_out_Vloc_Rloc: the ALpxx's rank in its body, the segment, the rank of the
+          // contact among its disk's.
+          out.words = {Word{"RBDY2"}, Word{"DISKx"}, Word{law}, Word{"MAILx"}, Word{"ALpxx"}, Word{status}};
+          out.integers = {cd_body,
+                          cd_rank,
+                          mesh_body(c.antagonist),
+                          mesh_rank(c.antagonist),
+                          Integer{c.antagonist_segment},
+                          Integer{iadj[m]}};
           break;
         case PairFamily2D::PLALp:
           out.words = {Word{"RBDY2"}, Word{cd.type}, Word{"CDVER"}, Word{law},
@@ -256,6 +267,8 @@ WarmStart2D warm_start_2d(const grammar::VlocRlocFile& file, const Scene2D& scen
       family = PairFamily2D::CLJCx;
     else if (t == "PLALp")
       family = PairFamily2D::PLALp;
+    else if (t == "DKALp")
+      family = PairFamily2D::DKALp;
     else
       continue;
     const bool vertex =
@@ -273,6 +286,7 @@ WarmStart2D warm_start_2d(const grammar::VlocRlocFile& file, const Scene2D& scen
     c.candidate = cd->second;
     c.antagonist = an->second;
     c.candidate_vertex = vertex ? static_cast<std::int32_t>(n[2].value) : 0;
+    if (family == PairFamily2D::DKALp) c.antagonist_segment = static_cast<std::int32_t>(n[4].value);
     c.r = Eigen::Vector2d(b.vectors[0].values[0].value * h, b.vectors[0].values[1].value * h);
     if (!b.words.empty()) status_from_name(b.words.back().value, c.status);
     LawState2D law_state;

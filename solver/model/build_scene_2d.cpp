@@ -158,7 +158,7 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
   // LMGC90 looks rows up in its own order (duplicates merged, then sorted): first match wins.
   for (const grammar::SeeEntry& see : grammar::lmgc90_see_order(in.tact_behav->sees)) {
     // Rows between RBDY2 bodies, and rows with a MAILx side whose pair has a mesh family
-    // (CLALp, CLJCx, PLALp); prepare_run_2d refuses the other MAILx rows.
+    // (CLALp, CLJCx, PLALp, DKALp); prepare_run_2d refuses the other MAILx rows.
     const bool rigid = see.candidate_body.value == "RBDY2" && see.antagonist_body.value == "RBDY2";
     PairFamily2D mesh_family;
     if (!rigid &&

@@ -11,7 +11,7 @@
 namespace lmgc::solver {
 
 // 2D interaction families, in the order LMGC90 sweeps them (numerics.md §4 step 2: DKDKx, DKKDx,
-// DKJCx, DKPLx, PTPT2, PLPLx, PLJCx, CLALp, CLJCx, ..., PLALp). The first seven join rigid bodies
+// DKJCx, DKPLx, PTPT2, PLPLx, PLJCx, CLALp, CLJCx, ..., PLALp, DKALp). The first seven join rigid bodies
 // (solver/detection/detection_2d.hpp); the others have a side on a mesh (mesh_contact_2d.hpp).
 enum class PairFamily2D : std::uint8_t {
   DKDKx,
@@ -23,7 +23,8 @@ enum class PairFamily2D : std::uint8_t {
   PLJCx,
   CLALp,
   CLJCx,
-  PLALp
+  PLALp,
+  DKALp
 };
 
 // The family's name: its interaction module, as the contactor-pair table and Vloc_Rloc files name it.
@@ -49,11 +50,13 @@ constexpr std::string_view pair_family_name(PairFamily2D family) {
       return "CLJCx";
     case PairFamily2D::PLALp:
       return "PLALp";
+    case PairFamily2D::DKALp:
+      return "DKALp";
   }
   return "";
 }
-inline constexpr int kPairFamily2DCount = 10;
-static_assert(static_cast<int>(PairFamily2D::PLALp) + 1 == kPairFamily2DCount);
+inline constexpr int kPairFamily2DCount = 11;
+static_assert(static_cast<int>(PairFamily2D::DKALp) + 1 == kPairFamily2DCount);
 // The families between rigid bodies: PairFamily2D's first seven.
 inline constexpr int kRigidPairFamily2DCount = 7;
 static_assert(static_cast<int>(PairFamily2D::PLJCx) + 1 == kRigidPairFamily2DCount);
@@ -67,6 +70,7 @@ constexpr bool side_on_mesh(PairFamily2D family, int side) {
     case PairFamily2D::CLJCx:
       return side == 0;
     case PairFamily2D::PLALp:
+    case PairFamily2D::DKALp:
       return side == 1;
     default:
       return false;

@@ -1,5 +1,5 @@
 #pragma once
-// The side of a 2D interaction that lies on a mesh (CLALp, CLJCx, PLALp): two nodes of the mesh and
+// The side of a 2D interaction that lies on a mesh (CLALp, CLJCx, PLALp, DKALp): two nodes of the mesh and
 // their interpolation weights. A CLxxx point is (1 − apab) x_a + apab x_b; a point of an ALpxx
 // segment k is (1 − β) x_k + β x_k+1; the point's velocity and the distribution of a reaction on
 // the nodes take the same weights (docs/lmgc90-facts/mailx-2d-contact.md §2, §4). For such a side,

@@ -1,5 +1,5 @@
 #pragma once
-// NLGS over the interactions of a 2D scene where contacts touch meshes (CLALp, CLJCx, PLALp), the
+// NLGS over the interactions of a 2D scene where contacts touch meshes (CLALp, CLJCx, PLALp, DKALp), the
 // rigid pairs of the scene included, as LMGC90's Stored_Delassus_Loops solves them
 // (docs/lmgc90-facts/mailx-2d-contact.md §8): a reaction on a mesh moves every node of it, so every
 // two contacts that share a body that moves are coupled by their block W_ij = H_iᵀ A H_j, with A the

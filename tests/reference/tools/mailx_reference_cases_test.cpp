@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "grammar/gpv/parser.hpp"
+#include "tests/support/lmgc90_reference_runs.hpp"
 #include "tests/support/run_tool.hpp"
 #include "tests/support/shared_data.hpp"
 
@@ -107,6 +108,41 @@ TEST(MailxReferenceCases, DampedCantileverWritesLmgc90sFiles) {
   std::printf(
       "POSTPRO Dep/Fint EVOLUTION: largest difference from LMGC90's %.2e of the row's largest value\n",
       worst);
+}
+
+}  // namespace
+}  // namespace lmgc::test
+
+namespace lmgc::test {
+namespace {
+
+// mailx_disk_on_block: a rigid disk rolling on an elastic block (DKALp) over 300 steps: LMGC90's
+// DOF.LAST byte for byte, its Vloc_Rloc.LAST interaction for interaction within 1e-9 of the file's
+// largest value (README.md: why).
+TEST(MailxReferenceCases, DiskRollingOnABlockWritesLmgc90sFiles) {
+  const fs::path dir = run_case("mailx_disk_on_block");
+  if (dir.empty()) GTEST_SKIP() << "this build has no Python module (lmgc-run)";
+  const fs::path reference =
+      fs::path(LMGC_SOURCE_DIR) / "reference_cases" / "mailx_disk_on_block" / "lmgc90_reference";
+  EXPECT_TRUE(read_file(dir / "OUTBOX" / "DOF.LAST") == read_file(reference / "DOF.LAST"));
+  const grammar::VlocRlocFile ours = read_vloc_rloc(dir / "OUTBOX" / "Vloc_Rloc.LAST");
+  const grammar::VlocRlocFile theirs = read_vloc_rloc(reference / "Vloc_Rloc.LAST");
+  ASSERT_EQ(ours.interactions.size(), theirs.interactions.size());
+  ASSERT_FALSE(ours.interactions.empty());
+  double scale = 0.0;
+  for (const auto& i : theirs.interactions)
+    for (const auto& v : i.vectors)
+      for (const auto& x : v.values) scale = std::max(scale, std::abs(x.value));
+  for (std::size_t k = 0; k < ours.interactions.size(); ++k) {
+    const auto &a = ours.interactions[k], &b = theirs.interactions[k];
+    EXPECT_EQ(a.type.value, "DKALp");
+    EXPECT_EQ(a.words, b.words);
+    EXPECT_EQ(a.integers, b.integers);
+    ASSERT_EQ(a.vectors.size(), b.vectors.size());
+    for (std::size_t v = 0; v < a.vectors.size(); ++v)
+      for (std::size_t c = 0; c < a.vectors[v].values.size(); ++c)
+        EXPECT_NEAR(a.vectors[v].values[c].value, b.vectors[v].values[c].value, 1e-9 * scale);
+  }
 }
 
 }  // namespace

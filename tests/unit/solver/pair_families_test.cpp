@@ -41,7 +41,7 @@ TEST(PairFamilies, Every2DFamilyIsAPairOfTheTable) {
   EXPECT_FALSE(pair_family_of("CLxxx", "JONCx", family));  // a mesh family: mesh_detection_2d.hpp
   EXPECT_TRUE(contactor_pair_family_2d("CLxxx", "JONCx", family));
   EXPECT_EQ(family, PairFamily2D::CLJCx);
-  EXPECT_FALSE(contactor_pair_family_2d("DISKx", "ALpxx", family));  // DKALp: not run yet
+  EXPECT_FALSE(contactor_pair_family_2d("PT2DL", "PT2DL", family));  // P2P2L: not run yet
 }
 
 TEST(PairFamilies, Every3DFamilyIsAPairOfTheTable) {
