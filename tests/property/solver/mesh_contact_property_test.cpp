@@ -1,6 +1,6 @@
 // Contact with meshes (CLALp, CLJCx, PLALp: solver/detection/mesh_detection_2d.hpp, solved by the
 // coupled NLGS of solver/nlgs/nlgs_coupled_2d.hpp), on random stacks: an elastic block on a wall, a
-// block on a block, a rigid square on a block.
+// block on a block, a rigid square or disk on a block.
 // - Every converged contact satisfies Signorini–Coulomb: the natural-map residual of its reaction and
 //   of the relative velocity read from the bodies' end-of-step velocities (V = V_free + K̂⁻¹ I for a
 //   mesh, a full solve) is at the solver's tolerance; so the W blocks built from each mesh's condensed
@@ -86,7 +86,7 @@ Stack random_stack(bool iqs_only) {
   for (std::size_t k = 0; k + 1 < bottom.size(); ++k)
     b.add_candidate_point(lower, bottom[k], bottom[k + 1], in_range(0.2, 0.8), "LOWER");
   b.see("CLxxx", "LOWER", "lawxx", "JONCx", "WALLx", 0.01);
-  const int kind = *rc::gen::inRange(0, 3);
+  const int kind = *rc::gen::inRange(0, 4);
   const double top = gap + height;
   const double vx = in_range(-0.5, 0.5), vy = in_range(-1.0, 0.0);
   if (kind >= 1) b.add_polyline(lower, top_clockwise(lower_mesh, 0.0, top, w, nx), "LOWER");
@@ -104,6 +104,13 @@ Stack random_stack(bool iqs_only) {
     for (Eigen::Index i = 0; i < state.v_begin.size(); i += 2) state.v_begin.segment<2>(i) = Vector2d(vx, vy);
     s.scene = std::move(scene);
     return s;
+  }
+  if (kind == 3) {
+    // A rigid disk on the block: DKALp.
+    const double radius = in_range(0.05, 0.2);
+    b.add_disk(in_range(0.1, 0.9), top + gap + radius, radius, 1000.0, "DISKS");
+    b.see("DISKx", "DISKS", "lawxx", "ALpxx", "LOWER", 0.01);
+    b.set_velocity(1, Vector3d(vx, vy, in_range(-5.0, 5.0)));
   }
   if (kind == 2) {
     // A rigid square on the block: PLALp.
