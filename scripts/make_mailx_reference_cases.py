@@ -9,6 +9,8 @@ in <case>/lmgc90_reference/ (DOF.LAST, GPV.LAST): the files the tests compare lm
   one end and falling under gravity for 200 steps: the θ-scheme against LMGC90's.
 - mailx_disk_on_block: a rigid DISKx rolling and sliding on an elastic Q4xxx block whose top is one
   ALpxx polyline ('+ALpxx' lines), under a tilted gravity (DKALp): against LMGC90.
+- mailx_glued_blocks: an elastic block glued on another (COUPLED_DOF on CLALp pairs) whose bottom is
+  clamped, sheared by a tilted gravity: against LMGC90.
 - mailx_hertz_cylinder: an elastic half-cylinder (T3xxx, plane strain) pressed by a line load on a
   rigid JONCx, frictionless CLJCx contacts: the contact half-width and the peak pressure against
   Hertz's (compared with the closed form, not run by LMGC90 here).
@@ -163,6 +165,65 @@ nb_steps = 300
                    "Vloc_Rloc.INI": vloc_rloc}, text)
 
 
+def glued_blocks(folder):
+    nx, ny, length, height = 10, 3, 1.0, 0.3
+    lower_nodes, elements = w.mailx_rectangle(nx, ny, length, height, "Q4xxx")
+    upper_nodes = [(x, y + height, b) for x, y, b in lower_nodes]
+    clamp = {k + 1: [0.0, 0.0] for k, (x, y, _) in enumerate(lower_nodes) if y == 0.0}
+    top = [ny * (nx + 1) + i + 1 for i in range(nx + 1)]
+    bottom = [i + 1 for i in range(nx + 1)]
+    lower = w.mailx_bodies(lower_nodes, elements, "Q4xxx", "M2DQ4", "rubbr")[:-len("$$$$$$\n")] + "$tacty\n"
+    lower += f" ALpxx{1:7d}  color  LOWER  noda={top[0]:5d}  nodb={top[1]:5d}\n"
+    for i in range(1, nx):
+        lower += f"+ALpxx{1:7d}  color  LOWER  noda={top[i]:5d}  nodb={top[i + 1]:5d}\n"
+    upper = w.mailx_bodies(upper_nodes, elements, "Q4xxx", "M2DQ4", "rubbr").replace(" MAILx      1", " MAILx      2", 1)
+    upper = upper[:-len("$$$$$$\n")] + "$tacty\n"
+    for k, i in enumerate(range(nx, 0, -1)):  # right to left along the bottom: clockwise
+        upper += f" CLxxx{k + 1:7d}  color  UPPER  noda={bottom[i]:5d}  nodb={bottom[i - 1]:5d}  apab={w.real(0.5)}\n"
+    bodies = lower + "$$$$$$\n" + upper + "$$$$$$\n"
+    bulk = w.elas_bulk("rubbr", 1000.0, 1e6, 0.3, gravity=(5.0, -9.81))
+    tact = ("$behav  lawty\n glued  COUPLED_DOF\n\n"
+            "$seety\n cdbdy  cdtac  cdcol  behav  anbdy  antac  ancol       alert\n"
+            f" MAILx  CLxxx  UPPER  glued  MAILx  ALpxx  LOWER      {w.real(0.01)}\n")
+    loop = """for k in range(nb_steps):
+  chipy.IncrementStep()
+  chipy.ComputeFext()
+  chipy.ComputeBulk()
+  chipy.AssembleMechanicalRHS()
+  chipy.AssembleMechanicalLHS()
+  chipy.ComputeFreeVelocity()
+  chipy.SelectProxTactors()
+  chipy.RecupRloc()
+  chipy.ExSolver('Stored_Delassus_Loops         ', 'Quad ', 1e-8, 1.0, 50, 400)
+  chipy.UpdateTactBehav()
+  chipy.StockRloc()
+  chipy.ComputeDof()
+  chipy.UpdateStep()
+chipy.WriteLastDof()
+chipy.WriteLastVlocRloc()
+chipy.Finalize()
+"""
+    text = f"""# An elastic block glued on another (COUPLED_DOF on CLALp), sheared by a tilted gravity.
+# Written by scripts/make_mailx_reference_cases.py; run unchanged by LMGC90 and by lmgc-run.
+from pylmgc90 import chipy
+
+chipy.Initialize()
+chipy.checkDirectories()
+chipy.utilities_DisableLogMes()
+chipy.SetDimension(2, 1)
+chipy.TimeEvolution_SetTimeStep(1e-3)
+chipy.Integrator_InitTheta(0.5)
+chipy.ReadDatbox(deformable=True)
+chipy.ComputeMass()
+chipy.ComputeBulk()
+nb_steps = 100
+""" + loop
+    vloc_rloc = w.STATE_HEADER.replace("! DOF", "! Vloc_Rloc")
+    write(folder, {"BODIES.DAT": bodies, "MODELS.DAT": w.mailx_model("M2DQ4", "Q4xxx", lumped=True),
+                   "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": w.mailx_driven(clamp), "TACT_BEHAV.DAT": tact,
+                   "Vloc_Rloc.INI": vloc_rloc}, text)
+
+
 HERTZ = {"radius": 0.1, "young": 1e8, "poisson": 0.3, "load": 86300.0}
 
 
@@ -264,7 +325,8 @@ def main():
     parser.add_argument("--lmgc90", default=None, help="LMGC90's build folder (pylmgc90 inside)")
     args = parser.parse_args()
     cases = {"mailx_patch_q4": patch_q4, "mailx_cantilever_t3": cantilever_t3,
-             "mailx_disk_on_block": disk_on_block, "mailx_hertz_cylinder": hertz_cylinder}
+             "mailx_disk_on_block": disk_on_block, "mailx_glued_blocks": glued_blocks,
+             "mailx_hertz_cylinder": hertz_cylinder}
     for name, make in cases.items():
         folder = os.path.join(ROOT, "reference_cases", name)
         make(folder)

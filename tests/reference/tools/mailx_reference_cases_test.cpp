@@ -116,15 +116,14 @@ TEST(MailxReferenceCases, DampedCantileverWritesLmgc90sFiles) {
 namespace lmgc::test {
 namespace {
 
-// mailx_disk_on_block: a rigid disk rolling on an elastic block (DKALp) over 300 steps: LMGC90's
-// DOF.LAST byte for byte, its Vloc_Rloc.LAST interaction for interaction within 1e-9 of the file's
-// largest value (README.md: why).
-TEST(MailxReferenceCases, DiskRollingOnABlockWritesLmgc90sFiles) {
-  const fs::path dir = run_case("mailx_disk_on_block");
+// A case with contacts against LMGC90's files: DOF.LAST byte for byte, Vloc_Rloc.LAST interaction for
+// interaction (the same words and integers, every value within 1e-9 of the file's largest: the cases'
+// README.md say why).
+void expect_lmgc90_contact_files(const std::string& name, const std::string& family) {
+  const fs::path dir = run_case(name);
   if (dir.empty()) GTEST_SKIP() << "this build has no Python module (lmgc-run)";
-  const fs::path reference =
-      fs::path(LMGC_SOURCE_DIR) / "reference_cases" / "mailx_disk_on_block" / "lmgc90_reference";
-  EXPECT_TRUE(read_file(dir / "OUTBOX" / "DOF.LAST") == read_file(reference / "DOF.LAST"));
+  const fs::path reference = fs::path(LMGC_SOURCE_DIR) / "reference_cases" / name / "lmgc90_reference";
+  EXPECT_TRUE(read_file(dir / "OUTBOX" / "DOF.LAST") == read_file(reference / "DOF.LAST")) << name;
   const grammar::VlocRlocFile ours = read_vloc_rloc(dir / "OUTBOX" / "Vloc_Rloc.LAST");
   const grammar::VlocRlocFile theirs = read_vloc_rloc(reference / "Vloc_Rloc.LAST");
   ASSERT_EQ(ours.interactions.size(), theirs.interactions.size());
@@ -135,7 +134,7 @@ TEST(MailxReferenceCases, DiskRollingOnABlockWritesLmgc90sFiles) {
       for (const auto& x : v.values) scale = std::max(scale, std::abs(x.value));
   for (std::size_t k = 0; k < ours.interactions.size(); ++k) {
     const auto &a = ours.interactions[k], &b = theirs.interactions[k];
-    EXPECT_EQ(a.type.value, "DKALp");
+    EXPECT_EQ(a.type.value, family);
     EXPECT_EQ(a.words, b.words);
     EXPECT_EQ(a.integers, b.integers);
     ASSERT_EQ(a.vectors.size(), b.vectors.size());
@@ -143,6 +142,16 @@ TEST(MailxReferenceCases, DiskRollingOnABlockWritesLmgc90sFiles) {
       for (std::size_t c = 0; c < a.vectors[v].values.size(); ++c)
         EXPECT_NEAR(a.vectors[v].values[c].value, b.vectors[v].values[c].value, 1e-9 * scale);
   }
+}
+
+// mailx_disk_on_block: a rigid disk rolling on an elastic block (DKALp), 300 steps.
+TEST(MailxReferenceCases, DiskRollingOnABlockWritesLmgc90sFiles) {
+  expect_lmgc90_contact_files("mailx_disk_on_block", "DKALp");
+}
+
+// mailx_glued_blocks: a block glued on another by COUPLED_DOF on CLALp pairs, sheared, 100 steps.
+TEST(MailxReferenceCases, GluedBlocksWriteLmgc90sFiles) {
+  expect_lmgc90_contact_files("mailx_glued_blocks", "CLALp");
 }
 
 }  // namespace
