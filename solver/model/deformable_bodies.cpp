@@ -1,5 +1,8 @@
 #include "solver/model/deformable_bodies.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace lmgc::solver {
 
 bool initialise_mesh_states(DeformableBodies& d, std::string& error, std::size_t& failed_body,
@@ -123,7 +126,13 @@ void free_velocity_deformable(DeformableBodies& d, const StepContext& step) {
   for (std::size_t b = 0; b < d.states.size(); ++b) {
     MeshBodyState& s = d.states[b];
     if (s.prepared_h != step.h || s.prepared_theta != step.theta) {
-      s.scheme.prepare(s.matrices, step.h, step.theta, d.rayleigh_alpha, d.rayleigh_beta, s.velocity_driven);
+      if (!s.scheme.prepare(s.matrices, step.h, step.theta, d.rayleigh_alpha, d.rayleigh_beta,
+                            s.velocity_driven))
+        // Not a problem any θ-scheme solves (LMGC90's factorisation fails on it too): stop, say why.
+        throw std::runtime_error(
+            "MAILx body " + std::to_string(b + 1) +
+            ": its iteration matrix M + θhC + (θh)²K is singular on its free dofs (a body "
+            "that can move rigidly without mass): give it a density or drive its dofs");
       s.prepared_h = step.h;
       s.prepared_theta = step.theta;
       s.contact_compliance.resize(0, 0);  // of the previous K̂

@@ -59,6 +59,7 @@ void increment_deformable(DeformableBodies& d);  // V ← V_begin
 // F_ext = M g + driven forces θ-averaged over the step.
 void external_forces_deformable(DeformableBodies& d, const Eigen::Vector3d& gravity, const StepContext& step);
 // V_free from the residual at V_begin; K̂ refactorised when h or θ changed; driven velocities at t.
+// Throws std::runtime_error naming the body when K̂ is singular on its free dofs.
 void free_velocity_deformable(DeformableBodies& d, const StepContext& step);
 // V = V_free + K̂⁻¹ I_reac (V_free without contact); X = X_begin + h((1 − θ)V_begin + θV).
 void dof_deformable(DeformableBodies& d, const StepContext& step);

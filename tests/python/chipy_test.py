@@ -184,6 +184,35 @@ class MeshInteractions(unittest.TestCase):
             os.chdir(cwd)
             shutil.rmtree(work)
 
+    def test_a_mesh_free_to_move_without_mass_stops_the_script_naming_it(self):
+        from lmgc import chipy
+        work = tempfile.mkdtemp(prefix="lmgc_chipy_massless_")
+        shutil.copytree(os.path.join(SOURCE, "reference_cases", "mailx_glued_blocks", "DATBOX"),
+                        os.path.join(work, "DATBOX"))
+        bulk = os.path.join(work, "DATBOX", "BULK_BEHAV.DAT")
+        text = open(bulk).read().replace("Umas= 0.1000000D+04", "Umas= 0.0000000D+00")
+        open(bulk, "w").write(text)
+        cwd = os.getcwd()
+        os.chdir(work)
+        try:
+            chipy._configure(max_steps=-1, quiet=True)
+            chipy.Initialize()
+            chipy.checkDirectories()
+            chipy.SetDimension(2, 1)
+            chipy.TimeEvolution_SetTimeStep(1e-3)
+            chipy.Integrator_InitTheta(0.5)
+            chipy.ReadDatbox(deformable=True)
+            chipy.ComputeMass()
+            chipy.ComputeBulk()
+            for call in ("IncrementStep", "ComputeFext", "ComputeBulk", "AssembleMechanicalRHS"):
+                getattr(chipy, call)()
+            with self.assertRaisesRegex(RuntimeError, "MAILx body 2: its iteration matrix"):
+                chipy.ComputeFreeVelocity()
+            chipy.Finalize()
+        finally:
+            os.chdir(cwd)
+            shutil.rmtree(work)
+
 
 class ScriptRuns(unittest.TestCase):
     def run_script(self, body, *args):
