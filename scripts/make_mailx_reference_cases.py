@@ -9,6 +9,8 @@ in <case>/lmgc90_reference/ (DOF.LAST, GPV.LAST): the files the tests compare lm
   one end and falling under gravity for 200 steps: the θ-scheme against LMGC90's.
 - mailx_disk_on_block: a rigid DISKx rolling and sliding on an elastic Q4xxx block whose top is one
   ALpxx polyline ('+ALpxx' lines), under a tilted gravity (DKALp): against LMGC90.
+- mailx_block_on_wall: an elastic Q4xxx block landing and sliding on a JONCx (CLJCx, GAP_SGR_CLB)
+  under a tilted gravity: against LMGC90.
 - mailx_glued_blocks: an elastic block glued on another (COUPLED_DOF on CLALp pairs) whose bottom is
   clamped, sheared by a tilted gravity: against LMGC90.
 - mailx_hertz_cylinder: an elastic half-cylinder (T3xxx, plane strain) pressed by a line load on a
@@ -162,6 +164,62 @@ nb_steps = 300
     vloc_rloc = w.STATE_HEADER.replace("! DOF", "! Vloc_Rloc")
     write(folder, {"BODIES.DAT": bodies, "MODELS.DAT": w.mailx_model("M2DQ4", "Q4xxx", lumped=True),
                    "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": w.mailx_driven(clamp), "TACT_BEHAV.DAT": tact,
+                   "Vloc_Rloc.INI": vloc_rloc}, text)
+
+
+def block_on_wall(folder):
+    nx, ny, length, height = 8, 2, 0.4, 0.1
+    nodes, elements = w.mailx_rectangle(nx, ny, length, height, "Q4xxx")
+    nodes = [(x, y + 2e-3, b) for x, y, b in nodes]
+    bottom = [i + 1 for i in range(nx + 1)]
+    bodies = w.mailx_bodies(nodes, elements, "Q4xxx", "M2DQ4", "rubbr")[:-len("$$$$$$\n")] + "$tacty\n"
+    rank = 0
+    for i in range(nx, 0, -1):  # right to left along the bottom: clockwise
+        for apab in (0.2, 0.8):
+            rank += 1
+            bodies += f" CLxxx{rank:7d}  color  BLOCK  noda={bottom[i]:5d}  nodb={bottom[i - 1]:5d}  apab={w.real(apab)}\n"
+    bodies += "$$$$$$\n" + w.rbdy2(1, "tdurx", 0.5, -0.05, 0.0, w.joncx(1.0, 0.05))
+    bulk = w.elas_bulk("rubbr", 1000.0, 1e6, 0.3, gravity=(4.0, -9.81)) + (
+        f"\n$behav  lawty\n tdurx  RIGID                           Umas={w.real(1000.0)}\n")
+    tact = (f"$behav  lawty\n gapc0  GAP_SGR_CLB                     fric={w.real(0.3)}\n\n"
+            "$seety\n cdbdy  cdtac  cdcol  behav  anbdy  antac  ancol       alert\n"
+            f" MAILx  CLxxx  BLOCK  gapc0  RBDY2  JONCx  WALLx      {w.real(0.01)}\n")
+    loop = """for k in range(nb_steps):
+  chipy.IncrementStep()
+  chipy.ComputeFext()
+  chipy.ComputeBulk()
+  chipy.AssembleMechanicalRHS()
+  chipy.AssembleMechanicalLHS()
+  chipy.ComputeFreeVelocity()
+  chipy.SelectProxTactors()
+  chipy.RecupRloc()
+  chipy.ExSolver('Stored_Delassus_Loops         ', 'Quad ', 1e-8, 1.0, 50, 400)
+  chipy.UpdateTactBehav()
+  chipy.StockRloc()
+  chipy.ComputeDof()
+  chipy.UpdateStep()
+chipy.WriteLastDof()
+chipy.WriteLastVlocRloc()
+chipy.Finalize()
+"""
+    text = f"""# An elastic block landing and sliding on a rigid JONCx (CLJCx, GAP_SGR_CLB), tilted gravity.
+# Written by scripts/make_mailx_reference_cases.py; run unchanged by LMGC90 and by lmgc-run.
+from pylmgc90 import chipy
+
+chipy.Initialize()
+chipy.checkDirectories()
+chipy.utilities_DisableLogMes()
+chipy.SetDimension(2, 1)
+chipy.TimeEvolution_SetTimeStep(1e-3)
+chipy.Integrator_InitTheta(0.5)
+chipy.ReadDatbox(deformable=True)
+chipy.ComputeMass()
+chipy.ComputeBulk()
+nb_steps = 200
+""" + loop
+    vloc_rloc = w.STATE_HEADER.replace("! DOF", "! Vloc_Rloc")
+    write(folder, {"BODIES.DAT": bodies, "MODELS.DAT": w.mailx_model("M2DQ4", "Q4xxx", lumped=True),
+                   "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": w.fixed([1]), "TACT_BEHAV.DAT": tact,
                    "Vloc_Rloc.INI": vloc_rloc}, text)
 
 
@@ -325,7 +383,8 @@ def main():
     parser.add_argument("--lmgc90", default=None, help="LMGC90's build folder (pylmgc90 inside)")
     args = parser.parse_args()
     cases = {"mailx_patch_q4": patch_q4, "mailx_cantilever_t3": cantilever_t3,
-             "mailx_disk_on_block": disk_on_block, "mailx_glued_blocks": glued_blocks,
+             "mailx_block_on_wall": block_on_wall, "mailx_disk_on_block": disk_on_block,
+             "mailx_glued_blocks": glued_blocks,
              "mailx_hertz_cylinder": hertz_cylinder}
     for name, make in cases.items():
         folder = os.path.join(ROOT, "reference_cases", name)
