@@ -191,6 +191,19 @@ def mailx_driven(velocities):
     return out + "$$$$$$\n"
 
 
+def clxxx(rank, color, noda, nodb, apab):
+    """A MAILx '$tacty' CLxxx line: the point at apab from noda on the edge (noda, nodb)."""
+    return f" CLxxx{rank:7d}  color  {color}  noda={noda:5d}  nodb={nodb:5d}  apab={real(apab)}\n"
+
+
+def alpxx(rank, color, nodes):
+    """A MAILx ALpxx polyline through `nodes`: its first segment, then one '+ALpxx' line per segment."""
+    lines = f" ALpxx{rank:7d}  color  {color}  noda={nodes[0]:5d}  nodb={nodes[1]:5d}\n"
+    for a, b in zip(nodes[1:-1], nodes[2:]):
+        lines += f"+ALpxx{rank:7d}  color  {color}  noda={a:5d}  nodb={b:5d}\n"
+    return lines
+
+
 STATE_HEADER = ("! DOF\n\n$steps      0                time= 0.0000000D+00\n\n"
                 "!-----------------------------------------------------------------------\n")
 

@@ -87,11 +87,10 @@ def block(nx, ny, x0, y0, width, height, body, color, model, behav):
     for i in range(nx, 0, -1):  # right to left along the bottom
         for apab in (0.2, 0.8):
             rank += 1
-            text += (f" CLxxx{rank:7d}  color  {color}  noda={bottom[i]:5d}  nodb={bottom[i - 1]:5d}"
-                     f"  apab={w.real(apab)}\n")
+            text += w.clxxx(rank, color, bottom[i], bottom[i - 1], apab)
     for i in range(nx):
         rank += 1
-        text += f" ALpxx{rank:7d}  color  {color}  noda={top[i]:5d}  nodb={top[i + 1]:5d}\n"
+        text += w.alpxx(rank, color, [top[i], top[i + 1]])
     return text + "$$$$$$\n"
 
 

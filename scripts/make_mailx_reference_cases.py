@@ -72,11 +72,51 @@ def write(folder, files, text):
     files = dict(files)
     files.setdefault("DOF.INI", w.STATE_HEADER)
     files.setdefault("GPV.INI", w.STATE_HEADER)
+    if "TACT_BEHAV.DAT" in files:  # LMGC90 reads it whenever there are laws
+        files.setdefault("Vloc_Rloc.INI", w.STATE_HEADER.replace("! DOF", "! Vloc_Rloc"))
     for name, content in files.items():
         with open(os.path.join(folder, "DATBOX", name), "w") as f:
             f.write(content)
     with open(os.path.join(folder, "command.py"), "w") as f:
         f.write(text)
+
+
+def contact_script(comment, dt, theta, steps, tolerance, gs_it2):
+    """command.py of a case with contacts: LMGC90's linear driver sequence, the NLGS
+    (Stored_Delassus_Loops, Quad, tolerance, 50 sweeps a check, gs_it2 checks), the last DOF and
+    Vloc_Rloc files. dt, theta and tolerance are the script's literals (strings)."""
+    return f"""{comment}
+# Written by scripts/make_mailx_reference_cases.py; run unchanged by LMGC90 and by lmgc-run.
+from pylmgc90 import chipy
+
+chipy.Initialize()
+chipy.checkDirectories()
+chipy.utilities_DisableLogMes()
+chipy.SetDimension(2, 1)
+chipy.TimeEvolution_SetTimeStep({dt})
+chipy.Integrator_InitTheta({theta})
+chipy.ReadDatbox(deformable=True)
+chipy.ComputeMass()
+chipy.ComputeBulk()
+nb_steps = {steps}
+for k in range(nb_steps):
+  chipy.IncrementStep()
+  chipy.ComputeFext()
+  chipy.ComputeBulk()
+  chipy.AssembleMechanicalRHS()
+  chipy.AssembleMechanicalLHS()
+  chipy.ComputeFreeVelocity()
+  chipy.SelectProxTactors()
+  chipy.RecupRloc()
+  chipy.ExSolver('Stored_Delassus_Loops         ', 'Quad ', {tolerance}, 1.0, 50, {gs_it2})
+  chipy.UpdateTactBehav()
+  chipy.StockRloc()
+  chipy.ComputeDof()
+  chipy.UpdateStep()
+chipy.WriteLastDof()
+chipy.WriteLastVlocRloc()
+chipy.Finalize()
+"""
 
 
 def patch_q4(folder):
@@ -118,9 +158,7 @@ def disk_on_block(folder):
     clamp = {k + 1: [0.0, 0.0] for k, (x, y, _) in enumerate(nodes) if y == 0.0}
     top = [ny * (nx + 1) + i + 1 for i in range(nx + 1)]  # left to right: clockwise along the top
     bodies = w.mailx_bodies(nodes, elements, "Q4xxx", "M2DQ4", "rubbr")[:-len("$$$$$$\n")] + "$tacty\n"
-    bodies += f" ALpxx{1:7d}  color  BLOCK  noda={top[0]:5d}  nodb={top[1]:5d}\n"
-    for i in range(1, nx):
-        bodies += f"+ALpxx{1:7d}  color  BLOCK  noda={top[i]:5d}  nodb={top[i + 1]:5d}\n"
+    bodies += w.alpxx(1, "BLOCK", top)
     radius = 0.05
     bodies += "$$$$$$\n" + w.rbdy2(1, "steel", 0.2, height + radius + 1e-3, 0.0, w.disk(radius, "DISKS"))
     bulk = w.elas_bulk("rubbr", 1000.0, 1e7, 0.3, gravity=(3.0, -9.81)) + (
@@ -128,43 +166,11 @@ def disk_on_block(folder):
     tact = (f"$behav  lawty\n iqsc0  IQS_CLB                         fric={w.real(0.3)}\n\n"
             "$seety\n cdbdy  cdtac  cdcol  behav  anbdy  antac  ancol       alert\n"
             f" RBDY2  DISKx  DISKS  iqsc0  MAILx  ALpxx  BLOCK      {w.real(0.01)}\n")
-    loop = """for k in range(nb_steps):
-  chipy.IncrementStep()
-  chipy.ComputeFext()
-  chipy.ComputeBulk()
-  chipy.AssembleMechanicalRHS()
-  chipy.AssembleMechanicalLHS()
-  chipy.ComputeFreeVelocity()
-  chipy.SelectProxTactors()
-  chipy.RecupRloc()
-  chipy.ExSolver('Stored_Delassus_Loops         ', 'Quad ', 1e-6, 1.0, 50, 200)
-  chipy.UpdateTactBehav()
-  chipy.StockRloc()
-  chipy.ComputeDof()
-  chipy.UpdateStep()
-chipy.WriteLastDof()
-chipy.WriteLastVlocRloc()
-chipy.Finalize()
-"""
-    text = f"""# A rigid disk rolling and sliding on an elastic block (DKALp), under a tilted gravity.
-# Written by scripts/make_mailx_reference_cases.py; run unchanged by LMGC90 and by lmgc-run.
-from pylmgc90 import chipy
-
-chipy.Initialize()
-chipy.checkDirectories()
-chipy.utilities_DisableLogMes()
-chipy.SetDimension(2, 1)
-chipy.TimeEvolution_SetTimeStep(1e-3)
-chipy.Integrator_InitTheta(0.5)
-chipy.ReadDatbox(deformable=True)
-chipy.ComputeMass()
-chipy.ComputeBulk()
-nb_steps = 300
-""" + loop
-    vloc_rloc = w.STATE_HEADER.replace("! DOF", "! Vloc_Rloc")
+    text = contact_script(
+        "# A rigid disk rolling and sliding on an elastic block (DKALp), under a tilted gravity.",
+        "1e-3", "0.5", 300, "1e-6", 200)
     write(folder, {"BODIES.DAT": bodies, "MODELS.DAT": w.mailx_model("M2DQ4", "Q4xxx", lumped=True),
-                   "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": w.mailx_driven(clamp), "TACT_BEHAV.DAT": tact,
-                   "Vloc_Rloc.INI": vloc_rloc}, text)
+                   "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": w.mailx_driven(clamp), "TACT_BEHAV.DAT": tact}, text)
 
 
 def block_on_wall(folder):
@@ -177,50 +183,18 @@ def block_on_wall(folder):
     for i in range(nx, 0, -1):  # right to left along the bottom: clockwise
         for apab in (0.2, 0.8):
             rank += 1
-            bodies += f" CLxxx{rank:7d}  color  BLOCK  noda={bottom[i]:5d}  nodb={bottom[i - 1]:5d}  apab={w.real(apab)}\n"
+            bodies += w.clxxx(rank, "BLOCK", bottom[i], bottom[i - 1], apab)
     bodies += "$$$$$$\n" + w.rbdy2(1, "tdurx", 0.5, -0.05, 0.0, w.joncx(1.0, 0.05))
     bulk = w.elas_bulk("rubbr", 1000.0, 1e6, 0.3, gravity=(4.0, -9.81)) + (
         f"\n$behav  lawty\n tdurx  RIGID                           Umas={w.real(1000.0)}\n")
     tact = (f"$behav  lawty\n gapc0  GAP_SGR_CLB                     fric={w.real(0.3)}\n\n"
             "$seety\n cdbdy  cdtac  cdcol  behav  anbdy  antac  ancol       alert\n"
             f" MAILx  CLxxx  BLOCK  gapc0  RBDY2  JONCx  WALLx      {w.real(0.01)}\n")
-    loop = """for k in range(nb_steps):
-  chipy.IncrementStep()
-  chipy.ComputeFext()
-  chipy.ComputeBulk()
-  chipy.AssembleMechanicalRHS()
-  chipy.AssembleMechanicalLHS()
-  chipy.ComputeFreeVelocity()
-  chipy.SelectProxTactors()
-  chipy.RecupRloc()
-  chipy.ExSolver('Stored_Delassus_Loops         ', 'Quad ', 1e-8, 1.0, 50, 400)
-  chipy.UpdateTactBehav()
-  chipy.StockRloc()
-  chipy.ComputeDof()
-  chipy.UpdateStep()
-chipy.WriteLastDof()
-chipy.WriteLastVlocRloc()
-chipy.Finalize()
-"""
-    text = f"""# An elastic block landing and sliding on a rigid JONCx (CLJCx, GAP_SGR_CLB), tilted gravity.
-# Written by scripts/make_mailx_reference_cases.py; run unchanged by LMGC90 and by lmgc-run.
-from pylmgc90 import chipy
-
-chipy.Initialize()
-chipy.checkDirectories()
-chipy.utilities_DisableLogMes()
-chipy.SetDimension(2, 1)
-chipy.TimeEvolution_SetTimeStep(1e-3)
-chipy.Integrator_InitTheta(0.5)
-chipy.ReadDatbox(deformable=True)
-chipy.ComputeMass()
-chipy.ComputeBulk()
-nb_steps = 200
-""" + loop
-    vloc_rloc = w.STATE_HEADER.replace("! DOF", "! Vloc_Rloc")
+    text = contact_script(
+        "# An elastic block landing and sliding on a rigid JONCx (CLJCx, GAP_SGR_CLB), tilted gravity.",
+        "1e-3", "0.5", 200, "1e-8", 400)
     write(folder, {"BODIES.DAT": bodies, "MODELS.DAT": w.mailx_model("M2DQ4", "Q4xxx", lumped=True),
-                   "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": w.fixed([1]), "TACT_BEHAV.DAT": tact,
-                   "Vloc_Rloc.INI": vloc_rloc}, text)
+                   "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": w.fixed([1]), "TACT_BEHAV.DAT": tact}, text)
 
 
 def glued_blocks(folder):
@@ -231,55 +205,21 @@ def glued_blocks(folder):
     top = [ny * (nx + 1) + i + 1 for i in range(nx + 1)]
     bottom = [i + 1 for i in range(nx + 1)]
     lower = w.mailx_bodies(lower_nodes, elements, "Q4xxx", "M2DQ4", "rubbr")[:-len("$$$$$$\n")] + "$tacty\n"
-    lower += f" ALpxx{1:7d}  color  LOWER  noda={top[0]:5d}  nodb={top[1]:5d}\n"
-    for i in range(1, nx):
-        lower += f"+ALpxx{1:7d}  color  LOWER  noda={top[i]:5d}  nodb={top[i + 1]:5d}\n"
+    lower += w.alpxx(1, "LOWER", top)
     upper = w.mailx_bodies(upper_nodes, elements, "Q4xxx", "M2DQ4", "rubbr").replace(" MAILx      1", " MAILx      2", 1)
     upper = upper[:-len("$$$$$$\n")] + "$tacty\n"
     for k, i in enumerate(range(nx, 0, -1)):  # right to left along the bottom: clockwise
-        upper += f" CLxxx{k + 1:7d}  color  UPPER  noda={bottom[i]:5d}  nodb={bottom[i - 1]:5d}  apab={w.real(0.5)}\n"
+        upper += w.clxxx(k + 1, "UPPER", bottom[i], bottom[i - 1], 0.5)
     bodies = lower + "$$$$$$\n" + upper + "$$$$$$\n"
     bulk = w.elas_bulk("rubbr", 1000.0, 1e6, 0.3, gravity=(5.0, -9.81))
     tact = ("$behav  lawty\n glued  COUPLED_DOF\n\n"
             "$seety\n cdbdy  cdtac  cdcol  behav  anbdy  antac  ancol       alert\n"
             f" MAILx  CLxxx  UPPER  glued  MAILx  ALpxx  LOWER      {w.real(0.01)}\n")
-    loop = """for k in range(nb_steps):
-  chipy.IncrementStep()
-  chipy.ComputeFext()
-  chipy.ComputeBulk()
-  chipy.AssembleMechanicalRHS()
-  chipy.AssembleMechanicalLHS()
-  chipy.ComputeFreeVelocity()
-  chipy.SelectProxTactors()
-  chipy.RecupRloc()
-  chipy.ExSolver('Stored_Delassus_Loops         ', 'Quad ', 1e-8, 1.0, 50, 400)
-  chipy.UpdateTactBehav()
-  chipy.StockRloc()
-  chipy.ComputeDof()
-  chipy.UpdateStep()
-chipy.WriteLastDof()
-chipy.WriteLastVlocRloc()
-chipy.Finalize()
-"""
-    text = f"""# An elastic block glued on another (COUPLED_DOF on CLALp), sheared by a tilted gravity.
-# Written by scripts/make_mailx_reference_cases.py; run unchanged by LMGC90 and by lmgc-run.
-from pylmgc90 import chipy
-
-chipy.Initialize()
-chipy.checkDirectories()
-chipy.utilities_DisableLogMes()
-chipy.SetDimension(2, 1)
-chipy.TimeEvolution_SetTimeStep(1e-3)
-chipy.Integrator_InitTheta(0.5)
-chipy.ReadDatbox(deformable=True)
-chipy.ComputeMass()
-chipy.ComputeBulk()
-nb_steps = 100
-""" + loop
-    vloc_rloc = w.STATE_HEADER.replace("! DOF", "! Vloc_Rloc")
+    text = contact_script(
+        "# An elastic block glued on another (COUPLED_DOF on CLALp), sheared by a tilted gravity.",
+        "1e-3", "0.5", 100, "1e-8", 400)
     write(folder, {"BODIES.DAT": bodies, "MODELS.DAT": w.mailx_model("M2DQ4", "Q4xxx", lumped=True),
-                   "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": w.mailx_driven(clamp), "TACT_BEHAV.DAT": tact,
-                   "Vloc_Rloc.INI": vloc_rloc}, text)
+                   "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": w.mailx_driven(clamp), "TACT_BEHAV.DAT": tact}, text)
 
 
 HERTZ = {"radius": 0.1, "young": 1e8, "poisson": 0.3, "load": 86300.0}
@@ -318,8 +258,7 @@ def hertz_cylinder(folder):
         if abs(0.5 * (angles[j] + angles[j + 1]) - 1.5 * math.pi) > 0.3:
             continue
         k += 1
-        bodies += (f" CLxxx{k:7d}  color  CYLIN  noda={index[(n_ring, j + 1)]:5d}  nodb={index[(n_ring, j)]:5d}"
-                   f"  apab={w.real(0.5)}\n")
+        bodies += w.clxxx(k, "CYLIN", index[(n_ring, j + 1)], index[(n_ring, j)], 0.5)
     bodies += "$$$$$$\n" + w.rbdy2(1, "tdurx", 0.0, -R - 0.05, 0.0, w.joncx(0.5, 0.05))
     # The load: a uniform traction P / 2R on the flat face, as nodal forces (tributary lengths).
     face = sorted([(nodes[n - 1][0], n) for n in [1] + [index[(i, j)] for i in range(1, n_ring + 1) for j in (0, n_angle)]])
@@ -339,43 +278,11 @@ def hertz_cylinder(folder):
     tact = (f"$behav  lawty\n hertz  IQS_CLB                         fric={w.real(0.0)}\n\n"
             "$seety\n cdbdy  cdtac  cdcol  behav  anbdy  antac  ancol       alert\n"
             f" MAILx  CLxxx  CYLIN  hertz  RBDY2  JONCx  WALLx      {w.real(0.01)}\n")
-    loop = """for k in range(nb_steps):
-  chipy.IncrementStep()
-  chipy.ComputeFext()
-  chipy.ComputeBulk()
-  chipy.AssembleMechanicalRHS()
-  chipy.AssembleMechanicalLHS()
-  chipy.ComputeFreeVelocity()
-  chipy.SelectProxTactors()
-  chipy.RecupRloc()
-  chipy.ExSolver('Stored_Delassus_Loops         ', 'Quad ', 1e-8, 1.0, 50, 400)
-  chipy.UpdateTactBehav()
-  chipy.StockRloc()
-  chipy.ComputeDof()
-  chipy.UpdateStep()
-chipy.WriteLastDof()
-chipy.WriteLastVlocRloc()
-chipy.Finalize()
-"""
-    text = f"""# Hertz: an elastic half-cylinder pressed on a rigid plane by a line load, frictionless.
-# Written by scripts/make_mailx_reference_cases.py; run by lmgc-run (and by LMGC90 unchanged).
-from pylmgc90 import chipy
-
-chipy.Initialize()
-chipy.checkDirectories()
-chipy.utilities_DisableLogMes()
-chipy.SetDimension(2, 1)
-chipy.TimeEvolution_SetTimeStep(0.005)
-chipy.Integrator_InitTheta(1.0)
-chipy.ReadDatbox(deformable=True)
-chipy.ComputeMass()
-chipy.ComputeBulk()
-nb_steps = 40
-""" + loop
-    vloc_rloc = w.STATE_HEADER.replace("! DOF", "! Vloc_Rloc")
+    text = contact_script(
+        "# Hertz: an elastic half-cylinder pressed on a rigid plane by a line load, frictionless.",
+        "0.005", "1.0", 40, "1e-8", 400)
     write(folder, {"BODIES.DAT": bodies, "MODELS.DAT": w.mailx_model("M2DT3", "T3xxx", lumped=True),
-                   "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": driven, "TACT_BEHAV.DAT": tact,
-                   "Vloc_Rloc.INI": vloc_rloc}, text)
+                   "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": driven, "TACT_BEHAV.DAT": tact}, text)
 
 
 def main():

@@ -1,5 +1,5 @@
 # Hertz: an elastic half-cylinder pressed on a rigid plane by a line load, frictionless.
-# Written by scripts/make_mailx_reference_cases.py; run by lmgc-run (and by LMGC90 unchanged).
+# Written by scripts/make_mailx_reference_cases.py; run unchanged by LMGC90 and by lmgc-run.
 from pylmgc90 import chipy
 
 chipy.Initialize()

@@ -111,30 +111,21 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
     c.gap_begin = f.gap;
     return &c;
   };
+  // A side's local (t, n) velocity at the beginning of the step: its nodes' by their weights on a
+  // mesh, (v + ω × lever) on a rigid body.
+  const auto side_velocity_begin = [&](const Interaction2D& c, int side) {
+    if (side_on_mesh(c.family, side)) {
+      const Vector2d v = mesh_velocity(c, side);
+      return Vector2d(v.dot(c.tangent()), v.dot(c.normal));
+    }
+    const Vector3d& v =
+        b.velocity_begin[static_cast<std::size_t>(side == 0 ? c.candidate_body : c.antagonist_body)];
+    const Vector2d& lever = side == 0 ? c.lever_candidate : c.lever_antagonist;
+    return Vector2d(v.head<2>().dot(c.tangent()) + v.z() * lever(0),
+                    v.head<2>().dot(c.normal) + v.z() * lever(1));
+  };
   const auto relative_velocity_begin = [&](Interaction2D& c) {
-    const Vector2d t = c.tangent();
-    Vector2d vc, va;
-    double wc = 0.0, wa = 0.0;
-    if (side_on_mesh(c.family, 0)) {
-      vc = mesh_velocity(c, 0);
-    } else {
-      const Vector3d& v = b.velocity_begin[static_cast<std::size_t>(c.candidate_body)];
-      vc = v.head<2>();
-      wc = v.z();
-    }
-    if (side_on_mesh(c.family, 1)) {
-      va = mesh_velocity(c, 1);
-    } else {
-      const Vector3d& v = b.velocity_begin[static_cast<std::size_t>(c.antagonist_body)];
-      va = v.head<2>();
-      wa = v.z();
-    }
-    const double rigid_cd_t = side_on_mesh(c.family, 0) ? 0.0 : wc * c.lever_candidate(0);
-    const double rigid_cd_n = side_on_mesh(c.family, 0) ? 0.0 : wc * c.lever_candidate(1);
-    const double rigid_an_t = side_on_mesh(c.family, 1) ? 0.0 : wa * c.lever_antagonist(0);
-    const double rigid_an_n = side_on_mesh(c.family, 1) ? 0.0 : wa * c.lever_antagonist(1);
-    c.velocity_begin = Vector2d((vc - va).dot(t) + rigid_cd_t - rigid_an_t,
-                                (vc - va).dot(c.normal) + rigid_cd_n - rigid_an_n);
+    c.velocity_begin = side_velocity_begin(c, 0) - side_velocity_begin(c, 1);
   };
 
   // CLALp (mod_CLALp creation_tab_visu and compute_one_contact: mailx-2d-contact.md §5).

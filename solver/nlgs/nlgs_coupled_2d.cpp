@@ -147,7 +147,11 @@ struct CoupledNlgs2D {
     order.resize(count);
     std::iota(order.begin(), order.end(), 0u);
     any_update_at_check = false;
-    for (const NamedLaw& l : scene.laws) any_update_at_check |= updates_at_check(l.law);
+    internal_is_length.clear();
+    for (const NamedLaw& l : scene.laws) {
+      any_update_at_check |= updates_at_check(l.law);
+      internal_is_length.push_back(first_internal_is_length(l.law));
+    }
     double q2 = 0.0;
     for (std::size_t a = 0; a < count; ++a) {
       LocalProblem2D& p = problems[a];
@@ -157,7 +161,7 @@ struct CoupledNlgs2D {
       p.W = block(a, a);
       const ContactLaw& law = scene.laws[static_cast<std::size_t>(p.law)].law;
       prepare_local_problem_2d(law, p, law_step);
-      if (first_internal_is_length(law))
+      if (internal_is_length[static_cast<std::size_t>(p.law)])
         p.internal[0] = (p.family == PairFamily2D::CLALp || p.family == PairFamily2D::CLJCx) ? p.length : 0.0;
       if (p.inactive) p.r.setZero();
       contacts[a] = p;
@@ -467,6 +471,7 @@ struct CoupledNlgs2D {
   std::vector<ContactStatus> final_status;
   std::vector<OpenContactSchedule> schedule;
   std::vector<std::uint32_t> order;
+  std::vector<std::uint8_t> internal_is_length;  // per law: first_internal_is_length
 };
 
 }  // namespace
