@@ -1,6 +1,8 @@
 #include "solver/detection/mesh_detection_2d.hpp"
 
 #include <cmath>
+#include <map>
+#include <string>
 
 #include "solver/bodies/lmgc_pi.hpp"
 #include "solver/detection/pair_geometry_2d.hpp"
@@ -27,17 +29,44 @@ Vector2d left_normal(const Vector2d& a, const Vector2d& b) {
   return Vector2d(-t.y(), t.x());
 }
 
-// The first '$seety' row, in LMGC90's order, for these contactor types and colours; -1 when none.
-std::int32_t see_row(const Scene2D& scene, std::string_view cd_type, const std::string& cd_color,
-                     std::string_view an_type, const std::string& an_color) {
-  for (std::size_t v = 0; v < scene.visibility.size(); ++v) {
-    const Visibility2D& row = scene.visibility[v];
-    if (row.candidate_type == cd_type && row.candidate_color == cd_color && row.antagonist_type == an_type &&
-        row.antagonist_color == an_color)
-      return static_cast<std::int32_t>(v);
+// The '$seety' rows of the scene by colour: each contactor's colour as a small id, and for a pair of
+// contactor types the first row (in LMGC90's order) of each (candidate colour, antagonist colour), so
+// that the pair loops look a row up by two indices instead of comparing strings per pair.
+class SeeRows {
+ public:
+  explicit SeeRows(const Scene2D& scene) : scene_(scene) {
+    for (const Contactor2D& c : scene.contactors) rigid_.push_back(id_of(c.color));
+    for (const MeshContactor& c : scene.deformable.meshes.contactors) mesh_.push_back(id_of(c.color));
   }
-  return -1;
-}
+  int rigid_colour(std::size_t k) const { return rigid_[k]; }
+  int mesh_colour(std::size_t k) const { return mesh_[k]; }
+  // The rows of the (candidate type, antagonist type) pairs: rows[cd colour × colours + an colour], -1
+  // where no row sees them.
+  std::vector<std::int32_t> table(std::string_view cd_type, std::string_view an_type) const {
+    const std::size_t n = ids_.size();
+    std::vector<std::int32_t> rows(n * n, -1);
+    for (std::size_t v = 0; v < scene_.visibility.size(); ++v) {
+      const Visibility2D& row = scene_.visibility[v];
+      const auto cd = ids_.find(row.candidate_color), an = ids_.find(row.antagonist_color);
+      if (row.candidate_type != cd_type || row.antagonist_type != an_type || cd == ids_.end() ||
+          an == ids_.end())
+        continue;
+      std::int32_t& slot =
+          rows[static_cast<std::size_t>(cd->second) * n + static_cast<std::size_t>(an->second)];
+      if (slot < 0) slot = static_cast<std::int32_t>(v);  // the first match wins
+    }
+    return rows;
+  }
+  std::size_t colours() const { return ids_.size(); }
+
+ private:
+  int id_of(const std::string& colour) {
+    return ids_.emplace(colour, static_cast<int>(ids_.size())).first->second;
+  }
+  const Scene2D& scene_;
+  std::map<std::string, int> ids_;
+  std::vector<int> rigid_, mesh_;
+};
 
 // Nodes whose two velocity dofs are driven: a contact between such nodes only is not detected
 // (mailx-2d-contact.md §5.2).
@@ -85,6 +114,11 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
   const DeformableBodies& d = scene.deformable;
   const std::vector<MeshContactor>& tactors = d.meshes.contactors;
   const auto driven = fully_driven_nodes(scene);
+  const SeeRows see(scene);
+  const std::size_t colours = see.colours();
+  const auto row_in = [&](const std::vector<std::int32_t>& table, int cd_colour, int an_colour) {
+    return table[static_cast<std::size_t>(cd_colour) * colours + static_cast<std::size_t>(an_colour)];
+  };
   const RigidBodies2D& b = scene.bodies;
   const auto mesh_velocity = [&](const Interaction2D& c, int side) {
     const MeshSide2D s = mesh_side(scene, c, side);
@@ -129,7 +163,8 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
   };
 
   // CLALp (mod_CLALp creation_tab_visu and compute_one_contact: mailx-2d-contact.md §5).
-  if (scene.plan.families[static_cast<std::size_t>(PairFamily2D::CLALp)])
+  if (scene.plan.families[static_cast<std::size_t>(PairFamily2D::CLALp)]) {
+    const std::vector<std::int32_t> rows = see.table("CLxxx", "ALpxx");
     for (std::size_t icl = 0; icl < tactors.size(); ++icl) {
       const MeshContactor& cl = tactors[icl];
       if (cl.shape != MeshContactorShape::candidate_point) continue;
@@ -144,7 +179,7 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
         if (al.shape != MeshContactorShape::polyline) continue;
         // Points and segments of one body with one colour do not see each other.
         if (al.mesh == cl.mesh && al.color == cl.color) continue;
-        const std::int32_t row = see_row(scene, "CLxxx", cl.color, "ALpxx", al.color);
+        const std::int32_t row = row_in(rows, see.mesh_colour(icl), see.mesh_colour(ial));
         if (row < 0) continue;
         const VectorXd& xa = node_coordinates[static_cast<std::size_t>(al.mesh)];
         const auto nb = static_cast<std::int32_t>(al.nodes.size());
@@ -260,9 +295,11 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
       c->length = candidate_point_length(scene, cl, node_coordinates[static_cast<std::size_t>(cl.mesh)]);
       relative_velocity_begin(*c);
     }
+  }
 
   // CLJCx (mod_CLJCx: mailx-2d-contact.md §7): the first JONCx whose box holds the point.
-  if (scene.plan.families[static_cast<std::size_t>(PairFamily2D::CLJCx)])
+  if (scene.plan.families[static_cast<std::size_t>(PairFamily2D::CLJCx)]) {
+    const std::vector<std::int32_t> rows = see.table("CLxxx", "JONCx");
     for (std::size_t icl = 0; icl < tactors.size(); ++icl) {
       const MeshContactor& cl = tactors[icl];
       if (cl.shape != MeshContactorShape::candidate_point) continue;
@@ -271,7 +308,7 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
       for (std::size_t j = 0; j < scene.contactors.size(); ++j) {
         const Contactor2D& jc = scene.contactors[j];
         if (jc.shape != ContactorShape2D::joncx || !b.visible[static_cast<std::size_t>(jc.body)]) continue;
-        const std::int32_t row = see_row(scene, "CLxxx", cl.color, "JONCx", jc.color);
+        const std::int32_t row = row_in(rows, see.mesh_colour(icl), see.rigid_colour(j));
         if (row < 0) continue;
         const double alert = scene.visibility[static_cast<std::size_t>(row)].alert;
         const Vector3d& q = body_coordinates[static_cast<std::size_t>(jc.body)];
@@ -319,9 +356,11 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
         break;  // at most one JONCx per point
       }
     }
+  }
 
   // PLALp (mod_PLALp: mailx-2d-contact.md §6): ALpxx, segment, polygon, vertex.
-  if (scene.plan.families[static_cast<std::size_t>(PairFamily2D::PLALp)])
+  if (scene.plan.families[static_cast<std::size_t>(PairFamily2D::PLALp)]) {
+    const std::vector<std::int32_t> rows = see.table("POLYG", "ALpxx");
     for (std::size_t ial = 0; ial < tactors.size(); ++ial) {
       const MeshContactor& al = tactors[ial];
       if (al.shape != MeshContactorShape::polyline) continue;
@@ -334,7 +373,7 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
           const Contactor2D& pg = scene.contactors[k];
           if (pg.shape != ContactorShape2D::polygon || !b.visible[static_cast<std::size_t>(pg.body)])
             continue;
-          const std::int32_t row = see_row(scene, "POLYG", pg.color, "ALpxx", al.color);
+          const std::int32_t row = row_in(rows, see.rigid_colour(k), see.mesh_colour(ial));
           if (row < 0) continue;
           const double alert = scene.visibility[static_cast<std::size_t>(row)].alert;
           const Vector3d& q = body_coordinates[static_cast<std::size_t>(pg.body)];
@@ -373,11 +412,13 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
         }
       }
     }
+  }
 
   // DKALp (mod_DKALp: disks, then ALpxx, then segments): a disk within reach of a segment's bounding
   // circle is tested against it; beyond the segment's ends (up to the radius plus the alert), the
   // end node is the antagonist point. One contact per disk and segment.
-  if (scene.plan.families[static_cast<std::size_t>(PairFamily2D::DKALp)])
+  if (scene.plan.families[static_cast<std::size_t>(PairFamily2D::DKALp)]) {
+    const std::vector<std::int32_t> rows = see.table("DISKx", "ALpxx");
     for (std::size_t k = 0; k < scene.contactors.size(); ++k) {
       const Contactor2D& dk = scene.contactors[k];
       if (dk.shape != ContactorShape2D::disk || !b.visible[static_cast<std::size_t>(dk.body)]) continue;
@@ -388,7 +429,7 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
       for (std::size_t ial = 0; ial < tactors.size(); ++ial) {
         const MeshContactor& al = tactors[ial];
         if (al.shape != MeshContactorShape::polyline) continue;
-        const std::int32_t row = see_row(scene, "DISKx", dk.color, "ALpxx", al.color);
+        const std::int32_t row = row_in(rows, see.rigid_colour(k), see.mesh_colour(ial));
         if (row < 0) continue;
         const double alert = scene.visibility[static_cast<std::size_t>(row)].alert;
         const VectorXd& xa = node_coordinates[static_cast<std::size_t>(al.mesh)];
@@ -434,6 +475,7 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
         }
       }
     }
+  }
 }
 
 }  // namespace lmgc::solver
