@@ -172,6 +172,14 @@ def mailx_model(model, element, lumped):
             f"                      mstrg  {'lump_' if lumped else 'coher'}\n")
 
 
+def mailx_model_neo_hookean(model, element):
+    """MODELS.DAT: one mechanical model in large strain (total Lagrangian), MatLib's neo-Hookean material."""
+    return (f"$model  mdlty  finel  eleop  value\n {model}\n        MECAx  {element}  isext  MatL_\n"
+            "                      kine_  large\n                      form_  TotaL\n"
+            "                      aniso  iso__\n                      mater  neoh_\n"
+            "                      mstrg  lump_\n                      cplth  no___\n")
+
+
 def elas_bulk(name, density, young, poisson, gravity=(0.0, 0.0)):
     """BULK_BEHAV.DAT with one ELAS law."""
     return (f"$gravy\n                   grv1={real(gravity[0])}  grv2={real(gravity[1])}  grv3={real(0.0)}\n\n"

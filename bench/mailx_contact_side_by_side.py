@@ -6,6 +6,9 @@ the loop, written to loop_seconds.txt), peak memory read from the process's rusa
 Cases:
 - 4cubes: LMGC90's example mecaMAILx_RIGID_2D/4cubes (../shared; its models use MatLib, so LMGC90
   must be built with --matlib), its own command.py with the timing lines added around its loop.
+- 1q4-traction: LMGC90's example mecaMAILx_2D/1Q4-traction (one Q4xxx in large strain, MatLib's
+  neo-Hookean material, 10000 steps of LMGC90's Newton loop; no contact), its own command.py with
+  the timing lines added around its loop.
 - stack: a refined mesh of our own: two Q4xxx blocks (nx × ny cells each, plane strain, LMGC90's own
   elasticity 'isext no___') stacked on a JONCx under gravity, two CLxxx points per edge of each
   block's bottom (CLJCx for the lower, CLALp on the lower's top ALpxx for the upper), IQS_CLB,
@@ -16,7 +19,7 @@ the NLGS iterations of the run (SOLVER_INFORMATIONS: the same in both codes mean
 residual at each check) and the largest DOF difference relative to the largest value; then the
 minimum and median of the ratios.
 
-Usage: bench/mailx_contact_side_by_side.py --lmgc90 /work/lmgc90/build --case 4cubes|stack
+Usage: bench/mailx_contact_side_by_side.py --lmgc90 /work/lmgc90/build --case 4cubes|1q4-traction|stack
        [--nx 60] [--ny 20] [--steps 200] [--rounds 3] [--build build/release] [--csv FILE]
 """
 import argparse
@@ -32,7 +35,9 @@ import tempfile
 import datbox_writer as w
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-EXAMPLE = os.path.join(os.path.dirname(ROOT), "shared", "lmgc90-examples", "mecaMAILx_RIGID_2D", "4cubes")
+EXAMPLES = os.path.join(os.path.dirname(ROOT), "shared", "lmgc90-examples")
+EXAMPLE = os.path.join(EXAMPLES, "mecaMAILx_RIGID_2D", "4cubes")
+TRACTION = os.path.join(EXAMPLES, "mecaMAILx_2D", "1Q4-traction")
 
 STACK_SCRIPT = """import time
 from pylmgc90 import chipy
@@ -134,6 +139,19 @@ def make_4cubes(folder):
     return 500
 
 
+def make_traction(folder):
+    shutil.copytree(os.path.join(TRACTION, "DATBOX"), os.path.join(folder, "DATBOX"))
+    script = open(os.path.join(TRACTION, "command.py")).read()
+    loop = "while chipy.TimeEvolution_GetTime() < t_final :"
+    script = script.replace(loop, "import time\nstart = time.perf_counter()\n" + loop, 1)
+    script = script.replace("# close display & postpro",
+                            "open('loop_seconds.txt', 'w').write(repr(time.perf_counter() - start))\n"
+                            "chipy.WriteLastDof()\n# close display & postpro", 1)
+    with open(os.path.join(folder, "command.py"), "w") as f:
+        f.write(script)
+    return 10000
+
+
 def run(command, cwd, env):
     """Runs to the end; returns the peak resident memory in MiB."""
     process = subprocess.Popen(command, cwd=cwd, env=env, stdout=subprocess.DEVNULL)
@@ -155,7 +173,7 @@ def iterations(folder):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--lmgc90", required=True)
-    parser.add_argument("--case", choices=("4cubes", "stack"), required=True)
+    parser.add_argument("--case", choices=("4cubes", "1q4-traction", "stack"), required=True)
     parser.add_argument("--nx", type=int, default=60)
     parser.add_argument("--ny", type=int, default=20)
     parser.add_argument("--steps", type=int, default=200)
@@ -165,9 +183,9 @@ def main():
     args = parser.parse_args()
     scratch = tempfile.mkdtemp(prefix="lmgc_mailx_contact_bench_")
     source = os.path.join(scratch, "case")
-    if args.case == "4cubes":
+    if args.case in ("4cubes", "1q4-traction"):
         os.makedirs(source)
-        steps = make_4cubes(source)
+        steps = make_4cubes(source) if args.case == "4cubes" else make_traction(source)
     else:
         steps = args.steps
         make_stack(source, args.nx, args.ny, steps)
@@ -195,7 +213,7 @@ def main():
               f"lmgc {seconds['lmgc'] * 1e3:.3f} ms/step {memory['lmgc']:.0f} MiB, speed-up {rows[-1][3]:.2f}, "
               f"NLGS iterations {its[1]} / {its[0]}, DOF.LAST difference {difference:.1e}", file=sys.stderr)
     ratios = [row[3] for row in rows]
-    name = "4cubes" if args.case == "4cubes" else f"stack of two {args.nx} × {args.ny} Q4xxx blocks"
+    name = args.case if args.case != "stack" else f"stack of two {args.nx} × {args.ny} Q4xxx blocks"
     print("| case | steps | rounds | LMGC90 / lmgc per step, min | median | peak memory LMGC90 / lmgc (MiB) "
           "| NLGS iterations LMGC90 / lmgc | DOF.LAST largest difference |")
     print("| --- | --- | --- | --- | --- | --- | --- | --- |")

@@ -170,7 +170,8 @@ struct Session::Run {
   solver::RunSummary summary;
   std::unique_ptr<solver::StepLog> log;
   bool postpro_open = false, display_open = false;
-  std::string stopped;  // why the run cannot go on (a non-finite state, a failed write)
+  std::string stopped;             // why the run cannot go on (a non-finite state, a failed write)
+  bool inverted_reported = false;  // an inverted element was reported in the step in progress
   // The script's imposed velocities of this step: (body, dof, value).
   std::vector<std::tuple<std::size_t, int, double>> imposed;
 
@@ -207,8 +208,19 @@ struct Session::Run {
   virtual bool has_meshes() const = 0;
   virtual std::string gpv_text() const = 0;
   virtual void set_rayleigh(double alpha, double beta) = 0;
+  virtual bool has_large_strain() const = 0;
+  // mecaMAILx_ComputeResidueNorm (0 without deformable bodies).
+  virtual double residue_norm() = 0;
+  // "MAILx body b, element e (Q4xxx), Gauss point p" when the last evaluation met an inverted element.
+  virtual std::string inverted() const = 0;
+  // Back to the beginning of the step in progress (a redone or abandoned step): positions and
+  // velocities, the clock (time_begin, the step before).
+  virtual void restore_step_begin() = 0;
+  // A step without the contact stages (a case without contact laws): V = V_free for the rigid bodies.
+  virtual void skip_contacts() = 0;
   fem::Hypothesis hypothesis = fem::Hypothesis::plane_strain;
   long gpv_written = 0;
+  double time_begin = 0.0;  // the clock when the step in progress began
 };
 
 namespace {
@@ -330,6 +342,46 @@ struct DimensionRun final : Session::Run {
     else
       return {};
   }
+  bool has_large_strain() const override {
+    if constexpr (T::kDimension == 2) {
+      for (const auto& body : scene.deformable.states)
+        if (body.large_strain) return true;
+    }
+    return false;
+  }
+  double residue_norm() override {
+    if constexpr (T::kDimension == 2)
+      return solver::compute_residue_norm(scene.deformable, state);
+    else
+      return 0.0;
+  }
+  std::string inverted() const override {
+    if constexpr (T::kDimension == 2) {
+      if (const auto found = solver::inverted_element(scene.deformable)) {
+        const auto& [body, where] = *found;
+        const auto& element = scene.deformable.meshes.bodies[body].elements[where.element];
+        return "MAILx body " + std::to_string(body + 1) + ", element " + std::to_string(where.element + 1) +
+               " (" + std::string(fem::element_entry(element.kind).name) + "), Gauss point " +
+               std::to_string(where.point + 1);
+      }
+    }
+    return {};
+  }
+  void restore_step_begin() override {
+    auto& b = scene.bodies;
+    b.displacement = b.displacement_begin;
+    b.velocity = b.velocity_begin;
+    if constexpr (T::kDimension == 2)
+      for (auto& body : scene.deformable.states) {
+        body.x = body.x_begin;
+        body.v = body.v_begin;
+        body.inverted.reset();
+      }
+    if constexpr (T::kDimension == 3) b.frame = b.frame_initial;
+    state.time = time_begin;
+    --state.step;
+  }
+  void skip_contacts() override { scene.bodies.velocity = scene.bodies.velocity_free; }
   void set_rayleigh(double alpha, double beta) override {
     if constexpr (T::kDimension == 2) {
       scene.deformable.rayleigh_alpha = alpha;
@@ -714,6 +766,15 @@ void Session::stage(std::string_view name) {
   // their stiffness and compute the forces in ComputeFreeVelocity, so the call may come before the
   // time loop (as LMGC90's linear scripts make it) and more than once in a step; it tells only that
   // the stiffness exists (Rayleigh damping's βK needs it).
+  // A Newton iteration (LMGC90's loop of ComputeBulk ... ComputeDof inside a step) starts again when
+  // ComputeBulk or ComputeFreeVelocity comes after the step's ComputeDof: the iteration's stages may
+  // then run once more; each iteration starts from the velocity the previous one ended with.
+  constexpr std::uint32_t kIteration =
+      bit(Stage::compute_bulk) | bit(Stage::compute_free_velocity) | bit(Stage::select_prox_tactors) |
+      bit(Stage::recup_rloc) | bit(Stage::ex_solver) | bit(Stage::stock_rloc) | bit(Stage::compute_dof);
+  if ((*s == Stage::compute_bulk || *s == Stage::compute_free_velocity) && r.in_step &&
+      (r.done & bit(Stage::compute_dof)) && !(r.done & bit(Stage::update_tact_behav)))
+    r.done &= ~kIteration;
   if (*s == Stage::compute_bulk) {
     bulk_computed_ = true;
     if (!r.in_step) return;
@@ -721,6 +782,21 @@ void Session::stage(std::string_view name) {
     r.done |= bit(Stage::compute_bulk);
     return;
   }
+  // A case without contact laws has nothing for the contact stages to do: a script may leave them
+  // out (LMGC90's deformable scripts without contact do); the bodies then end at their free velocity.
+  if (r.in_step && !has_contact_laws()) {
+    if (*s == Stage::compute_dof && (r.done & bit(Stage::compute_free_velocity)) &&
+        !(r.done & bit(Stage::ex_solver))) {
+      r.skip_contacts();
+      r.result = NlgsResult{};
+      r.result.converged = true;  // nothing to solve
+      r.done |= bit(Stage::select_prox_tactors) | bit(Stage::recup_rloc) | bit(Stage::ex_solver);
+    }
+    if (*s == Stage::update_step) r.done |= bit(Stage::stock_rloc);
+  }
+  // StockRloc again after the Newton loop (the scripts store the converged reactions once more
+  // before UpdateStep): it keeps what the last one kept.
+  if (*s == Stage::stock_rloc && r.in_step && (r.done & bit(Stage::stock_rloc))) return;
   const StageRule& rule = kStageRules[static_cast<std::size_t>(*s)];
   if (*s == Stage::increment_step) {
     if (r.in_step)
@@ -735,7 +811,14 @@ void Session::stage(std::string_view name) {
       fail(ErrorKind::step_limit, "--max-steps " + std::to_string(session_options_.max_steps) + " reached");
     }
     if (!r.started) start_run();
+    r.time_begin = r.time();
+    if (pending_time_step_ > 0.0) {  // the step NewtonRaphson_ComputeTimeStep chose
+      options_.dt = pending_time_step_;
+      r.set_time_step(pending_time_step_);
+      pending_time_step_ = 0.0;
+    }
     r.in_step = true;
+    r.inverted_reported = false;
     r.done = 0;
     r.imposed.clear();
     r.step_start = std::chrono::steady_clock::now();
@@ -760,6 +843,22 @@ void Session::stage(std::string_view name) {
          "as UpdateTactBehav does; a step that leaves them is not run");
   r.run_stage(name, options_.nlgs);
   r.done |= bit(*s);
+  if ((*s == Stage::compute_free_velocity || *s == Stage::compute_dof) && !r.inverted_reported) {
+    if (const std::string where = r.inverted(); !where.empty()) {
+      r.inverted_reported = true;
+      const std::string what = "step " + std::to_string(r.step()) + " (t = " + std::to_string(r.time()) +
+                               "): " + where + " is inverted (det F <= 0)";
+      if (!newton_active_) {
+        r.restore_step_begin();
+        r.in_step = false;
+        r.stopped = what;
+        fail(ErrorKind::non_finite, what +
+                                        "; the step cannot be completed (no Newton loop to redo it with a "
+                                        "smaller time step); no output of this step is written");
+      }
+      warn(what + ": the Newton loop of this step diverges (NewtonRaphson_CheckConvergence returns 2)");
+    }
+  }
   if (*s == Stage::compute_free_velocity)
     for (const auto& [body, dof, value] : r.imposed) r.impose_velocity(body, dof, value, true);
   if (*s == Stage::update_step) {
@@ -778,6 +877,107 @@ void Session::stage(std::string_view name) {
       fail(ErrorKind::output, r.stopped);
     }
   }
+}
+
+void Session::set_newton_parameter(std::string_view name, double value) {
+  const std::string call = "NewtonRaphson_Set" + std::string(name);
+  if (!std::isfinite(value)) fail(ErrorKind::value, call + ": the value must be finite");
+  const auto count = [&] {
+    if (value < 1.0 || value != std::floor(value))
+      fail(ErrorKind::value, call + ": the value is a count of at least 1");
+    return value > 2e9 ? 2000000000 : static_cast<int>(value);
+  };
+  if (name == "FinalTime") {
+    newton_.final_time = value;
+  } else if (name == "MinTimeStep" || name == "MaxTimeStep") {
+    if (!(value > 0.0)) fail(ErrorKind::value, call + ": the time step must be positive");
+    (name == "MinTimeStep" ? newton_.min_step : newton_.max_step) = value;
+  } else if (name == "MaxIter") {
+    newton_.max_iterations = count();
+  } else if (name == "GoodIter") {
+    newton_.good_iterations = count();
+  } else if (name == "BadIter") {
+    newton_.bad_iterations = count();
+  } else if (name == "IncPatience") {
+    newton_.patience = count();
+  } else {
+    fail(ErrorKind::value, "unknown Newton-Raphson parameter '" + std::string(name) + "'");
+  }
+}
+
+void Session::newton_initialize(double tolerance) {
+  Run& r = running("NewtonRaphson_Initialize");
+  if (!r.in_step) fail(ErrorKind::order, "NewtonRaphson_Initialize outside a step (after IncrementStep)");
+  if (!(tolerance > 0.0) || !std::isfinite(tolerance))
+    fail(ErrorKind::value, "NewtonRaphson_Initialize: the tolerance must be a positive finite number");
+  newton_.initialize(tolerance);
+  newton_active_ = true;
+}
+
+int Session::newton_check_convergence(double norm) {
+  Run& r = running("NewtonRaphson_CheckConvergence");
+  if (!r.in_step) fail(ErrorKind::order, "NewtonRaphson_CheckConvergence outside a step");
+  if (!newton_active_)
+    fail(ErrorKind::order, "NewtonRaphson_CheckConvergence before NewtonRaphson_Initialize");
+  // An inverted element: no iterate of this step can be evaluated; LMGC90's loop would run to its
+  // last iteration on non-finite norms and then redo the step: lmgc ends the loop at once.
+  if (!r.inverted().empty()) {
+    newton_.iterations = newton_.max_iterations;
+    return NewtonRaphson::diverged;
+  }
+  return newton_.check(norm);
+}
+
+int Session::newton_compute_time_step() {
+  Run& r = running("NewtonRaphson_ComputeTimeStep");
+  if (!r.in_step || !(r.done & bit(Stage::compute_dof)))
+    fail(ErrorKind::order, "NewtonRaphson_ComputeTimeStep before the step's ComputeDof");
+  if (!newton_active_)
+    fail(ErrorKind::order, "NewtonRaphson_ComputeTimeStep before NewtonRaphson_Initialize");
+  const double h = options_.dt;
+  const bool converged = newton_.iterations < newton_.max_iterations;
+  NewtonRaphson::TimeStep next = newton_.compute(r.time(), h, r.step());
+  if (!converged && next.state == NewtonRaphson::stop && next.final_time_reached) {
+    // LMGC90 would accept this unconverged last step (its cut to the final time leaves no step to
+    // redo): lmgc redoes it from the step's beginning with h/√2, as any other failed step.
+    warn("step " + std::to_string(r.step()) +
+         ": the Newton loop did not converge on the step that reaches the final time; lmgc redoes it with "
+         "a smaller time step where LMGC90 would keep it");
+    next.h = h / std::sqrt(2.0);
+    next.state = next.h < newton_.min_step ? NewtonRaphson::stop : NewtonRaphson::redo;
+    next.final_time_reached = false;
+  }
+  if (!converged && next.state == NewtonRaphson::stop) {
+    const std::string what =
+        "step " + std::to_string(r.step()) + " (t = " + std::to_string(r.time()) +
+        "): the Newton loop did not converge in " + std::to_string(newton_.max_iterations) +
+        " iterations and the time step cannot be cut below NewtonRaphson_SetMinTimeStep (" +
+        std::to_string(newton_.min_step) + ")";
+    r.restore_step_begin();
+    r.in_step = false;
+    write_last_dof();
+    write_last_gpv();
+    r.stopped = what;
+    r.summary.fail(solver::RunFailure::not_converged, what);
+    fail(ErrorKind::newton_diverged, what + "; DOF.LAST and GPV.LAST hold the last converged step");
+  }
+  if (next.state == NewtonRaphson::stop && !next.final_time_reached)
+    warn("step " + std::to_string(r.step()) +
+         ": the next time step would be below NewtonRaphson_SetMinTimeStep: "
+         "the run stops after this step, as LMGC90's does");
+  if (next.state == NewtonRaphson::redo) {
+    r.restore_step_begin();
+    r.in_step = false;
+  }
+  if (next.h > 0.0 && next.h != h) pending_time_step_ = next.h;
+  return next.state;
+}
+
+double Session::residue_norm() {
+  Run& r = running("mecaMAILx_ComputeResidueNorm");
+  if (!r.in_step || !(r.done & bit(Stage::compute_dof)))
+    fail(ErrorKind::order, "mecaMAILx_ComputeResidueNorm before the iteration's ComputeDof");
+  return r.residue_norm();
 }
 
 void Session::recup_rloc(std::optional<double> tolerance) {
@@ -901,6 +1101,10 @@ void Session::set_rayleigh_damping(double alpha, double beta) {
   if (!std::isfinite(alpha) || !std::isfinite(beta) || alpha < 0.0 || beta < 0.0)
     fail(ErrorKind::value, "mecaMAILx_ComputeRayleighDamping: alpha and beta are finite and non-negative");
   require_case("mecaMAILx_ComputeRayleighDamping");
+  if (run_->has_large_strain() && (alpha != 0.0 || beta != 0.0))
+    fail(ErrorKind::not_implemented,
+         "mecaMAILx_ComputeRayleighDamping on a case with large-strain bodies: lmgc does not run damping "
+         "with a tangent stiffness yet");
   // LMGC90 builds C from the element masses and stiffnesses computed so far (mailx-2d.md §4.2):
   // before ComputeMass the mass part is 0, before the first ComputeBulk the stiffness part.
   const double a = mass_computed_ ? alpha : 0.0, b = bulk_computed_ ? beta : 0.0;

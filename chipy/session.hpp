@@ -17,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "chipy/newton_raphson.hpp"
 #include "run/run_options.hpp"
 
 namespace lmgc::chipy {
@@ -30,7 +31,12 @@ enum class ErrorKind {
   non_finite,       // the state became NaN or infinite (FloatingPointError)
   output,           // an output file could not be written (OSError)
   step_limit,       // --max-steps reached: .LAST written, the script ends (SystemExit 0)
+  newton_diverged,  // the Newton loop failed at the smallest time step: .LAST of the last good step
+                    // written, the script ends (SystemExit kNewtonDivergedExit)
 };
+
+// lmgc-run's exit code when the Newton loop of a step does not converge (lmgc-solve passes it on).
+inline constexpr int kNewtonDivergedExit = 7;
 
 struct Error : std::runtime_error {
   Error(ErrorKind kind, const std::string& message) : std::runtime_error(message), kind(kind) {}
@@ -79,6 +85,16 @@ class Session {
   void ptpt3_use_current_nonuc0(int use);
   // mecaMAILx_ComputeRayleighDamping(alpha, beta): C = αM + βK on every deformable body.
   void set_rayleigh_damping(double alpha, double beta);
+
+  // NewtonRaphson_SetFinalTime, SetMinTimeStep, SetMaxTimeStep, SetMaxIter, SetGoodIter, SetBadIter,
+  // SetIncPatience: `name` is the part after 'NewtonRaphson_Set'.
+  void set_newton_parameter(std::string_view name, double value);
+  // NewtonRaphson_Initialize(tol), CheckConvergence(norm) (0 converged, 1 iterate, 2 diverged),
+  // ComputeTimeStep (0 go on, 1 redo the step, 2 stop), mecaMAILx_ComputeResidueNorm.
+  void newton_initialize(double tolerance);
+  int newton_check_convergence(double norm);
+  int newton_compute_time_step();
+  double residue_norm();
 
   // DATBOX. The first reading reads and checks the whole case (errors raise with the diagnostics).
   void read(Reading what);
@@ -162,6 +178,9 @@ class Session {
   bool read_[static_cast<int>(Reading::count)] = {};
   long steps_done_ = 0;
   mutable bool warned_recup_by_position_ = false;
+  NewtonRaphson newton_;
+  bool newton_active_ = false;      // the script runs a Newton loop (NewtonRaphson_Initialize was called)
+  double pending_time_step_ = 0.0;  // h for the next IncrementStep, chosen by ComputeTimeStep
   std::unique_ptr<Run> run_;
 };
 

@@ -66,6 +66,11 @@ PYBIND11_MODULE(_chipy, m) {
         case ErrorKind::output:
           PyErr_SetString(PyExc_OSError, e.what());
           return;
+        case ErrorKind::newton_diverged:
+          // The script ends with lmgc-run's own exit code, the message on stderr.
+          PySys_WriteStderr("lmgc: %s\n", e.what());
+          PyErr_SetObject(PyExc_SystemExit, py::int_(lmgc::chipy::kNewtonDivergedExit).ptr());
+          return;
         case ErrorKind::step_limit:
           // The script ends there, as a successful run: SystemExit(0) is not caught by
           // `except Exception` in a script.
@@ -122,6 +127,11 @@ PYBIND11_MODULE(_chipy, m) {
       .def("has_deformable_bodies", &Session::has_deformable_bodies)
       .def("has_contact_laws", &Session::has_contact_laws)
       .def("set_rayleigh_damping", &Session::set_rayleigh_damping)
+      .def("set_newton_parameter", &Session::set_newton_parameter)
+      .def("newton_initialize", &Session::newton_initialize)
+      .def("newton_check_convergence", &Session::newton_check_convergence)
+      .def("newton_compute_time_step", &Session::newton_compute_time_step)
+      .def("residue_norm", &Session::residue_norm)
       .def("open_display", &Session::open_display)
       .def("write_display", &Session::write_display)
       .def("close_display", &Session::close_display)

@@ -7,7 +7,8 @@ The script runs in CASE_DIR with `from pylmgc90 import chipy` giving lmgc's chip
 package put first on sys.path for this run only); sys.argv is the script's path and the arguments
 after `--` (scripts test --norand). --max-steps N ends the script after N steps: the .LAST files
 are written and lmgc-run exits 0. Exit: 0 success, 1 the script raised (its traceback is shown),
-2 usage.
+2 usage, 7 a Newton loop did not converge at the smallest time step (DOF.LAST and GPV.LAST hold the
+last converged step).
 """
 import argparse
 import os

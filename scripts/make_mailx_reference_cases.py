@@ -13,6 +13,14 @@ in <case>/lmgc90_reference/ (DOF.LAST, GPV.LAST): the files the tests compare lm
   under a tilted gravity: against LMGC90.
 - mailx_glued_blocks: an elastic block glued on another (COUPLED_DOF on CLALp pairs) whose bottom is
   clamped, sheared by a tilted gravity: against LMGC90.
+- mailx_neo_hookean_stretch: a square of 2 × 2 Q4xxx in large strain (MatLib's neo-Hookean material)
+  stretched by 50 % in 20 quasi-static steps of LMGC90's Newton loop: P22 against the closed form of
+  plane-strain uniaxial stress, and against LMGC90.
+- mailx_adaptive_stretch: the same square stretched in large steps with few Newton iterations
+  allowed: LMGC90's adaptive time step cuts steps and grows them back; the steps, their time steps
+  and the final state against LMGC90's.
+- mailx_rotated_at_rest: the same square at rest, rotated by 90° in DOF.INI: its stresses stay at
+  round-off (frame invariance), against LMGC90 too.
 - mailx_hertz_cylinder: an elastic half-cylinder (T3xxx, plane strain) pressed by a line load on a
   rigid JONCx, frictionless CLJCx contacts: the contact half-width and the peak pressure against
   Hertz's (compared with the closed form, not run by LMGC90 here).
@@ -117,6 +125,104 @@ chipy.WriteLastDof()
 chipy.WriteLastVlocRloc()
 chipy.Finalize()
 """
+
+
+def newton_script(comment, dt, theta, t_final, dt_min, dt_max, max_iter, patience, tol):
+    """command.py of a large-strain case without contact: LMGC90's Newton loop and adaptive step (the
+    sequence of its example 1Q4-traction); each step's time step, iterations and ComputeTimeStep
+    state go to steps.txt."""
+    return f"""{comment}
+# Written by scripts/make_mailx_reference_cases.py; run unchanged by LMGC90 and by lmgc-run.
+from pylmgc90 import chipy
+
+chipy.Initialize()
+chipy.checkDirectories()
+chipy.utilities_DisableLogMes()
+chipy.SetDimension(2, 1)
+chipy.TimeEvolution_SetTimeStep({dt!r})
+chipy.Integrator_InitTheta({theta!r})
+chipy.NewtonRaphson_SetFinalTime({t_final!r})
+chipy.NewtonRaphson_SetMinTimeStep({dt_min!r})
+chipy.NewtonRaphson_SetMaxTimeStep({dt_max!r})
+chipy.NewtonRaphson_SetMaxIter({max_iter})
+chipy.NewtonRaphson_SetIncPatience({patience})
+chipy.ReadDatbox(deformable=True)
+chipy.ComputeMass()
+log = open('steps.txt', 'w')
+while chipy.TimeEvolution_GetTime() < {t_final!r}:
+  chipy.IncrementStep()
+  chipy.ComputeFext()
+  chipy.NewtonRaphson_Initialize({tol!r})
+  is_converged = 1
+  k = 0
+  while is_converged == 1:
+    k += 1
+    chipy.ComputeBulk()
+    chipy.AssembleMechanicalRHS()
+    chipy.AssembleMechanicalLHS()
+    chipy.ComputeFreeVelocity()
+    chipy.ComputeDof()
+    if k > 1:
+      is_converged = chipy.NewtonRaphson_CheckConvergence(chipy.mecaMAILx_ComputeResidueNorm())
+  h = chipy.TimeEvolution_GetTimeStep()
+  istate = chipy.NewtonRaphson_ComputeTimeStep()
+  log.write('%d %.6e %d %d\\n' % (chipy.TimeEvolution_GetStep(), h, k, istate))
+  if not istate == 1:
+    chipy.UpdateStep()
+    chipy.WriteOut(5)
+    if istate == 2:
+      break
+log.close()
+chipy.WriteLastDof()
+chipy.WriteLastGPV()
+chipy.Finalize()
+"""
+
+
+def square_case(folder, script_text, dof_ini=None):
+    """The unit square of 2 × 2 Q4xxx (E = 1e6 Pa, ν = 0.3, ρ = 1 kg/m², plane strain, MatLib's
+    neo-Hookean), its bottom held vertically (the corner (0, 0) also horizontally) and its top pulled
+    up at 0.5 m/s, unless dof_ini holds it at rest elsewhere."""
+    nodes, elements = w.mailx_rectangle(2, 2, 1.0, 1.0, "Q4xxx")
+    files = {"BODIES.DAT": w.mailx_bodies(nodes, elements, "Q4xxx", "M2DNL", "rubbr"),
+             "MODELS.DAT": w.mailx_model_neo_hookean("M2DNL", "Q4xxx"),
+             "BULK_BEHAV.DAT": w.elas_bulk("rubbr", 1.0, 1e6, 0.3)}
+    if dof_ini is None:
+        driven = {}
+        for k, (x, y, _) in enumerate(nodes):
+            if y == 0.0:
+                driven[k + 1] = [0.0 if x == 0.0 else None, 0.0]
+            elif y == 1.0:
+                driven[k + 1] = [None, 0.5]
+        files["DRV_DOF.DAT"] = w.mailx_driven(driven)
+    else:
+        files["DRV_DOF.DAT"] = "$$$$$$\n"
+        files["DOF.INI"] = dof_ini(nodes)
+    write(folder, files, script_text)
+
+
+def neo_hookean_stretch(folder):
+    square_case(folder, newton_script(
+        "# A 2 x 2 Q4xxx square (neo-Hookean) stretched by 50 % in 20 quasi-static steps.",
+        0.05, 1.0, 1.0, 0.05, 0.05, 20, 9999999, 1e-10))
+
+
+def adaptive_stretch(folder):
+    square_case(folder, newton_script(
+        "# The square stretched in large steps, 4 Newton iterations allowed: the step is cut and grows back.",
+        0.25, 1.0, 1.0, 1e-3, 0.25, 4, 2, 1e-10))
+
+
+def rotated_at_rest(folder):
+    def dof_ini(nodes):
+        text = w.STATE_HEADER + "$bdyty\n MAILx      1\n$model\n MECAx\n$nodty\n"
+        for k, (x, y, _) in enumerate(nodes):  # X = R x − x, R the rotation by 90°
+            text += (f" NO2xx{k + 1:7d}                X(1)={w.real(-y - x)}  X(2)={w.real(x - y)}\n"
+                     f"                             V(1)={w.real(0.0)}  V(2)={w.real(0.0)}\n")
+        return text + "$$$$$$\n"
+    square_case(folder, newton_script(
+        "# The square at rest, rotated by 90 degrees: no stress (frame invariance).",
+        0.05, 0.5, 0.5, 0.05, 0.05, 20, 9999999, 1e-10), dof_ini=dof_ini)
 
 
 def patch_q4(folder):
@@ -288,15 +394,18 @@ def hertz_cylinder(folder):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--lmgc90", default=None, help="LMGC90's build folder (pylmgc90 inside)")
+    parser.add_argument("--only", nargs="*", default=None, help="run LMGC90 on these cases only")
     args = parser.parse_args()
     cases = {"mailx_patch_q4": patch_q4, "mailx_cantilever_t3": cantilever_t3,
              "mailx_block_on_wall": block_on_wall, "mailx_disk_on_block": disk_on_block,
              "mailx_glued_blocks": glued_blocks,
+             "mailx_neo_hookean_stretch": neo_hookean_stretch, "mailx_adaptive_stretch": adaptive_stretch,
+             "mailx_rotated_at_rest": rotated_at_rest,
              "mailx_hertz_cylinder": hertz_cylinder}
     for name, make in cases.items():
         folder = os.path.join(ROOT, "reference_cases", name)
         make(folder)
-        if not args.lmgc90 or name == "mailx_hertz_cylinder":
+        if not args.lmgc90 or name == "mailx_hertz_cylinder" or (args.only and name not in args.only):
             continue
         work = os.path.join("/tmp", "lmgc90_" + name)
         shutil.rmtree(work, ignore_errors=True)
@@ -308,7 +417,9 @@ def main():
         for f in ("DOF.LAST", "GPV.LAST", "Vloc_Rloc.LAST"):
             if os.path.exists(os.path.join(work, "OUTBOX", f)):
                 shutil.copy(os.path.join(work, "OUTBOX", f), reference)
-        for f in sorted(os.listdir(os.path.join(work, "POSTPRO"))):
+        if os.path.exists(os.path.join(work, "steps.txt")):
+            shutil.copy(os.path.join(work, "steps.txt"), reference)
+        for f in sorted(os.listdir(os.path.join(work, "POSTPRO"))) if os.path.isdir(os.path.join(work, "POSTPRO")) else []:
             if f.startswith(("Dep_", "Fint_")):
                 shutil.copy(os.path.join(work, "POSTPRO", f), reference)
         print(f"{name}: LMGC90's DOF.LAST and GPV.LAST stored in {reference}")

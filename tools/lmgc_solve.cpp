@@ -24,12 +24,13 @@
 namespace {
 
 constexpr int kExitOk = 0;
-constexpr int kExitData = 1;          // the case's data are invalid (lmgc-check errors)
-constexpr int kExitUsage = 2;         // the command line, or a folder that is not a case
-constexpr int kExitNotConverged = 3;  // --strict: a step stopped at the NLGS's iteration cap
-constexpr int kExitOutput = 4;        // an output file could not be written (disk full, ...)
-constexpr int kExitRefused = 5;       // the case uses what lmgc-solve does not run yet (L4001-L4007)
-constexpr int kExitNonFinite = 6;     // a body's state became NaN or infinite
+constexpr int kExitData = 1;            // the case's data are invalid (lmgc-check errors)
+constexpr int kExitUsage = 2;           // the command line, or a folder that is not a case
+constexpr int kExitNotConverged = 3;    // --strict: a step stopped at the NLGS's iteration cap
+constexpr int kExitOutput = 4;          // an output file could not be written (disk full, ...)
+constexpr int kExitRefused = 5;         // the case uses what lmgc-solve does not run yet (L4001-L4007)
+constexpr int kExitNonFinite = 6;       // a body's state became NaN or infinite
+constexpr int kExitNewtonDiverged = 7;  // a Newton loop did not converge at the smallest time step
 // Stopped by a signal after finishing a step and writing .LAST: 128 + the signal's number
 // (129 SIGHUP, 130 SIGINT, 143 SIGTERM), as shells report it.
 constexpr int kExitSignalBase = 128;
@@ -170,6 +171,8 @@ int main(int argc, char** argv) {
       "Exit: 0 success, 1 invalid data, 2 usage, 3 a step not converged under --strict, 4 an output could "
       "not\n"
       "be written, 5 the case uses what lmgc-solve does not run yet, 6 a state became NaN or infinite,\n"
+      "7 a Newton loop (deformable bodies) did not converge at the smallest time step (.LAST of the last\n"
+      "converged step),\n"
       "129/130/143 stopped by SIGHUP/SIGINT/SIGTERM after the step in progress (.LAST written).");
   try {
     app.parse(argc, argv);
@@ -379,6 +382,9 @@ int main(int argc, char** argv) {
     case solver::RunFailure::non_finite:
       std::cerr << "lmgc-solve: " << summary.error << "\n";
       return kExitNonFinite;
+    case solver::RunFailure::not_converged:  // a Newton loop: its script runs through lmgc-run
+      std::cerr << "lmgc-solve: " << summary.error << "\n";
+      return kExitNewtonDiverged;
   }
   if (summary.stop_signal != 0) return kExitSignalBase + summary.stop_signal;
   if (options.strict && summary.steps_not_converged > 0) return kExitNotConverged;

@@ -1,5 +1,7 @@
 #include "solver/driver/case_input.hpp"
 
+#include <set>
+
 #include "grammar/bodies/writer.hpp"
 #include "grammar/command/expand.hpp"
 #include "grammar/tact_behav/contactor_pairs.hpp"
@@ -101,9 +103,17 @@ bool prepare_run_2d(const case_folder::CaseFiles& files, Scene2D& scene, RunOutp
     }
   // Contact with deformable bodies: the pairs CLALp, CLJCx, PLALp and DKALp are run; a visibility row
   // that names a MAILx body with another pair refuses the case.
+  // A row between contactor types the case does not both have never makes a contact (not refused).
+  std::set<std::string> contactor_types;
+  for (const grammar::Body& body : files.bodies->bodies)
+    for (const grammar::Contactor& c : body.contactors)
+      contactor_types.insert(std::string(grammar::see_name(c.type.value)));
   if (files.tact_behav)
     for (const grammar::SeeEntry& see : files.tact_behav->sees) {
       if (see.candidate_body.value != "MAILx" && see.antagonist_body.value != "MAILx") continue;
+      if (!contactor_types.count(std::string(grammar::see_name(see.candidate_contactor.value))) ||
+          !contactor_types.count(std::string(grammar::see_name(see.antagonist_contactor.value))))
+        continue;
       PairFamily2D family;
       if (contactor_pair_family_2d(grammar::see_name(see.candidate_contactor.value),
                                    grammar::see_name(see.antagonist_contactor.value), family) &&

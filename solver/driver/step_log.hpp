@@ -14,9 +14,10 @@ namespace lmgc::solver {
 // Why a run stopped before its last step, if it did (each has its own exit code in lmgc-solve).
 enum class RunFailure {
   none,
-  data,        // the case cannot run as given (found when the run starts)
-  output,      // an output file could not be written (disk full, ...)
-  non_finite,  // a body's state became NaN or infinite
+  data,           // the case cannot run as given (found when the run starts)
+  output,         // an output file could not be written (disk full, ...)
+  non_finite,     // a body's state became NaN or infinite
+  not_converged,  // a Newton loop failed at the smallest time step allowed
 };
 
 struct RunSummary {

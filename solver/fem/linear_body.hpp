@@ -20,11 +20,20 @@
 
 namespace lmgc::solver::fem {
 
+// The behaviour a Gauss point follows: linear elasticity (small strain), or MatLib's compressible
+// neo-Hookean potential (large strain, neo_hookean.hpp).
+enum class MaterialLaw : std::uint8_t { linear_elastic, neo_hookean };
+
 struct Material {
   double young = 0.0;
   double poisson = 0.0;
   double density = 0.0;
+  MaterialLaw law = MaterialLaw::linear_elastic;
 };
+
+// MODELS.DAT 'kine_': small strain, or large strain in the total Lagrangian form ('form_ TotaL':
+// the deformation gradient F on the reference configuration, large_strain.hpp).
+enum class Kinematics : std::uint8_t { small_strain, total_lagrangian };
 
 struct MeshElement {
   ElementKind kind = ElementKind::T3;
@@ -39,6 +48,7 @@ struct MeshBody {
   std::vector<MeshElement> elements;
   std::vector<Material> materials;
   bool lumped_mass = false;  // MODELS.DAT 'mstrg lump_'
+  Kinematics kinematics = Kinematics::small_strain;
   std::size_t nodes() const { return coordinates.size() / static_cast<std::size_t>(dimension); }
   std::size_t dofs() const { return coordinates.size(); }
 };
@@ -67,6 +77,11 @@ class LinearThetaScheme {
   void free_velocity(const Eigen::VectorXd& x_begin, const Eigen::VectorXd& v_begin,
                      const Eigen::VectorXd& f_ext, std::span<const DrivenVelocity> driven,
                      Eigen::VectorXd& v_free) const;
+  // ΔV = K̂⁻¹ (R − K̂ ΔV_d) + ΔV_d: the increment of a residual R with the driven dofs' increments
+  // ΔV_d (zero on the free dofs) imposed (the Newton iteration of a nonlinear body).
+  Eigen::VectorXd increment(const Eigen::VectorXd& residual, const Eigen::VectorXd& imposed) const {
+    return solve_free(residual - iteration_ * imposed) + imposed;
+  }
   // ΔV = K̂⁻¹ I: the velocity a contact impulse I adds (0 on driven dofs).
   Eigen::VectorXd response(const Eigen::VectorXd& impulse) const;
   // X = X_begin + h((1 − θ)V_begin + θV).
@@ -76,6 +91,7 @@ class LinearThetaScheme {
   Eigen::VectorXd internal_force(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
     return stiffness_ * x + damping_ * v;
   }
+  const Eigen::SparseMatrix<double>& damping() const { return damping_; }
   double h() const { return h_; }
   double theta() const { return theta_; }
 

@@ -36,7 +36,7 @@ void increment_step(Scene2D& scene, StepContext& step) {
   RigidBodies2D& b = scene.bodies;
   std::fill(b.impulse.begin(), b.impulse.end(), Vector3d::Zero());
   b.velocity = b.velocity_begin;
-  if (!scene.deformable.empty()) increment_deformable(scene.deformable);
+  if (!scene.deformable.empty()) increment_deformable(scene.deformable, step);
 }
 
 void compute_external_forces(Scene2D& scene, const StepContext& step) {

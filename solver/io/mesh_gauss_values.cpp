@@ -1,5 +1,7 @@
 #include "solver/io/mesh_gauss_values.hpp"
 
+#include "solver/fem/large_strain.hpp"
+
 namespace lmgc::solver {
 
 namespace {
@@ -82,6 +84,29 @@ std::vector<std::vector<grammar::Real>> element_lines(const fem::MeshBody& body,
 
 }  // namespace
 
+namespace {
+
+// A large-strain body's points: P and F (11, 12, 21, 22, 33), then the material's internal variables
+// (mailx-2d-large-strain.md §5).
+std::vector<std::vector<grammar::Real>> large_strain_lines(const fem::MeshBody& body,
+                                                           const Eigen::VectorXd& displacement,
+                                                           std::size_t e) {
+  std::vector<std::vector<grammar::Real>> lines;
+  const auto values = [](const auto& v) {
+    std::vector<grammar::Real> line;
+    for (auto x : v) line.push_back(grammar::Real{x});
+    return line;
+  };
+  for (const fem::LargeStrainPoint& p : fem::large_strain_points(body, displacement, e)) {
+    lines.push_back(values(p.stress));
+    lines.push_back(values(p.gradient));
+    if (!p.internal.empty()) lines.push_back(values(p.internal));
+  }
+  return lines;
+}
+
+}  // namespace
+
 grammar::GpvBody gauss_point_values(const fem::MeshBody& body, bool matlib,
                                     const Eigen::VectorXd& displacement, int body_number) {
   grammar::GpvBody out;
@@ -92,7 +117,9 @@ grammar::GpvBody gauss_point_values(const fem::MeshBody& body, bool matlib,
     written.number = static_cast<std::int64_t>(e + 1);
     grammar::GpvModelBlock block;
     block.model = grammar::Word{std::string("MECAx")};
-    block.lines = element_lines(body, matlib, displacement, e);
+    block.lines = body.kinematics == fem::Kinematics::total_lagrangian
+                      ? large_strain_lines(body, displacement, e)
+                      : element_lines(body, matlib, displacement, e);
     written.models.push_back(std::move(block));
     out.elements.push_back(std::move(written));
   }
@@ -101,9 +128,25 @@ grammar::GpvBody gauss_point_values(const fem::MeshBody& body, bool matlib,
 
 void element_mean_strain_stress(const fem::MeshBody& body, const Eigen::VectorXd& displacement,
                                 std::size_t element, Eigen::Vector4d& strain, Eigen::Vector4d& stress) {
-  const auto lines = element_lines(body, false, displacement, element);
   strain.setZero();
   stress.setZero();
+  if (body.kinematics == fem::Kinematics::total_lagrangian) {
+    // Large strain: the Green–Lagrange strain E = ½(FᵀF − I) (γxy = 2E12) and the Cauchy stress
+    // σ = P Fᵀ / det F, averaged over the Gauss points.
+    const auto points = fem::large_strain_points(body, displacement, element);
+    for (const fem::LargeStrainPoint& p : points) {
+      Eigen::Matrix3d f = Eigen::Matrix3d::Zero(), pk = Eigen::Matrix3d::Zero();
+      f << p.gradient(0), p.gradient(1), 0, p.gradient(2), p.gradient(3), 0, 0, 0, p.gradient(4);
+      pk << p.stress(0), p.stress(1), 0, p.stress(2), p.stress(3), 0, 0, 0, p.stress(4);
+      const Eigen::Matrix3d e = 0.5 * (f.transpose() * f - Eigen::Matrix3d::Identity());
+      const Eigen::Matrix3d sigma = pk * f.transpose() / f.determinant();
+      const double w = 1.0 / static_cast<double>(points.size());
+      strain += w * Eigen::Vector4d(e(0, 0), e(1, 1), 2.0 * e(0, 1), e(2, 2));
+      stress += w * Eigen::Vector4d(sigma(0, 0), sigma(1, 1), sigma(0, 1), sigma(2, 2));
+    }
+    return;
+  }
+  const auto lines = element_lines(body, false, displacement, element);
   const std::size_t points = lines.size() / 2;
   for (std::size_t p = 0; p < points; ++p)
     for (int k = 0; k < 4 && static_cast<std::size_t>(k) < lines[2 * p].size(); ++k) {

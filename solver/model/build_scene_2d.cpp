@@ -1,6 +1,7 @@
 #include "solver/model/build_scene_2d.hpp"
 
 #include <cmath>
+#include <set>
 
 #include "grammar/tact_behav/contactor_pairs.hpp"
 #include "grammar/tact_behav/law_catalogue.hpp"
@@ -155,8 +156,17 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
     ContactLaw law;
     if (contact_law_of(card, law)) scene.laws.push_back({card.nickname.value, law});
   }
+  // The contactor types of the case: a row between types that are not both there never makes a
+  // contact, and its law is not needed (LMGC90 runs such a case; its law is never called).
+  std::set<std::string> contactor_types;
+  for (const grammar::Body& body : in.bodies->bodies)
+    for (const grammar::Contactor& c : body.contactors)
+      contactor_types.insert(std::string(grammar::see_name(c.type.value)));
   // LMGC90 looks rows up in its own order (duplicates merged, then sorted): first match wins.
   for (const grammar::SeeEntry& see : grammar::lmgc90_see_order(in.tact_behav->sees)) {
+    if (!contactor_types.count(std::string(grammar::see_name(see.candidate_contactor.value))) ||
+        !contactor_types.count(std::string(grammar::see_name(see.antagonist_contactor.value))))
+      continue;
     // Rows between RBDY2 bodies, and rows with a MAILx side whose pair has a mesh family
     // (CLALp, CLJCx, PLALp, DKALp); prepare_run_2d refuses the other MAILx rows.
     const bool rigid = see.candidate_body.value == "RBDY2" && see.antagonist_body.value == "RBDY2";

@@ -1,5 +1,7 @@
 #include "solver/model/deformable_bodies.hpp"
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -17,7 +19,8 @@ bool initialise_mesh_states(DeformableBodies& d, std::string& error, std::size_t
     }
     const auto n = static_cast<Eigen::Index>(mesh.dofs());
     s.x = s.x_begin = s.v = s.v_begin = s.v_free = s.f_ext = Eigen::VectorXd::Zero(n);
-    s.internal_force = s.inertial_force = s.residue = Eigen::VectorXd::Zero(n);
+    s.internal_force = s.inertial_force = s.residue = s.rhs = Eigen::VectorXd::Zero(n);
+    s.large_strain = mesh.kinematics == fem::Kinematics::total_lagrangian;
   }
   return true;
 }
@@ -99,10 +102,13 @@ bool build_deformable_bodies(const case_folder::CaseFiles& files, fem::Hypothesi
   return true;
 }
 
-void increment_deformable(DeformableBodies& d) {
+void increment_deformable(DeformableBodies& d, const StepContext& step) {
   for (MeshBodyState& s : d.states) {
     s.v = s.v_begin;
     s.contact_impulse.resize(0);  // this step's contacts set it
+    s.inverted.reset();
+    // The first iterate of a large-strain body: X = X_begin + hV_begin (mecaMAILx_IncrementStep).
+    if (s.large_strain) s.x = s.x_begin + step.h * s.v_begin;
   }
 }
 
@@ -122,37 +128,95 @@ void external_forces_deformable(DeformableBodies& d, const Eigen::Vector3d& grav
           (1.0 - step.theta) * dd.value(step.begin_time()) + step.theta * dd.value(step.time);
 }
 
+namespace {
+
+std::vector<fem::DrivenVelocity> driven_velocities(const DeformableBodies& d, std::size_t b, double time) {
+  std::vector<fem::DrivenVelocity> driven;
+  for (const DrivenDof2D& dd : d.driven)
+    if (!dd.is_force && static_cast<std::size_t>(dd.body) == b) driven.push_back({dd.dof, dd.value(time)});
+  return driven;
+}
+
+[[noreturn]] void singular(std::size_t b) {
+  // Not a problem any θ-scheme solves (LMGC90's factorisation fails on it too): stop, say why.
+  throw std::runtime_error("MAILx body " + std::to_string(b + 1) +
+                           ": its iteration matrix M + θhC + (θh)²K is singular on its free dofs (a body "
+                           "that can move rigidly without mass): give it a density or drive its dofs");
+}
+
+// One Newton iteration of a large-strain body from its iterate V: F_int and K_t at X_θ, R(V),
+// K̂_t factorised, V_free = V + K̂_t⁻¹ R with the driven velocities imposed.
+void free_velocity_large_strain(DeformableBodies& d, std::size_t b, const StepContext& step) {
+  MeshBodyState& s = d.states[b];
+  const fem::MeshBody& mesh = d.meshes.bodies[b];
+  const double h = step.h, theta = step.theta;
+  const Eigen::VectorXd x_theta = s.x_begin + theta * h * ((1.0 - theta) * s.v_begin + theta * s.v);
+  fem::LinearBodyMatrices tangent;
+  tangent.mass = s.matrices.mass;
+  Eigen::VectorXd internal;
+  fem::InvertedElement inverted;
+  if (!fem::large_strain_forces(mesh, x_theta, internal, &tangent.stiffness, inverted)) {
+    s.inverted = inverted;
+    s.v_free = s.v;
+    return;
+  }
+  if (!s.scheme.prepare(tangent, h, theta, 0.0, 0.0, s.velocity_driven)) singular(b);
+  s.prepared_h = 0.0;  // a linear K̂ is not kept
+  s.contact_compliance.resize(0, 0);
+  s.compliance_row.clear();
+  s.rhs = s.matrices.mass * (s.v_begin - s.v) + h * (s.f_ext - internal);
+  Eigen::VectorXd imposed = Eigen::VectorXd::Zero(s.v.size());
+  for (const fem::DrivenVelocity& dv : driven_velocities(d, b, step.time))
+    imposed(dv.dof) = dv.value - s.v(dv.dof);
+  s.v_free = s.v + s.scheme.increment(s.rhs, imposed);
+}
+
+}  // namespace
+
 void free_velocity_deformable(DeformableBodies& d, const StepContext& step) {
   for (std::size_t b = 0; b < d.states.size(); ++b) {
     MeshBodyState& s = d.states[b];
+    if (s.large_strain) {
+      free_velocity_large_strain(d, b, step);
+      continue;
+    }
     if (s.prepared_h != step.h || s.prepared_theta != step.theta) {
       if (!s.scheme.prepare(s.matrices, step.h, step.theta, d.rayleigh_alpha, d.rayleigh_beta,
                             s.velocity_driven))
-        // Not a problem any θ-scheme solves (LMGC90's factorisation fails on it too): stop, say why.
-        throw std::runtime_error(
-            "MAILx body " + std::to_string(b + 1) +
-            ": its iteration matrix M + θhC + (θh)²K is singular on its free dofs (a body "
-            "that can move rigidly without mass): give it a density or drive its dofs");
+        singular(b);
       s.prepared_h = step.h;
       s.prepared_theta = step.theta;
       s.contact_compliance.resize(0, 0);  // of the previous K̂
       s.compliance_row.clear();
     }
-    std::vector<fem::DrivenVelocity> driven;
-    for (const DrivenDof2D& dd : d.driven)
-      if (!dd.is_force && static_cast<std::size_t>(dd.body) == b)
-        driven.push_back({dd.dof, dd.value(step.time)});
-    s.scheme.free_velocity(s.x_begin, s.v_begin, s.f_ext, driven, s.v_free);
+    // The residual at the iterate V (V_begin at a step's first iteration), for the residue norm.
+    const double h = step.h, theta = step.theta;
+    const Eigen::VectorXd v_theta = theta * s.v + (1.0 - theta) * s.v_begin;
+    s.rhs = s.matrices.mass * (s.v_begin - s.v) -
+            h * (s.matrices.stiffness * (s.x_begin + theta * h * v_theta)) -
+            h * (s.scheme.damping() * v_theta) + h * s.f_ext;
+    s.scheme.free_velocity(s.x_begin, s.v_begin, s.f_ext, driven_velocities(d, b, step.time), s.v_free);
   }
 }
 
 void dof_deformable(DeformableBodies& d, const StepContext& step) {
-  for (MeshBodyState& s : d.states) {
+  for (std::size_t b = 0; b < d.states.size(); ++b) {
+    MeshBodyState& s = d.states[b];
+    if (s.inverted) continue;  // nothing to advance from
     const bool contact = s.contact_impulse.size() == s.v_free.size() && !s.contact_impulse.isZero(0.0);
     // A full solve, not the condensed compliance (mailx-2d-contact.md §8.6).
     s.v = contact ? Eigen::VectorXd(s.v_free + s.scheme.response(s.contact_impulse)) : s.v_free;
     s.x = s.scheme.displacement(s.x_begin, s.v_begin, s.v);
-    s.internal_force = s.scheme.internal_force(s.x, s.v);
+    if (s.large_strain) {
+      // LMGC90's ComputeField: F_int at the end configuration X.
+      fem::InvertedElement inverted;
+      if (!fem::large_strain_forces(d.meshes.bodies[b], s.x, s.internal_force, nullptr, inverted)) {
+        s.inverted = inverted;
+        continue;
+      }
+    } else {
+      s.internal_force = s.scheme.internal_force(s.x, s.v);
+    }
     s.inertial_force = s.matrices.mass * (s.v - s.v_begin) / step.h;
     s.residue = s.internal_force + s.inertial_force - s.f_ext;
     if (contact) s.residue -= s.contact_impulse / step.h;
@@ -198,6 +262,31 @@ void update_deformable(DeformableBodies& d) {
     s.x_begin = s.x;
     s.v_begin = s.v;
   }
+}
+
+double compute_residue_norm(DeformableBodies& d, const StepContext& step) {
+  double norm = 0.0;
+  for (std::size_t b = 0; b < d.states.size(); ++b) {
+    MeshBodyState& s = d.states[b];
+    if (s.inverted) return std::numeric_limits<double>::infinity();
+    // LMGC90 keeps it as the body's residue (Fint EVOLUTION's Res columns; mailx-2d.md §8.4).
+    Eigen::VectorXd& residue = s.residue;
+    residue = s.rhs;
+    if (s.contact_impulse.size() == residue.size()) residue += s.contact_impulse;
+    for (std::int32_t dof : s.velocity_driven) residue(dof) = 0.0;
+    const auto largest = [](const Eigen::VectorXd& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; };
+    double scale =
+        step.h * std::max({largest(s.internal_force), largest(s.inertial_force), largest(s.f_ext)});
+    if (scale <= 0.1) scale = 1.0;
+    norm = std::max(norm, largest(residue) / scale);
+  }
+  return norm;
+}
+
+std::optional<std::pair<std::size_t, fem::InvertedElement>> inverted_element(const DeformableBodies& d) {
+  for (std::size_t b = 0; b < d.states.size(); ++b)
+    if (d.states[b].inverted) return std::make_pair(b, *d.states[b].inverted);
+  return std::nullopt;
 }
 
 double kinetic_energy(const DeformableBodies& d) {

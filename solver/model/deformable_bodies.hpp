@@ -6,10 +6,12 @@
 // The stages of the step (solver/integrator/step_2d.cpp) call the functions below for them, next
 // to the rigid bodies': docs/lmgc90-facts/mailx-2d.md §4.
 #include <Eigen/Core>
+#include <optional>
 #include <vector>
 
 #include "case_folder/case_files.hpp"
 #include "grammar/common/diagnostic.hpp"
+#include "solver/fem/large_strain.hpp"
 #include "solver/model/driven_dofs.hpp"
 #include "solver/model/mesh_bodies.hpp"
 #include "solver/model/step_context.hpp"
@@ -32,6 +34,14 @@ struct MeshBodyState {
   fem::LinearThetaScheme scheme;
   double prepared_h = 0.0, prepared_theta = 0.0;  // K̂ is factorised for these (0: not yet)
   std::vector<std::int32_t> velocity_driven;      // dofs whose velocity DRV_DOF.DAT imposes
+  // LMGC90's AssembleMechanicalRHS at the velocity V the iteration starts from, as an impulse:
+  // R(V) = M(V_begin − V) + h(F_ext − F_int(X_θ) − C V_θ), X_θ = X_begin + θh((1 − θ)V_begin + θV),
+  // V_θ = θV + (1 − θ)V_begin (mailx-2d-large-strain.md §3). mecaMAILx_ComputeResidueNorm reads it.
+  Eigen::VectorXd rhs;
+  // A large-strain body whose last evaluation met an inverted element (det F ≤ 0 at a Gauss point):
+  // the step cannot be completed from this iterate.
+  std::optional<fem::InvertedElement> inverted;
+  bool large_strain = false;  // K̂ is rebuilt from the tangent K_t at every iteration
 };
 
 struct DeformableBodies {
@@ -55,14 +65,23 @@ bool initialise_mesh_states(DeformableBodies& d, std::string& error, std::size_t
                             std::size_t& failed_element);
 
 // The stages (each over every deformable body).
-void increment_deformable(DeformableBodies& d);  // V ← V_begin
+// V ← V_begin (and X ← X_begin + hV_begin for a large-strain body: its first iterate).
+void increment_deformable(DeformableBodies& d, const StepContext& step);
 // F_ext = M g + driven forces θ-averaged over the step.
 void external_forces_deformable(DeformableBodies& d, const Eigen::Vector3d& gravity, const StepContext& step);
 // V_free from the residual at V_begin; K̂ refactorised when h or θ changed; driven velocities at t.
 // Throws std::runtime_error naming the body when K̂ is singular on its free dofs.
 void free_velocity_deformable(DeformableBodies& d, const StepContext& step);
+// Large-strain bodies iterate (LMGC90's Newton loop): V_free = V + K̂_t⁻¹ R(V) from the current
+// iterate V, K̂_t = M + (θh)² K_t(X_θ) factorised at every call.
 // V = V_free + K̂⁻¹ I_reac (V_free without contact); X = X_begin + h((1 − θ)V_begin + θV).
 void dof_deformable(DeformableBodies& d, const StepContext& step);
+// mecaMAILx_ComputeResidueNorm: the largest over bodies of ‖R + I_reac‖∞ (driven dofs left out)
+// over max(h‖F_int‖∞, h‖F_inert‖∞, h‖F_ext‖∞) (1 when that is ≤ 0.1); +∞ when a body is inverted.
+// Each body's residue becomes R + I_reac with its driven dofs zeroed, as LMGC90 overwrites it.
+double compute_residue_norm(DeformableBodies& d, const StepContext& step);
+// The first inverted element met in the step's last evaluation: (body, element), if any.
+std::optional<std::pair<std::size_t, fem::InvertedElement>> inverted_element(const DeformableBodies& d);
 // Builds each body's contact_compliance on the nodes of its contactors, where not built since K̂
 // was last factorised.
 void prepare_contact_compliance(DeformableBodies& d);

@@ -31,7 +31,7 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
   };
   // The models lmgc runs: MECAx, small strain, linear isotropic elasticity.
   std::map<std::string, const grammar::Model*> models;
-  std::map<std::string, bool> matlib;
+  std::map<std::string, bool> matlib, large_strain;
   if (files.models)
     for (const grammar::Model& m : files.models->models) {
       models[m.nickname.value] = &m;
@@ -44,16 +44,41 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
         return refuse(models_path, m.element.span,
                       "model '" + m.nickname.value + "' uses the element " + m.element.value +
                           ", which lmgc does not have yet (it has T3xxx, Q4xxx, T6xxx, Q8xxx, TE4xx, H8xxx)");
+      // Small strain with linear elasticity, or large strain in the total Lagrangian form with
+      // MatLib's neo-Hookean material (fem/large_strain.hpp, fem/neo_hookean.hpp).
       const grammar::ModelOption* kine = option(m, "kine_");
-      if (kine && kine->value.value != "small")
+      const grammar::ModelOption* form = option(m, "form_");
+      const grammar::ModelOption* mater = option(m, "mater");
+      const grammar::ModelOption* isext_option = option(m, "isext");
+      const bool large = kine && kine->value.value == "large";
+      if (kine && !large && kine->value.value != "small")
         return refuse(models_path, kine->value.span,
                       "model '" + m.nickname.value + "' asks for 'kine_ " + kine->value.value +
-                          "': lmgc runs small strain only for now (large strain comes with the Newton loop)");
-      const grammar::ModelOption* mater = option(m, "mater");
-      if (mater && mater->value.value != "elas_")
+                          "': LMGC90 knows small and large");
+      if (large) {
+        if (!form || form->value.value != "TotaL")
+          return refuse(models_path, form ? form->value.span : kine->value.span,
+                        "model '" + m.nickname.value + "' asks for large strain in the form '" +
+                            (form ? form->value.value : std::string("(none)")) +
+                            "': lmgc runs the total Lagrangian form (form_ TotaL) only for now");
+        if (!mater || mater->value.value != "neoh_" || !isext_option || isext_option->value.value != "MatL_")
+          return refuse(models_path, mater ? mater->value.span : kine->value.span,
+                        "model '" + m.nickname.value +
+                            "' asks for large strain with another material than MatLib's neo-Hookean "
+                            "('isext MatL_', 'mater neoh_'): lmgc runs that one only for now");
+        if (hypothesis == fem::Hypothesis::three_d)
+          return refuse(models_path, kine->value.span,
+                        "model '" + m.nickname.value + "': lmgc runs large strain in 2D only for now");
+        if (hypothesis == fem::Hypothesis::plane_stress)
+          return refuse(models_path, kine->value.span,
+                        "model '" + m.nickname.value +
+                            "': large strain in plane stress, which LMGC90 does not run either");
+      } else if (mater && mater->value.value != "elas_") {
         return refuse(models_path, mater->value.span,
                       "model '" + m.nickname.value + "' asks for 'mater " + mater->value.value +
-                          "': lmgc runs linear elasticity (elas_) only for now");
+                          "': lmgc runs linear elasticity (elas_) in small strain only for now");
+      }
+      large_strain[m.nickname.value] = large;
       const grammar::ModelOption* aniso = option(m, "aniso");
       if (aniso && aniso->value.value != "iso__")
         return refuse(models_path, aniso->value.span,
@@ -67,15 +92,15 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
                            id == "mater" || id == "mstrg" || id == "cplth";
         const bool accepted = !known          ? false
                               : id == "isext" ? (value == "no___" || value == "MatL_")
-                              : id == "form_" ? value == "xxxxx"
+                              : id == "form_" ? value == (large ? "TotaL" : "xxxxx")
                               : id == "cplth" ? value == "no___"
                                               : true;
         if (!accepted)
           return refuse(
               models_path, o.id.span,
               "model '" + m.nickname.value + "' asks for '" + id + " " + value +
-                  "', which lmgc does not run yet (it runs small-strain linear elasticity: isext no___ or "
-                  "MatL_, form_ xxxxx, no thermal coupling)");
+                  "', which lmgc does not run yet (it runs small-strain linear elasticity, isext no___ or "
+                  "MatL_, and large-strain neo-Hookean, form_ TotaL; no thermal coupling)");
       }
       const grammar::ModelOption* isext = option(m, "isext");
       matlib[m.nickname.value] = isext && isext->value.value == "MatL_";
@@ -90,16 +115,18 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
   // Materials: the ELAS laws, by nickname.
   std::map<std::string, std::int32_t> material_of;
   std::vector<fem::Material> materials;
-  const auto material = [&](const grammar::Word& behav) -> std::int32_t {
-    auto it = material_of.find(behav.value);
+  const auto material = [&](const grammar::Word& behav, fem::MaterialLaw law) -> std::int32_t {
+    const std::string key = behav.value + (law == fem::MaterialLaw::neo_hookean ? "|neoh_" : "");
+    auto it = material_of.find(key);
     if (it != material_of.end()) return it->second;
     if (!files.bulk_behav) return -1;
-    for (const grammar::BulkLaw& law : files.bulk_behav->laws) {
-      if (law.nickname.value != behav.value) continue;
-      if (law.law_type.value != "ELAS" || law.density_field) return -1;
+    for (const grammar::BulkLaw& card : files.bulk_behav->laws) {
+      if (card.nickname.value != behav.value) continue;
+      if (card.law_type.value != "ELAS" || card.density_field) return -1;
       fem::Material m;
-      m.density = law.density.value;
-      for (const grammar::BulkBlock& block : law.blocks)
+      m.law = law;
+      m.density = card.density.value;
+      for (const grammar::BulkBlock& block : card.blocks)
         if (block.kind == grammar::BulkBlockKind::elas && !block.lines.empty() && !block.lines[0].field &&
             block.lines[0].values.size() >= 2) {
           m.young = block.lines[0].values[0].value;
@@ -108,7 +135,7 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
       if (!(m.young > 0.0)) return -1;
       const auto id = static_cast<std::int32_t>(materials.size());
       materials.push_back(m);
-      material_of.emplace(behav.value, id);
+      material_of.emplace(key, id);
       return id;
     }
     return -1;
@@ -154,7 +181,9 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
                         "node " + std::to_string(n) + " is not a node of this body");
         element.nodes[k] = static_cast<std::int32_t>(n - 1);
       }
-      element.material = material(reference->behav);
+      const bool large = large_strain[model.nickname.value];
+      element.material = material(reference->behav,
+                                  large ? fem::MaterialLaw::neo_hookean : fem::MaterialLaw::linear_elastic);
       if (element.material < 0)
         return refuse(
             bulk_path, reference->behav.span,
@@ -166,6 +195,10 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
       if (any && lump != lumped)
         return refuse(models_path, model.nickname.span,
                       "a body whose elements mix lumped and consistent masses");
+      const auto kinematics = large ? fem::Kinematics::total_lagrangian : fem::Kinematics::small_strain;
+      if (any && kinematics != mesh.kinematics)
+        return refuse(models_path, model.nickname.span, "a body whose elements mix small and large strain");
+      mesh.kinematics = kinematics;
       lumped = lump;
       any = true;
       body_matlib = matlib[model.nickname.value];

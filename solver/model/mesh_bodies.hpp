@@ -1,10 +1,12 @@
 #pragma once
-// The MAILx bodies of a case as linear elastic meshes (solver/fem/linear_body.hpp): elements from
-// BODIES.DAT with the finite element of their MODELS.DAT model, materials from the ELAS laws of
-// BULK_BEHAV.DAT (Umas, EYng, EPss), lumped or consistent mass from the model's 'mstrg'. What lmgc
-// does not run yet (large strain, another material, an anisotropic law, a thermal model, an
-// element outside the catalogue) is refused with L4003 at the model's line: never replaced by
-// another model; so is a contactor other than CLxxx and ALpxx. docs/lmgc90-facts/mailx-2d.md §1-§3.
+// The MAILx bodies of a case as meshes (solver/fem/linear_body.hpp): elements from BODIES.DAT with
+// the finite element of their MODELS.DAT model, materials from the ELAS laws of BULK_BEHAV.DAT
+// (Umas, EYng, EPss) — linear elasticity in small strain, MatLib's neo-Hookean material in large
+// strain (total Lagrangian, fem/large_strain.hpp) — lumped or consistent mass from the model's
+// 'mstrg'. What lmgc does not run yet (the updated Lagrangian form, another material, an
+// anisotropic law, a thermal model, an element outside the catalogue) is refused with L4003 at the
+// model's line: never replaced by another model; so is a contactor other than CLxxx and ALpxx.
+// docs/lmgc90-facts/mailx-2d.md §1-§3, mailx-2d-large-strain.md §1-§2.
 #include <cstdint>
 #include <string>
 #include <vector>

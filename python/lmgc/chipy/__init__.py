@@ -450,8 +450,8 @@ def mecaMAILx_ComputeRayleighDamping(alpha, beta):
 
 @_export
 def mecaMAILx_SetPreconAllBodies():
-    """Precondensation on contact nodes speeds up contact with meshes; lmgc does not run contact on
-    meshes yet (a case with it is refused when read), so there is nothing to condense."""
+    """LMGC90 condenses the iteration matrix on the contact nodes of the bodies asked; lmgc always
+    condenses it on the nodes of every mesh contactor (and again each time the matrix changes)."""
 
 
 @_export
@@ -471,13 +471,54 @@ def ALpxx_PushPreconNodes():
 
 @_export
 def AssembleMechanicalLHS():
-    """lmgc assembles and factorises the iteration matrix M + θhC + (θh)²K itself, at the first
-    ComputeFreeVelocity and again when h or θ changes."""
+    """lmgc assembles and factorises the iteration matrix M + θhC + (θh)²K itself in ComputeFreeVelocity:
+    once while h and θ stay for a linear body, at every Newton iteration (from the tangent) for a
+    large-strain one."""
 
 
 @_export
 def AssembleMechanicalRHS():
-    """lmgc assembles the right-hand side inside ComputeFreeVelocity."""
+    """lmgc assembles the right-hand side inside ComputeFreeVelocity, from the iterate the call starts
+    from (mecaMAILx_ComputeResidueNorm reads it)."""
+
+
+# --- Newton-Raphson loop (LMGC90's mod_overall, for deformable bodies) ----------------------------
+
+
+def _newton_setter(name):
+    def set_parameter(value):
+        _s().set_newton_parameter(name, float(value))
+    set_parameter.__name__ = "NewtonRaphson_Set" + name
+    set_parameter.__doc__ = "LMGC90's NewtonRaphson_Set%s." % name
+    return _export(set_parameter)
+
+
+for _name in ("FinalTime", "MinTimeStep", "MaxTimeStep", "MaxIter", "GoodIter", "BadIter", "IncPatience"):
+    globals()["NewtonRaphson_Set" + _name] = _newton_setter(_name)
+
+
+@_export
+def NewtonRaphson_Initialize(tol):
+    """The step's Newton loop starts: convergence when the residue norm is below tol."""
+    _s().newton_initialize(float(tol))
+
+
+@_export
+def NewtonRaphson_CheckConvergence(norm):
+    """0 converged, 1 iterate again, 2 diverged (the iteration limit reached)."""
+    return _s().newton_check_convergence(float(norm))
+
+
+@_export
+def NewtonRaphson_ComputeTimeStep():
+    """0 go on, 1 redo the step (with h/√2), 2 stop (the final time reached); the next step's h."""
+    return _s().newton_compute_time_step()
+
+
+@_export
+def mecaMAILx_ComputeResidueNorm():
+    """The largest over deformable bodies of |R + I_reac|_inf over the largest force impulse."""
+    return _s().residue_norm()
 
 
 @_export
@@ -723,7 +764,7 @@ _inter_handler(3)
 # --- what lmgc does not offer -------------------------------------------------------------------
 
 _SUPPORT_NOT_RUN = {5: "is not done by lmgc", 6: "is LMGC90's multi-physics, which lmgc does not run",
-                    7: "acts on deformable (MAILx) bodies, which lmgc does not run yet"}
+                    7: "acts on deformable (MAILx) bodies in a way lmgc does not offer yet"}
 
 
 def _missing(name):

@@ -66,25 +66,61 @@ TEST(MeshBodies, FourCubesMeshesHaveTheirMassAndOnlyRigidModesInTheirKernel) {
   }
 }
 
-TEST(MeshBodies, AModelLmgcDoesNotRunIsRefusedAtItsLine) {
-  LMGC_REQUIRE_SHARED();
-  const fs::path dir = test::scratch_dir("mesh_bodies_large_strain");
+// 4cubes' MAILx model with its kinematics, form and material replaced by `edits` (pairs of
+// (what, by what)), read into meshes.
+bool build_edited_four_cubes(const std::string& name, std::vector<std::pair<std::string, std::string>> edits,
+                             MeshBodies& meshes, grammar::DiagnosticSink& sink) {
+  const fs::path dir = test::scratch_dir(name);
   fs::copy(four_cubes() / "DATBOX", dir / "DATBOX", fs::copy_options::recursive);
   std::string models = test::read_file(dir / "DATBOX" / "MODELS.DAT");
-  const auto at = models.find("kine_  small");
-  ASSERT_NE(at, std::string::npos);
-  models.replace(at, 12, "kine_  large");
+  for (const auto& [what, by] : edits) {
+    const auto at = models.find(what);
+    EXPECT_NE(at, std::string::npos) << what;
+    if (at != std::string::npos) models.replace(at, what.size(), by);
+  }
   std::ofstream(dir / "DATBOX" / "MODELS.DAT") << models;
-  grammar::DiagnosticSink sink(100);
   const auto files = case_folder::load_case(dir, sink);
-  ASSERT_TRUE(files);
+  EXPECT_TRUE(files);
+  return files && build_mesh_bodies(*files, fem::Hypothesis::plane_strain, meshes, sink);
+}
+
+TEST(MeshBodies, AModelLmgcDoesNotRunIsRefusedAtItsLine) {
+  LMGC_REQUIRE_SHARED();
+  grammar::DiagnosticSink sink(100);
   MeshBodies meshes;
-  EXPECT_FALSE(build_mesh_bodies(*files, fem::Hypothesis::plane_strain, meshes, sink));
+  // Large strain in the updated Lagrangian form: not run yet, refused at the form_ line.
+  EXPECT_FALSE(build_edited_four_cubes("mesh_bodies_updated_lagrangian",
+                                       {{"kine_  small", "kine_  large"}, {"form_  xxxxx", "form_  UpdtL"}},
+                                       meshes, sink));
   ASSERT_FALSE(sink.items().empty());
   const grammar::Diagnostic& d = sink.items().back();
   EXPECT_EQ(d.code, "L4003");
-  EXPECT_NE(d.message.find("kine_ large"), std::string::npos) << d.message;
-  EXPECT_EQ(d.where.span.line, 25u);  // MODELS.DAT's kine_ line
+  EXPECT_NE(d.message.find("UpdtL"), std::string::npos) << d.message;
+  EXPECT_EQ(d.where.span.line, 26u);  // MODELS.DAT's form_ line
+}
+
+TEST(MeshBodies, LargeStrainWithTheNeoHookeanMaterialIsTotalLagrangian) {
+  LMGC_REQUIRE_SHARED();
+  grammar::DiagnosticSink sink(100);
+  MeshBodies meshes;
+  ASSERT_TRUE(build_edited_four_cubes(
+      "mesh_bodies_neo_hookean",
+      {{"kine_  small", "kine_  large"}, {"form_  xxxxx", "form_  TotaL"}, {"mater  elas_", "mater  neoh_"}},
+      meshes, sink));
+  ASSERT_EQ(meshes.bodies.size(), 3u);
+  for (const fem::MeshBody& body : meshes.bodies) {
+    EXPECT_EQ(body.kinematics, fem::Kinematics::total_lagrangian);
+    for (const fem::MeshElement& e : body.elements)
+      EXPECT_EQ(body.materials[static_cast<std::size_t>(e.material)].law, fem::MaterialLaw::neo_hookean);
+  }
+  // Another material in large strain: refused at its mater line.
+  grammar::DiagnosticSink other(100);
+  EXPECT_FALSE(build_edited_four_cubes("mesh_bodies_large_elastic",
+                                       {{"kine_  small", "kine_  large"}, {"form_  xxxxx", "form_  TotaL"}},
+                                       meshes, other));
+  ASSERT_FALSE(other.items().empty());
+  EXPECT_EQ(other.items().back().code, "L4003");
+  EXPECT_EQ(other.items().back().where.span.line, 28u);
 }
 
 }  // namespace

@@ -1,0 +1,176 @@
+#include "solver/fem/large_strain.hpp"
+
+#include "solver/fem/element_catalogue.hpp"
+#include "solver/fem/element_matrices.hpp"
+#include "solver/fem/neo_hookean.hpp"
+
+namespace lmgc::solver::fem {
+
+namespace {
+
+using GradientTangent = Eigen::Matrix<double, 5, 5>;
+
+// The (i, J) of each component of the gradient vector.
+constexpr int kComponents[5][2] = {{0, 0}, {0, 1}, {1, 0}, {1, 1}, {2, 2}};
+
+Eigen::Matrix3d as_tensor(const GradientVector& v) {
+  Eigen::Matrix3d f = Eigen::Matrix3d::Zero();
+  for (int a = 0; a < 5; ++a) f(kComponents[a][0], kComponents[a][1]) = v(a);
+  return f;
+}
+
+// The material's response at F. False when F is not admissible (det F ≤ 0).
+bool material_point(const Material& material, const GradientVector& gradient, LargeStrainPoint& point,
+                    GradientTangent* tangent) {
+  point.gradient = gradient;
+  const Eigen::Matrix3d f = as_tensor(gradient);
+  switch (material.law) {
+    case MaterialLaw::linear_elastic:  // a small-strain law: mesh_bodies.cpp never pairs it with F
+      return false;
+    case MaterialLaw::neo_hookean: {
+      const NeoHookeanConstants c = neo_hookean_constants(material.young, material.poisson);
+      const NeoHookeanPoint p = neo_hookean_stress(c, f);
+      if (!p.admissible) return false;
+      for (int a = 0; a < 5; ++a) point.stress(a) = p.stress(kComponents[a][0], kComponents[a][1]);
+      point.internal.assign(1, p.energy);
+      if (tangent) *tangent = neo_hookean_tangent<5>(c, f, kComponents);
+      return true;
+    }
+  }
+  return false;
+}
+
+template <class E>
+struct ElementFrame {
+  static constexpr int N = E::kNodes;
+  NodeCoordinates<E> x;
+  Eigen::Matrix<double, 2 * N, 1> u;
+};
+
+template <class E>
+ElementFrame<E> element_frame(const MeshBody& body, const MeshElement& element,
+                              const Eigen::VectorXd& displacement) {
+  ElementFrame<E> frame;
+  for (int k = 0; k < E::kNodes; ++k) {
+    const auto node = static_cast<Eigen::Index>(element.nodes[static_cast<std::size_t>(k)]);
+    for (int c = 0; c < 2; ++c) {
+      frame.x(k, c) = body.coordinates[static_cast<std::size_t>(node * 2 + c)];
+      frame.u(k * 2 + c) = displacement(node * 2 + c);
+    }
+  }
+  return frame;
+}
+
+// B_F: F = I + B_F u (the rows (11, 12, 21, 22, 33)).
+template <class E>
+Eigen::Matrix<double, 5, 2 * E::kNodes> gradient_matrix(const PointGeometry<E>& g, Hypothesis h) {
+  Eigen::Matrix<double, 5, 2 * E::kNodes> b = Eigen::Matrix<double, 5, 2 * E::kNodes>::Zero();
+  for (int k = 0; k < E::kNodes; ++k) {
+    b(0, 2 * k) = g.gradients(k, 0);
+    b(1, 2 * k) = g.gradients(k, 1);
+    b(2, 2 * k + 1) = g.gradients(k, 0);
+    b(3, 2 * k + 1) = g.gradients(k, 1);
+    if (h == Hypothesis::axisymmetric) b(4, 2 * k) = g.values(k) / g.position.x();
+  }
+  return b;
+}
+
+const GradientVector kIdentity = (GradientVector() << 1.0, 0.0, 0.0, 1.0, 1.0).finished();
+
+// Visits the Gauss points of element e: f(point index, geometry, B_F, F). False when a reference
+// Jacobian is not positive (refused when the body was assembled).
+template <class E, class F>
+bool for_each_point(const MeshBody& body, const MeshElement& element, const ElementFrame<E>& frame, F&& f) {
+  const QuadratureRule<2> rule = quadrature<2>(element_entry(element.kind).stiffness_rule);
+  for (int p = 0; p < rule.size(); ++p) {
+    const auto g = point_geometry<E>(frame.x, rule.points[static_cast<std::size_t>(p)],
+                                     rule.weights[static_cast<std::size_t>(p)], body.hypothesis);
+    if (!g) return false;
+    const auto b = gradient_matrix<E>(*g, body.hypothesis);
+    const GradientVector gradient = kIdentity + b * frame.u;
+    if (!f(p, *g, b, gradient)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool large_strain_forces(const MeshBody& body, const Eigen::VectorXd& displacement, Eigen::VectorXd& internal,
+                         Eigen::SparseMatrix<double>* tangent, InvertedElement& inverted) {
+  internal = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(body.dofs()));
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (std::size_t e = 0; e < body.elements.size(); ++e) {
+    const MeshElement& element = body.elements[e];
+    const Material& material = body.materials[static_cast<std::size_t>(element.material)];
+    const bool ok = with_element(element.kind, [&](auto shape) {
+      using E = decltype(shape);
+      if constexpr (E::kDimension != 2) {
+        return false;
+      } else {
+        constexpr int N = E::kNodes;
+        const ElementFrame<E> frame = element_frame<E>(body, element, displacement);
+        Eigen::Matrix<double, 2 * N, 1> fe = Eigen::Matrix<double, 2 * N, 1>::Zero();
+        Eigen::Matrix<double, 2 * N, 2 * N> ke = Eigen::Matrix<double, 2 * N, 2 * N>::Zero();
+        LargeStrainPoint point;
+        GradientTangent d;
+        const bool points_ok = for_each_point<E>(
+            body, element, frame, [&](int p, const auto& g, const auto& b, const GradientVector& gradient) {
+              if (!material_point(material, gradient, point, tangent ? &d : nullptr)) {
+                inverted = {e, p};
+                return false;
+              }
+              fe.noalias() += b.transpose() * point.stress * g.weight;
+              if (tangent) ke.noalias() += b.transpose() * d * b * g.weight;
+              return true;
+            });
+        if (!points_ok) return false;
+        for (int a = 0; a < N; ++a)
+          for (int i = 0; i < 2; ++i) {
+            const int row = element.nodes[static_cast<std::size_t>(a)] * 2 + i;
+            internal(row) += fe(2 * a + i);
+            if (tangent)
+              for (int c = 0; c < N; ++c)
+                for (int j = 0; j < 2; ++j)
+                  triplets.emplace_back(row, element.nodes[static_cast<std::size_t>(c)] * 2 + j,
+                                        ke(2 * a + i, 2 * c + j));
+          }
+        return true;
+      }
+    });
+    if (!ok) {
+      if (inverted.element != e) inverted = {e, 0};
+      return false;
+    }
+  }
+  if (tangent) {
+    const auto n = static_cast<Eigen::Index>(body.dofs());
+    tangent->resize(n, n);
+    tangent->setFromTriplets(triplets.begin(), triplets.end());
+  }
+  return true;
+}
+
+std::vector<LargeStrainPoint> large_strain_points(const MeshBody& body, const Eigen::VectorXd& displacement,
+                                                  std::size_t e) {
+  std::vector<LargeStrainPoint> points;
+  const MeshElement& element = body.elements[e];
+  const Material& material = body.materials[static_cast<std::size_t>(element.material)];
+  with_element(element.kind, [&](auto shape) {
+    using E = decltype(shape);
+    if constexpr (E::kDimension == 2) {
+      const ElementFrame<E> frame = element_frame<E>(body, element, displacement);
+      const bool ok = for_each_point<E>(body, element, frame,
+                                        [&](int, const auto&, const auto&, const GradientVector& gradient) {
+                                          LargeStrainPoint point;
+                                          if (!material_point(material, gradient, point, nullptr))
+                                            return false;
+                                          points.push_back(std::move(point));
+                                          return true;
+                                        });
+      if (!ok) points.clear();
+    }
+  });
+  return points;
+}
+
+}  // namespace lmgc::solver::fem
