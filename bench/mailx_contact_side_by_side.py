@@ -6,9 +6,10 @@ the loop, written to loop_seconds.txt), peak memory read from the process's rusa
 Cases:
 - 4cubes: LMGC90's example mecaMAILx_RIGID_2D/4cubes (../shared; its models use MatLib, so LMGC90
   must be built with --matlib), its own command.py with the timing lines added around its loop.
-- 1q4-traction: LMGC90's example mecaMAILx_2D/1Q4-traction (one Q4xxx in large strain, MatLib's
-  neo-Hookean material, 10000 steps of LMGC90's Newton loop; no contact), its own command.py with
-  the timing lines added around its loop.
+- 1q4-traction, mur: LMGC90's examples mecaMAILx_2D/1Q4-traction (one Q4xxx in large strain, MatLib's
+  neo-Hookean material, 10000 steps of LMGC90's Newton loop; no contact) and mecaMAILx_2D/mur (nine
+  Q4P0x blocks, the same material, in contact on a JONCx, 1500 steps), their own command.py with the
+  timing lines added around the loop.
 - stack: a refined mesh of our own: two Q4xxx blocks (nx × ny cells each, plane strain, LMGC90's own
   elasticity 'isext no___') stacked on a JONCx under gravity, two CLxxx points per edge of each
   block's bottom (CLJCx for the lower, CLALp on the lower's top ALpxx for the upper), IQS_CLB,
@@ -19,7 +20,7 @@ the NLGS iterations of the run (SOLVER_INFORMATIONS: the same in both codes mean
 residual at each check) and the largest DOF difference relative to the largest value; then the
 minimum and median of the ratios.
 
-Usage: bench/mailx_contact_side_by_side.py --lmgc90 /work/lmgc90/build --case 4cubes|1q4-traction|stack
+Usage: bench/mailx_contact_side_by_side.py --lmgc90 /work/lmgc90/build --case 4cubes|1q4-traction|mur|stack
        [--nx 60] [--ny 20] [--steps 200] [--rounds 3] [--build build/release] [--csv FILE]
 """
 import argparse
@@ -37,7 +38,7 @@ import datbox_writer as w
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXAMPLES = os.path.join(os.path.dirname(ROOT), "shared", "lmgc90-examples")
 EXAMPLE = os.path.join(EXAMPLES, "mecaMAILx_RIGID_2D", "4cubes")
-TRACTION = os.path.join(EXAMPLES, "mecaMAILx_2D", "1Q4-traction")
+NEWTON_EXAMPLES = {"1q4-traction": ("1Q4-traction", 10000), "mur": ("mur", 1500)}
 
 STACK_SCRIPT = """import time
 from pylmgc90 import chipy
@@ -139,9 +140,11 @@ def make_4cubes(folder):
     return 500
 
 
-def make_traction(folder):
-    shutil.copytree(os.path.join(TRACTION, "DATBOX"), os.path.join(folder, "DATBOX"))
-    script = open(os.path.join(TRACTION, "command.py")).read()
+def make_newton_example(folder, case):
+    name, steps = NEWTON_EXAMPLES[case]
+    example = os.path.join(EXAMPLES, "mecaMAILx_2D", name)
+    shutil.copytree(os.path.join(example, "DATBOX"), os.path.join(folder, "DATBOX"))
+    script = open(os.path.join(example, "command.py")).read()
     loop = "while chipy.TimeEvolution_GetTime() < t_final :"
     script = script.replace(loop, "import time\nstart = time.perf_counter()\n" + loop, 1)
     script = script.replace("# close display & postpro",
@@ -149,7 +152,7 @@ def make_traction(folder):
                             "chipy.WriteLastDof()\n# close display & postpro", 1)
     with open(os.path.join(folder, "command.py"), "w") as f:
         f.write(script)
-    return 10000
+    return steps
 
 
 def run(command, cwd, env):
@@ -173,7 +176,7 @@ def iterations(folder):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--lmgc90", required=True)
-    parser.add_argument("--case", choices=("4cubes", "1q4-traction", "stack"), required=True)
+    parser.add_argument("--case", choices=("4cubes", "stack") + tuple(NEWTON_EXAMPLES), required=True)
     parser.add_argument("--nx", type=int, default=60)
     parser.add_argument("--ny", type=int, default=20)
     parser.add_argument("--steps", type=int, default=200)
@@ -183,13 +186,17 @@ def main():
     args = parser.parse_args()
     scratch = tempfile.mkdtemp(prefix="lmgc_mailx_contact_bench_")
     source = os.path.join(scratch, "case")
-    if args.case in ("4cubes", "1q4-traction"):
+    if args.case == "4cubes" or args.case in NEWTON_EXAMPLES:
         os.makedirs(source)
-        steps = make_4cubes(source) if args.case == "4cubes" else make_traction(source)
+        steps = make_4cubes(source) if args.case == "4cubes" else make_newton_example(source, args.case)
     else:
         steps = args.steps
         make_stack(source, args.nx, args.ny, steps)
     env = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1")
+    # Python's default buffering of a redirected stdout, as a user's shell has it (the scripts print a
+    # message per call; an inherited PYTHONUNBUFFERED would make each a system call in lmgc-run only,
+    # LMGC90's messages going through Fortran's buffered output).
+    env.pop("PYTHONUNBUFFERED", None)
     rows = []
     for r in range(args.rounds):
         seconds, memory = {}, {}

@@ -209,6 +209,7 @@ struct Session::Run {
   virtual std::string gpv_text() const = 0;
   virtual void set_rayleigh(double alpha, double beta) = 0;
   virtual bool has_large_strain() const = 0;
+  virtual void compute_bulk() = 0;  // ComputeBulk in a step: large-strain bodies at their iterate
   // mecaMAILx_ComputeResidueNorm (0 without deformable bodies).
   virtual double residue_norm() = 0;
   // "MAILx body b, element e (Q4xxx), Gauss point p" when the last evaluation met an inverted element.
@@ -381,12 +382,13 @@ struct DimensionRun final : Session::Run {
     state.time = time_begin;
     --state.step;
   }
+  void compute_bulk() override {
+    if constexpr (T::kDimension == 2) solver::bulk_deformable(scene.deformable, state);
+  }
   void skip_contacts() override { scene.bodies.velocity = scene.bodies.velocity_free; }
   void set_rayleigh(double alpha, double beta) override {
     if constexpr (T::kDimension == 2) {
-      scene.deformable.rayleigh_alpha = alpha;
-      scene.deformable.rayleigh_beta = beta;
-      for (auto& body : scene.deformable.states) body.prepared_h = 0.0;  // refactorise K̂
+      solver::set_rayleigh_damping(scene.deformable, alpha, beta);
     }
   }
   bool open_postpro(std::string& error) override {
@@ -780,6 +782,8 @@ void Session::stage(std::string_view name) {
     if (!r.in_step) return;
     if (!(r.done & bit(Stage::increment_step))) fail(ErrorKind::order, "ComputeBulk before IncrementStep");
     r.done |= bit(Stage::compute_bulk);
+    r.compute_bulk();
+    report_inverted(r);
     return;
   }
   // A case without contact laws has nothing for the contact stages to do: a script may leave them
@@ -843,22 +847,7 @@ void Session::stage(std::string_view name) {
          "as UpdateTactBehav does; a step that leaves them is not run");
   r.run_stage(name, options_.nlgs);
   r.done |= bit(*s);
-  if ((*s == Stage::compute_free_velocity || *s == Stage::compute_dof) && !r.inverted_reported) {
-    if (const std::string where = r.inverted(); !where.empty()) {
-      r.inverted_reported = true;
-      const std::string what = "step " + std::to_string(r.step()) + " (t = " + std::to_string(r.time()) +
-                               "): " + where + " is inverted (det F <= 0)";
-      if (!newton_active_) {
-        r.restore_step_begin();
-        r.in_step = false;
-        r.stopped = what;
-        fail(ErrorKind::non_finite, what +
-                                        "; the step cannot be completed (no Newton loop to redo it with a "
-                                        "smaller time step); no output of this step is written");
-      }
-      warn(what + ": the Newton loop of this step diverges (NewtonRaphson_CheckConvergence returns 2)");
-    }
-  }
+  if (*s == Stage::compute_free_velocity || *s == Stage::compute_dof) report_inverted(r);
   if (*s == Stage::compute_free_velocity)
     for (const auto& [body, dof, value] : r.imposed) r.impose_velocity(body, dof, value, true);
   if (*s == Stage::update_step) {
@@ -877,6 +866,25 @@ void Session::stage(std::string_view name) {
       fail(ErrorKind::output, r.stopped);
     }
   }
+}
+
+void Session::report_inverted(Run& r) {
+  if (r.inverted_reported) return;
+  const std::string where = r.inverted();
+  if (where.empty()) return;
+  r.inverted_reported = true;
+  const std::string what = "step " + std::to_string(r.step()) + " (t = " + std::to_string(r.time()) +
+                           "): " + where + " is inverted (det F <= 0)";
+  if (!newton_active_) {
+    r.restore_step_begin();
+    r.in_step = false;
+    r.stopped = what;
+    fail(ErrorKind::non_finite,
+         what +
+             "; the step cannot be completed (no Newton loop to redo it with a smaller time "
+             "step); no output of this step is written");
+  }
+  warn(what + ": the Newton loop of this step diverges (NewtonRaphson_CheckConvergence returns 2)");
 }
 
 void Session::set_newton_parameter(std::string_view name, double value) {
@@ -1101,10 +1109,6 @@ void Session::set_rayleigh_damping(double alpha, double beta) {
   if (!std::isfinite(alpha) || !std::isfinite(beta) || alpha < 0.0 || beta < 0.0)
     fail(ErrorKind::value, "mecaMAILx_ComputeRayleighDamping: alpha and beta are finite and non-negative");
   require_case("mecaMAILx_ComputeRayleighDamping");
-  if (run_->has_large_strain() && (alpha != 0.0 || beta != 0.0))
-    fail(ErrorKind::not_implemented,
-         "mecaMAILx_ComputeRayleighDamping on a case with large-strain bodies: lmgc does not run damping "
-         "with a tangent stiffness yet");
   // LMGC90 builds C from the element masses and stiffnesses computed so far (mailx-2d.md §4.2):
   // before ComputeMass the mass part is 0, before the first ComputeBulk the stiffness part.
   const double a = mass_computed_ ? alpha : 0.0, b = bulk_computed_ ? beta : 0.0;

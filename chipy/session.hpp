@@ -163,6 +163,9 @@ class Session {
   void require_case(std::string_view call) const;
   Run& running(std::string_view call);
   void start_run();
+  // An element inverted in the step's last evaluation: a warning inside a Newton loop (the loop
+  // diverges and the step is redone), otherwise the run stops naming it.
+  void report_inverted(Run& r);
   void end_run_files();
   void warn(const std::string& message) const;
 

@@ -10,14 +10,17 @@
 
 namespace lmgc::solver::fem {
 
-enum class ElementKind : std::uint8_t { T3, Q4, T6, Q8, TE4, H8 };
+// Q4P0: LMGC90's Q4P0x, the bilinear quadrilateral whose mass takes the 2 × 2 rule; its own large-strain
+// material gives it a pressure constant over the element (mean dilatation); with MatLib it is a Q4.
+enum class ElementKind : std::uint8_t { T3, Q4, T6, Q8, TE4, H8, Q4P0 };
 
 // MODELS.DAT 'mstrg lump_': the element mass on the diagonal by row sums (linear elements, T6) or
 // by scaling the consistent diagonal to the element's mass (HRZ: Q8).
 enum class MassLumping : std::uint8_t { row_sum, diagonal_scaling };
 
 struct ElementEntry {
-  std::string_view name;  // LMGC90's, as BODIES.DAT and MODELS.DAT write it
+  std::string_view name;       // LMGC90's, as MODELS.DAT writes it
+  std::string_view body_name;  // as BODIES.DAT and GPV files write the element (Q4P0x's is Q4xxx)
   ElementKind kind;
   int dimension;
   int nodes;
@@ -46,6 +49,8 @@ decltype(auto) with_element(ElementKind kind, F&& f) {
       return f(TE4{});
     case ElementKind::H8:
       return f(H8{});
+    case ElementKind::Q4P0:
+      return f(Q4{});
   }
   return f(T3{});
 }

@@ -1,5 +1,7 @@
 #include "solver/fem/linear_body.hpp"
 
+#include <algorithm>
+
 namespace lmgc::solver::fem {
 
 namespace {
@@ -73,11 +75,20 @@ bool assemble(const MeshBody& body, LinearBodyMatrices& matrices, std::string& e
 bool LinearThetaScheme::prepare(const LinearBodyMatrices& matrices, double h, double theta,
                                 double rayleigh_alpha, double rayleigh_beta,
                                 std::span<const std::int32_t> driven_dofs) {
+  return prepare(
+      matrices, h, theta,
+      Eigen::SparseMatrix<double>(rayleigh_alpha * matrices.mass + rayleigh_beta * matrices.stiffness),
+      driven_dofs);
+}
+
+bool LinearThetaScheme::prepare(const LinearBodyMatrices& matrices, double h, double theta,
+                                const Eigen::SparseMatrix<double>& damping,
+                                std::span<const std::int32_t> driven_dofs) {
   h_ = h;
   theta_ = theta;
   stiffness_ = matrices.stiffness;
   mass_ = matrices.mass;
-  damping_ = rayleigh_alpha * mass_ + rayleigh_beta * stiffness_;
+  damping_ = damping.size() ? damping : Eigen::SparseMatrix<double>(mass_.rows(), mass_.cols());
   iteration_ = mass_ + theta * h * damping_ + (theta * h) * (theta * h) * stiffness_;
   const auto n = static_cast<std::int32_t>(iteration_.rows());
   free_of_.assign(static_cast<std::size_t>(n), 0);
@@ -98,6 +109,22 @@ bool LinearThetaScheme::prepare(const LinearBodyMatrices& matrices, double h, do
   const auto f = static_cast<Eigen::Index>(free_dofs_.size());
   iteration_free_.resize(f, f);
   iteration_free_.setFromTriplets(t.begin(), t.end());
+  // The same sparsity as the last factorisation (a Newton iteration's tangent): the ordering and
+  // symbolic analysis are kept and only the numbers factorised, unless a copy of the scene shares it.
+  const auto* outer = iteration_free_.outerIndexPtr();
+  const auto* inner = iteration_free_.innerIndexPtr();
+  const bool same_pattern = factor_ && factor_.use_count() == 1 &&
+                            pattern_outer_.size() == static_cast<std::size_t>(f + 1) &&
+                            pattern_inner_.size() == static_cast<std::size_t>(iteration_free_.nonZeros()) &&
+                            std::equal(pattern_outer_.begin(), pattern_outer_.end(), outer) &&
+                            std::equal(pattern_inner_.begin(), pattern_inner_.end(), inner);
+  if (same_pattern) {
+    auto& factor = const_cast<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>&>(*factor_);
+    factor.factorize(iteration_free_);
+    return factor.info() == Eigen::Success && (factor.vectorD().array() > 0.0).all();
+  }
+  pattern_outer_.assign(outer, outer + f + 1);
+  pattern_inner_.assign(inner, inner + iteration_free_.nonZeros());
   auto factor = std::make_shared<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>(iteration_free_);
   factor_ = factor;
   return factor->info() == Eigen::Success && (factor->vectorD().array() > 0.0).all();

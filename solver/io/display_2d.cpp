@@ -224,10 +224,10 @@ std::string meshes_vtu_2d(const Scene2D& scene) {
                              element.nodes[static_cast<std::size_t>(k)]);
     offsets.push_back(static_cast<long long>(connectivity.size()));
     // VTK_TRIANGLE 5, VTK_QUAD 9, VTK_QUADRATIC_TRIANGLE 22, VTK_QUADRATIC_QUAD 23 (LMGC90's node orders).
-    types.push_back(element.kind == fem::ElementKind::T3   ? 5
-                    : element.kind == fem::ElementKind::Q4 ? 9
-                    : element.kind == fem::ElementKind::T6 ? 22
-                                                           : 23);
+    types.push_back(element.kind == fem::ElementKind::T3                                             ? 5
+                    : element.kind == fem::ElementKind::Q4 || element.kind == fem::ElementKind::Q4P0 ? 9
+                    : element.kind == fem::ElementKind::T6                                           ? 22
+                                                                                                     : 23);
   }
   data_array(out, "Int64", "connectivity", 1, connectivity.size(),
              [&](std::size_t i, int) { return connectivity[i]; });

@@ -113,7 +113,7 @@ grammar::GpvBody gauss_point_values(const fem::MeshBody& body, bool matlib,
   out.number = body_number;
   for (std::size_t e = 0; e < body.elements.size(); ++e) {
     grammar::GpvElement written;
-    written.type = grammar::Word{std::string(fem::element_entry(body.elements[e].kind).name)};
+    written.type = grammar::Word{std::string(fem::element_entry(body.elements[e].kind).body_name)};
     written.number = static_cast<std::int64_t>(e + 1);
     grammar::GpvModelBlock block;
     block.model = grammar::Word{std::string("MECAx")};

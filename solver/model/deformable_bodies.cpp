@@ -107,6 +107,7 @@ void increment_deformable(DeformableBodies& d, const StepContext& step) {
     s.v = s.v_begin;
     s.contact_impulse.resize(0);  // this step's contacts set it
     s.inverted.reset();
+    s.bulk_current = false;
     // The first iterate of a large-strain body: X = X_begin + hV_begin (mecaMAILx_IncrementStep).
     if (s.large_strain) s.x = s.x_begin + step.h * s.v_begin;
   }
@@ -144,27 +145,37 @@ std::vector<fem::DrivenVelocity> driven_velocities(const DeformableBodies& d, st
                            "that can move rigidly without mass): give it a density or drive its dofs");
 }
 
-// One Newton iteration of a large-strain body from its iterate V: F_int and K_t at X_θ, R(V),
-// K̂_t factorised, V_free = V + K̂_t⁻¹ R with the driven velocities imposed.
-void free_velocity_large_strain(DeformableBodies& d, std::size_t b, const StepContext& step) {
+// F_int and K_t of large-strain body b at X_θ = X_begin + θh((1 − θ)V_begin + θV) of its iterate V.
+void bulk_large_strain(DeformableBodies& d, std::size_t b, const StepContext& step) {
   MeshBodyState& s = d.states[b];
-  const fem::MeshBody& mesh = d.meshes.bodies[b];
   const double h = step.h, theta = step.theta;
   const Eigen::VectorXd x_theta = s.x_begin + theta * h * ((1.0 - theta) * s.v_begin + theta * s.v);
-  fem::LinearBodyMatrices tangent;
-  tangent.mass = s.matrices.mass;
-  Eigen::VectorXd internal;
   fem::InvertedElement inverted;
-  if (!fem::large_strain_forces(mesh, x_theta, internal, &tangent.stiffness, inverted)) {
-    s.inverted = inverted;
+  s.bulk_current =
+      fem::large_strain_forces(d.meshes.bodies[b], x_theta, s.bulk_force, &s.bulk_tangent, inverted);
+  if (!s.bulk_current) s.inverted = inverted;
+}
+
+// One Newton iteration of a large-strain body from its iterate V: R(V), K̂_t = M + θhC + (θh)²K_t
+// factorised, V_free = V + K̂_t⁻¹ R with the driven velocities imposed.
+void free_velocity_large_strain(DeformableBodies& d, std::size_t b, const StepContext& step) {
+  MeshBodyState& s = d.states[b];
+  if (!s.bulk_current && !s.inverted) bulk_large_strain(d, b, step);
+  if (s.inverted) {
     s.v_free = s.v;
     return;
   }
-  if (!s.scheme.prepare(tangent, h, theta, 0.0, 0.0, s.velocity_driven)) singular(b);
+  s.bulk_current = false;  // the next iteration has another iterate
+  const double h = step.h, theta = step.theta;
+  fem::LinearBodyMatrices tangent;
+  tangent.mass = s.matrices.mass;
+  tangent.stiffness = s.bulk_tangent;
+  if (!s.scheme.prepare(tangent, h, theta, s.damping, s.velocity_driven)) singular(b);
   s.prepared_h = 0.0;  // a linear K̂ is not kept
   s.contact_compliance.resize(0, 0);
   s.compliance_row.clear();
-  s.rhs = s.matrices.mass * (s.v_begin - s.v) + h * (s.f_ext - internal);
+  s.rhs = s.matrices.mass * (s.v_begin - s.v) + h * (s.f_ext - s.bulk_force);
+  if (s.damping.size()) s.rhs -= h * (s.damping * (theta * s.v + (1.0 - theta) * s.v_begin));
   Eigen::VectorXd imposed = Eigen::VectorXd::Zero(s.v.size());
   for (const fem::DrivenVelocity& dv : driven_velocities(d, b, step.time))
     imposed(dv.dof) = dv.value - s.v(dv.dof);
@@ -172,6 +183,22 @@ void free_velocity_large_strain(DeformableBodies& d, std::size_t b, const StepCo
 }
 
 }  // namespace
+
+void bulk_deformable(DeformableBodies& d, const StepContext& step) {
+  for (std::size_t b = 0; b < d.states.size(); ++b)
+    if (d.states[b].large_strain && !d.states[b].inverted) bulk_large_strain(d, b, step);
+}
+
+void set_rayleigh_damping(DeformableBodies& d, double alpha, double beta) {
+  d.rayleigh_alpha = alpha;
+  d.rayleigh_beta = beta;
+  for (MeshBodyState& s : d.states) {
+    s.prepared_h = 0.0;  // refactorise K̂
+    if (!s.large_strain) continue;
+    s.damping = alpha * s.matrices.mass;
+    if (s.bulk_tangent.size() && beta != 0.0) s.damping += beta * s.bulk_tangent;
+  }
+}
 
 void free_velocity_deformable(DeformableBodies& d, const StepContext& step) {
   for (std::size_t b = 0; b < d.states.size(); ++b) {
@@ -214,6 +241,7 @@ void dof_deformable(DeformableBodies& d, const StepContext& step) {
         s.inverted = inverted;
         continue;
       }
+      if (s.damping.size()) s.internal_force += s.damping * s.v;
     } else {
       s.internal_force = s.scheme.internal_force(s.x, s.v);
     }

@@ -6,6 +6,7 @@
 // The stages of the step (solver/integrator/step_2d.cpp) call the functions below for them, next
 // to the rigid bodies': docs/lmgc90-facts/mailx-2d.md §4.
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <optional>
 #include <vector>
 
@@ -42,6 +43,13 @@ struct MeshBodyState {
   // the step cannot be completed from this iterate.
   std::optional<fem::InvertedElement> inverted;
   bool large_strain = false;  // K̂ is rebuilt from the tangent K_t at every iteration
+  // A large-strain body's ComputeBulk: F_int and K_t at X_θ of the iterate (LMGC90's element arrays),
+  // which the iteration's ComputeFreeVelocity and a Rayleigh damping call then use.
+  Eigen::VectorXd bulk_force;
+  Eigen::SparseMatrix<double> bulk_tangent;
+  bool bulk_current = false;  // computed for the iterate in progress
+  // C of a large-strain body: αM + βK_t as they were at mecaMAILx_ComputeRayleighDamping (empty: none).
+  Eigen::SparseMatrix<double> damping;
 };
 
 struct DeformableBodies {
@@ -67,6 +75,12 @@ bool initialise_mesh_states(DeformableBodies& d, std::string& error, std::size_t
 // The stages (each over every deformable body).
 // V ← V_begin (and X ← X_begin + hV_begin for a large-strain body: its first iterate).
 void increment_deformable(DeformableBodies& d, const StepContext& step);
+// ComputeBulk: F_int and K_t of each large-strain body at X_θ of its iterate (nothing for linear
+// bodies, whose stiffness is assembled once).
+void bulk_deformable(DeformableBodies& d, const StepContext& step);
+// mecaMAILx_ComputeRayleighDamping(α, β): C = αM + βK, K a large-strain body's tangent of its last
+// ComputeBulk (0 before the first), a linear body's stiffness.
+void set_rayleigh_damping(DeformableBodies& d, double alpha, double beta);
 // F_ext = M g + driven forces θ-averaged over the step.
 void external_forces_deformable(DeformableBodies& d, const Eigen::Vector3d& gravity, const StepContext& step);
 // V_free from the residual at V_begin; K̂ refactorised when h or θ changed; driven velocities at t.

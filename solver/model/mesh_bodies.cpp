@@ -41,9 +41,10 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
                       "model '" + m.nickname.value + "' is " + m.kind.value +
                           ": lmgc runs mechanical (MECAx) models only for now");
       if (!fem::find_element(m.element.value))
-        return refuse(models_path, m.element.span,
-                      "model '" + m.nickname.value + "' uses the element " + m.element.value +
-                          ", which lmgc does not have yet (it has T3xxx, Q4xxx, T6xxx, Q8xxx, TE4xx, H8xxx)");
+        return refuse(
+            models_path, m.element.span,
+            "model '" + m.nickname.value + "' uses the element " + m.element.value +
+                ", which lmgc does not have yet (it has T3xxx, Q4xxx, Q4P0x, T6xxx, Q8xxx, TE4xx, H8xxx)");
       // Small strain with linear elasticity, or large strain in the total Lagrangian form with
       // MatLib's neo-Hookean material (fem/large_strain.hpp, fem/neo_hookean.hpp).
       const grammar::ModelOption* kine = option(m, "kine_");
