@@ -6,10 +6,11 @@ the loop, written to loop_seconds.txt), peak memory read from the process's rusa
 Cases:
 - 4cubes: LMGC90's example mecaMAILx_RIGID_2D/4cubes (../shared; its models use MatLib, so LMGC90
   must be built with --matlib), its own command.py with the timing lines added around its loop.
-- 1q4-traction, mur: LMGC90's examples mecaMAILx_2D/1Q4-traction (one Q4xxx in large strain, MatLib's
-  neo-Hookean material, 10000 steps of LMGC90's Newton loop; no contact) and mecaMAILx_2D/mur (nine
-  Q4P0x blocks, the same material, in contact on a JONCx, 1500 steps), their own command.py with the
-  timing lines added around the loop.
+- 1q4-traction, mur, taylor, braudel: LMGC90's examples mecaMAILx_2D/1Q4-traction (one Q4xxx in large
+  strain, MatLib's neo-Hookean material, 10000 steps of LMGC90's Newton loop; no contact),
+  mecaMAILx_2D/mur (nine Q4P0x blocks, the same material, in contact on a JONCx, 1500 steps),
+  taylor (216 Q4P0x, LMGC90's own J2 plasticity, axisymmetric, 2000 steps) and braudel (48 Q4P0x, J2
+  with Swift hardening, 100 steps), their own command.py with the timing lines added around the loop.
 - stack: a refined mesh of our own: two Q4xxx blocks (nx × ny cells each, plane strain, LMGC90's own
   elasticity 'isext no___') stacked on a JONCx under gravity, two CLxxx points per edge of each
   block's bottom (CLJCx for the lower, CLALp on the lower's top ALpxx for the upper), IQS_CLB,
@@ -20,7 +21,7 @@ the NLGS iterations of the run (SOLVER_INFORMATIONS: the same in both codes mean
 residual at each check) and the largest DOF difference relative to the largest value; then the
 minimum and median of the ratios.
 
-Usage: bench/mailx_contact_side_by_side.py --lmgc90 /work/lmgc90/build --case 4cubes|1q4-traction|mur|stack
+Usage: bench/mailx_contact_side_by_side.py --lmgc90 /work/lmgc90/build --case 4cubes|1q4-traction|mur|taylor|braudel|stack
        [--nx 60] [--ny 20] [--steps 200] [--rounds 3] [--build build/release] [--csv FILE]
 """
 import argparse
@@ -38,7 +39,8 @@ import datbox_writer as w
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXAMPLES = os.path.join(os.path.dirname(ROOT), "shared", "lmgc90-examples")
 EXAMPLE = os.path.join(EXAMPLES, "mecaMAILx_RIGID_2D", "4cubes")
-NEWTON_EXAMPLES = {"1q4-traction": ("1Q4-traction", 10000), "mur": ("mur", 1500)}
+NEWTON_EXAMPLES = {"1q4-traction": ("1Q4-traction", 10000), "mur": ("mur", 1500), "taylor": ("taylor", 2000),
+                   "braudel": ("braudel", 100)}
 
 STACK_SCRIPT = """import time
 from pylmgc90 import chipy

@@ -212,7 +212,8 @@ struct Session::Run {
   virtual void compute_bulk() = 0;  // ComputeBulk in a step: large-strain bodies at their iterate
   // mecaMAILx_ComputeResidueNorm (0 without deformable bodies).
   virtual double residue_norm() = 0;
-  // "MAILx body b, element e (Q4xxx), Gauss point p" when the last evaluation met an inverted element.
+  // "MAILx body b, element e (Q4xxx), Gauss point p is inverted ..." when the last evaluation of a
+  // large-strain body failed there (det F ≤ 0, or J2's return mapping).
   virtual std::string inverted() const = 0;
   // Back to the beginning of the step in progress (a redone or abandoned step): positions and
   // velocities, the clock (time_begin, the step before).
@@ -363,7 +364,9 @@ struct DimensionRun final : Session::Run {
         const auto& element = scene.deformable.meshes.bodies[body].elements[where.element];
         return "MAILx body " + std::to_string(body + 1) + ", element " + std::to_string(where.element + 1) +
                " (" + std::string(fem::element_entry(element.kind).name) + "), Gauss point " +
-               std::to_string(where.point + 1);
+               std::to_string(where.point + 1) +
+               (where.return_mapping ? ": its plastic return mapping does not converge in 50 iterations"
+                                     : " is inverted (det F <= 0)");
       }
     }
     return {};
@@ -873,8 +876,8 @@ void Session::report_inverted(Run& r) {
   const std::string where = r.inverted();
   if (where.empty()) return;
   r.inverted_reported = true;
-  const std::string what = "step " + std::to_string(r.step()) + " (t = " + std::to_string(r.time()) +
-                           "): " + where + " is inverted (det F <= 0)";
+  const std::string what =
+      "step " + std::to_string(r.step()) + " (t = " + std::to_string(r.time()) + "): " + where;
   if (!newton_active_) {
     r.restore_step_begin();
     r.in_step = false;

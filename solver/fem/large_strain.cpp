@@ -1,5 +1,7 @@
 #include "solver/fem/large_strain.hpp"
 
+#include <array>
+
 #include "solver/fem/element_catalogue.hpp"
 #include "solver/fem/element_matrices.hpp"
 #include "solver/fem/neo_hookean.hpp"
@@ -26,6 +28,7 @@ bool material_point(const Material& material, const GradientVector& gradient, La
   const Eigen::Matrix3d f = as_tensor(gradient);
   switch (material.law) {
     case MaterialLaw::linear_elastic:  // a small-strain law: mesh_bodies.cpp never pairs it with F
+    case MaterialLaw::j2_plasticity:   // evaluated per element (j2_element)
       return false;
     case MaterialLaw::neo_hookean: {
       const NeoHookeanConstants c = neo_hookean_constants(material.young, material.poisson);
@@ -95,13 +98,118 @@ bool for_each_point(const MeshBody& body, const MeshElement& element, const Elem
 
 }  // namespace
 
+namespace {
+
+// A Q4P0x element of LMGC90's own J2 plasticity: its force, tangent triplets and history.
+bool j2_forces(const MeshBody& body, std::size_t e, const Eigen::VectorXd& displacement,
+               Eigen::VectorXd& internal, std::vector<Eigen::Triplet<double>>* triplets,
+               InvertedElement& inverted, const PointHistory& history) {
+  const MeshElement& element = body.elements[e];
+  const Material& material = body.materials[static_cast<std::size_t>(element.material)];
+  Eigen::Matrix<double, 4, 2> x0;
+  Eigen::Matrix<double, 8, 1> u;
+  std::array<J2State, 4> begin;
+  for (int a = 0; a < 4; ++a) {
+    const auto node = static_cast<std::size_t>(element.nodes[static_cast<std::size_t>(a)]);
+    for (int c = 0; c < 2; ++c) {
+      x0(a, c) = body.coordinates[2 * node + static_cast<std::size_t>(c)];
+      u(2 * a + c) = displacement(static_cast<Eigen::Index>(2 * node) + c);
+    }
+    for (int k = 0; k < kJ2Internal; ++k)
+      begin[static_cast<std::size_t>(a)][static_cast<std::size_t>(k)] =
+          (*history.begin)[(e * 4 + static_cast<std::size_t>(a)) * kJ2Internal + static_cast<std::size_t>(k)];
+  }
+  J2ElementResult result;
+  int point = 0;
+  const J2Failure failure =
+      j2_element(x0, u, begin, material.young, material.poisson, material.plasticity,
+                 body.hypothesis == Hypothesis::axisymmetric, triplets != nullptr, result, point);
+  if (failure != J2Failure::none) {
+    inverted = {e, point, failure == J2Failure::return_mapping};
+    return false;
+  }
+  for (int a = 0; a < 4; ++a) {
+    const int row_node = element.nodes[static_cast<std::size_t>(a)];
+    for (int i = 0; i < 2; ++i) {
+      internal(row_node * 2 + i) += result.force(2 * a + i);
+      if (triplets)
+        for (int b = 0; b < 4; ++b)
+          for (int j = 0; j < 2; ++j)
+            triplets->emplace_back(row_node * 2 + i, element.nodes[static_cast<std::size_t>(b)] * 2 + j,
+                                   result.stiffness(2 * a + i, 2 * b + j));
+    }
+    const std::size_t at = e * 4 + static_cast<std::size_t>(a);
+    if (history.end)
+      for (int k = 0; k < kJ2Internal; ++k)
+        (*history.end)[at * kJ2Internal + static_cast<std::size_t>(k)] =
+            result.internal[static_cast<std::size_t>(a)][static_cast<std::size_t>(k)];
+    if (history.stress)
+      for (int k = 0; k < 4; ++k)
+        (*history.stress)[at * 4 + static_cast<std::size_t>(k)] =
+            result.stress[static_cast<std::size_t>(a)](k);
+  }
+  return true;
+}
+
+}  // namespace
+
+Eigen::VectorXd reported_internal_force(const MeshBody& body, const std::vector<double>& stress) {
+  Eigen::VectorXd force = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(body.dofs()));
+  const QuadratureRule<2> rule = quadrature<2>(Rule::quad_2x2);
+  for (std::size_t e = 0; e < body.elements.size(); ++e) {
+    const MeshElement& element = body.elements[e];
+    NodeCoordinates<Q4> x;
+    for (int a = 0; a < 4; ++a)
+      for (int c = 0; c < 2; ++c)
+        x(a, c) =
+            body.coordinates[static_cast<std::size_t>(element.nodes[static_cast<std::size_t>(a)] * 2 + c)];
+    for (int g = 0; g < 4; ++g) {
+      const auto geometry = point_geometry<Q4>(x, rule.points[static_cast<std::size_t>(g)],
+                                               rule.weights[static_cast<std::size_t>(g)], body.hypothesis);
+      if (!geometry) continue;  // refused when the body was assembled
+      // Bᵀσ of the small-strain B (xx, yy, xy[, θθ]), node by node.
+      const std::size_t at = (e * 4 + static_cast<std::size_t>(g)) * 4;
+      const double sxx = stress[at], syy = stress[at + 1], sxy = stress[at + 2], szz = stress[at + 3];
+      const bool hoop = body.hypothesis == Hypothesis::axisymmetric;
+      for (int a = 0; a < 4; ++a) {
+        const double dx = geometry->gradients(a, 0), dy = geometry->gradients(a, 1);
+        const double hoop_term = hoop ? geometry->values(a) / geometry->position.x() * szz : 0.0;
+        const int node = element.nodes[static_cast<std::size_t>(a)];
+        force(node * 2) += (dx * sxx + dy * sxy + hoop_term) * geometry->weight;
+        force(node * 2 + 1) += (dy * syy + dx * sxy) * geometry->weight;
+      }
+    }
+  }
+  return force;
+}
+
+bool keeps_point_history(const MeshBody& body) {
+  for (const Material& m : body.materials)
+    if (m.law == MaterialLaw::j2_plasticity) return true;
+  return false;
+}
+
+std::vector<double> initial_point_history(const MeshBody& body) {
+  std::vector<double> history;
+  if (!keeps_point_history(body)) return history;
+  for (std::size_t e = 0; e < body.elements.size() * 4; ++e)
+    history.insert(history.end(), kJ2Initial.begin(), kJ2Initial.end());
+  return history;
+}
+
 bool large_strain_forces(const MeshBody& body, const Eigen::VectorXd& displacement, Eigen::VectorXd& internal,
-                         Eigen::SparseMatrix<double>* tangent, InvertedElement& inverted) {
+                         Eigen::SparseMatrix<double>* tangent, InvertedElement& inverted,
+                         const PointHistory& history) {
   internal = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(body.dofs()));
   std::vector<Eigen::Triplet<double>> triplets;
   for (std::size_t e = 0; e < body.elements.size(); ++e) {
     const MeshElement& element = body.elements[e];
     const Material& material = body.materials[static_cast<std::size_t>(element.material)];
+    if (material.law == MaterialLaw::j2_plasticity) {
+      if (!j2_forces(body, e, displacement, internal, tangent ? &triplets : nullptr, inverted, history))
+        return false;
+      continue;
+    }
     const bool ok = with_element(element.kind, [&](auto shape) {
       using E = decltype(shape);
       if constexpr (E::kDimension != 2) {

@@ -17,18 +17,21 @@
 
 #include "solver/fem/element_catalogue.hpp"
 #include "solver/fem/element_matrices.hpp"
+#include "solver/fem/finite_strain_plasticity.hpp"
 
 namespace lmgc::solver::fem {
 
 // The behaviour a Gauss point follows: linear elasticity (small strain), or MatLib's compressible
 // neo-Hookean potential (large strain, neo_hookean.hpp).
-enum class MaterialLaw : std::uint8_t { linear_elastic, neo_hookean };
+// or LMGC90's own J2 plasticity (large strain on Q4P0x, finite_strain_plasticity.hpp).
+enum class MaterialLaw : std::uint8_t { linear_elastic, neo_hookean, j2_plasticity };
 
 struct Material {
   double young = 0.0;
   double poisson = 0.0;
   double density = 0.0;
   MaterialLaw law = MaterialLaw::linear_elastic;
+  J2Parameters plasticity{};  // j2_plasticity
 };
 
 // MODELS.DAT 'kine_': small strain, or large strain in the total Lagrangian form ('form_ TotaL':

@@ -159,9 +159,30 @@ grammar::GpvFile gauss_point_values_file(const DeformableBodies& bodies, long st
   grammar::GpvFile file;
   file.step = grammar::Integer{step};
   file.time = grammar::Real{time};
-  for (std::size_t b = 0; b < bodies.states.size(); ++b)
-    file.bodies.push_back(gauss_point_values(bodies.meshes.bodies[b], bodies.meshes.matlib[b],
-                                             bodies.states[b].x, static_cast<int>(b + 1)));
+  for (std::size_t b = 0; b < bodies.states.size(); ++b) {
+    const MeshBodyState& s = bodies.states[b];
+    const fem::MeshBody& mesh = bodies.meshes.bodies[b];
+    grammar::GpvBody written =
+        gauss_point_values(mesh, bodies.meshes.matlib[b], s.x, static_cast<int>(b + 1));
+    if (!s.history.empty()) {
+      // J2 plasticity (LMGC90's own large-strain material): per point the Cauchy stress (xx, yy, xy,
+      // zz), a strain line LMGC90 never fills (zeros), the 6 internal variables.
+      for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
+        auto& lines = written.elements[e].models[0].lines;
+        lines.clear();
+        for (std::size_t p = e * 4; p < e * 4 + 4; ++p) {
+          lines.emplace_back();
+          for (std::size_t k = 0; k < 4; ++k)
+            lines.back().push_back(grammar::Real{s.point_stress[p * 4 + k]});
+          lines.emplace_back(4, grammar::Real{0.0});
+          lines.emplace_back();
+          for (std::size_t k = 0; k < static_cast<std::size_t>(fem::kJ2Internal); ++k)
+            lines.back().push_back(grammar::Real{s.history[p * fem::kJ2Internal + k]});
+        }
+      }
+    }
+    file.bodies.push_back(std::move(written));
+  }
   return file;
 }
 

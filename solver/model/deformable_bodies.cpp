@@ -21,6 +21,8 @@ bool initialise_mesh_states(DeformableBodies& d, std::string& error, std::size_t
     s.x = s.x_begin = s.v = s.v_begin = s.v_free = s.f_ext = Eigen::VectorXd::Zero(n);
     s.internal_force = s.inertial_force = s.residue = s.rhs = Eigen::VectorXd::Zero(n);
     s.large_strain = mesh.kinematics == fem::Kinematics::total_lagrangian;
+    s.history_begin = s.history = fem::initial_point_history(mesh);
+    s.point_stress.assign(s.history.size() / fem::kJ2Internal * 4, 0.0);
   }
   return true;
 }
@@ -151,8 +153,8 @@ void bulk_large_strain(DeformableBodies& d, std::size_t b, const StepContext& st
   const double h = step.h, theta = step.theta;
   const Eigen::VectorXd x_theta = s.x_begin + theta * h * ((1.0 - theta) * s.v_begin + theta * s.v);
   fem::InvertedElement inverted;
-  s.bulk_current =
-      fem::large_strain_forces(d.meshes.bodies[b], x_theta, s.bulk_force, &s.bulk_tangent, inverted);
+  s.bulk_current = fem::large_strain_forces(d.meshes.bodies[b], x_theta, s.bulk_force, &s.bulk_tangent,
+                                            inverted, {&s.history_begin, nullptr, nullptr});
   if (!s.bulk_current) s.inverted = inverted;
 }
 
@@ -237,10 +239,13 @@ void dof_deformable(DeformableBodies& d, const StepContext& step) {
     if (s.large_strain) {
       // LMGC90's ComputeField: F_int at the end configuration X.
       fem::InvertedElement inverted;
-      if (!fem::large_strain_forces(d.meshes.bodies[b], s.x, s.internal_force, nullptr, inverted)) {
+      if (!fem::large_strain_forces(d.meshes.bodies[b], s.x, s.internal_force, nullptr, inverted,
+                                    {&s.history_begin, &s.history, &s.point_stress})) {
         s.inverted = inverted;
         continue;
       }
+      if (!s.history.empty())
+        s.internal_force = fem::reported_internal_force(d.meshes.bodies[b], s.point_stress);
       if (s.damping.size()) s.internal_force += s.damping * s.v;
     } else {
       s.internal_force = s.scheme.internal_force(s.x, s.v);
@@ -289,6 +294,7 @@ void update_deformable(DeformableBodies& d) {
   for (MeshBodyState& s : d.states) {
     s.x_begin = s.x;
     s.v_begin = s.v;
+    s.history_begin = s.history;
   }
 }
 

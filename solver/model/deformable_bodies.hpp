@@ -50,6 +50,9 @@ struct MeshBodyState {
   bool bulk_current = false;  // computed for the iterate in progress
   // C of a large-strain body: αM + βK_t as they were at mecaMAILx_ComputeRayleighDamping (empty: none).
   Eigen::SparseMatrix<double> damping;
+  // J2 plasticity's Gauss-point states (fem::kJ2Internal per point) at the beginning of the step and at
+  // the last ComputeDof's X, and the Cauchy stresses there (4 per point): what GPV files write.
+  std::vector<double> history_begin, history, point_stress;
 };
 
 struct DeformableBodies {

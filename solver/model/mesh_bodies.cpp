@@ -31,7 +31,7 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
   };
   // The models lmgc runs: MECAx, small strain, linear isotropic elasticity.
   std::map<std::string, const grammar::Model*> models;
-  std::map<std::string, bool> matlib, large_strain;
+  std::map<std::string, bool> matlib, large_strain, own_large_strain;
   if (files.models)
     for (const grammar::Model& m : files.models->models) {
       models[m.nickname.value] = &m;
@@ -56,17 +56,36 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
         return refuse(models_path, kine->value.span,
                       "model '" + m.nickname.value + "' asks for 'kine_ " + kine->value.value +
                           "': LMGC90 knows small and large");
-      if (large) {
-        if (!form || form->value.value != "TotaL")
+      // Large strain: MatLib's neo-Hookean in the total Lagrangian form, or LMGC90's own material
+      // ('isext no___': J2 plasticity on Q4P0x, which LMGC90 runs for 'form_ UpdtL' only; 'mater' is
+      // not read there).
+      const bool own_material = !isext_option || isext_option->value.value == "no___";
+      if (large && own_material) {
+        if (!form || form->value.value != "UpdtL")
           return refuse(models_path, form ? form->value.span : kine->value.span,
-                        "model '" + m.nickname.value + "' asks for large strain in the form '" +
+                        "model '" + m.nickname.value +
+                            "' asks for large strain with LMGC90's own material in the form '" +
                             (form ? form->value.value : std::string("(none)")) +
-                            "': lmgc runs the total Lagrangian form (form_ TotaL) only for now");
-        if (!mater || mater->value.value != "neoh_" || !isext_option || isext_option->value.value != "MatL_")
+                            "': LMGC90 runs it in the updated Lagrangian form (form_ UpdtL) only");
+        if (m.element.value != "Q4P0x")
+          return refuse(models_path, m.element.span,
+                        "model '" + m.nickname.value +
+                            "' asks for large strain with LMGC90's own material on " + m.element.value +
+                            ": LMGC90 runs it on Q4P0x only");
+      } else if (large) {
+        if (!form || form->value.value != "TotaL")
+          return refuse(
+              models_path, form ? form->value.span : kine->value.span,
+              "model '" + m.nickname.value + "' asks for large strain in the form '" +
+                  (form ? form->value.value : std::string("(none)")) +
+                  "' with MatLib: lmgc runs MatLib in the total Lagrangian form (form_ TotaL) only");
+        if (!mater || mater->value.value != "neoh_")
           return refuse(models_path, mater ? mater->value.span : kine->value.span,
                         "model '" + m.nickname.value +
-                            "' asks for large strain with another material than MatLib's neo-Hookean "
-                            "('isext MatL_', 'mater neoh_'): lmgc runs that one only for now");
+                            "' asks for large strain with another MatLib material than the neo-Hookean "
+                            "('mater neoh_'): lmgc runs that one only for now");
+      }
+      if (large) {
         if (hypothesis == fem::Hypothesis::three_d)
           return refuse(models_path, kine->value.span,
                         "model '" + m.nickname.value + "': lmgc runs large strain in 2D only for now");
@@ -80,6 +99,7 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
                           "': lmgc runs linear elasticity (elas_) in small strain only for now");
       }
       large_strain[m.nickname.value] = large;
+      own_large_strain[m.nickname.value] = large && own_material;
       const grammar::ModelOption* aniso = option(m, "aniso");
       if (aniso && aniso->value.value != "iso__")
         return refuse(models_path, aniso->value.span,
@@ -93,7 +113,9 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
                            id == "mater" || id == "mstrg" || id == "cplth";
         const bool accepted = !known          ? false
                               : id == "isext" ? (value == "no___" || value == "MatL_")
-                              : id == "form_" ? value == (large ? "TotaL" : "xxxxx")
+                              : id == "form_" ? value == (!large         ? "xxxxx"
+                                                          : own_material ? "UpdtL"
+                                                                         : "TotaL")
                               : id == "cplth" ? value == "no___"
                                               : true;
         if (!accepted)
@@ -101,7 +123,8 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
               models_path, o.id.span,
               "model '" + m.nickname.value + "' asks for '" + id + " " + value +
                   "', which lmgc does not run yet (it runs small-strain linear elasticity, isext no___ or "
-                  "MatL_, and large-strain neo-Hookean, form_ TotaL; no thermal coupling)");
+                  "MatL_, large-strain neo-Hookean with MatLib, form_ TotaL, and LMGC90's own J2 plasticity, "
+                  "form_ UpdtL; no thermal coupling)");
       }
       const grammar::ModelOption* isext = option(m, "isext");
       matlib[m.nickname.value] = isext && isext->value.value == "MatL_";
@@ -117,23 +140,44 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
   std::map<std::string, std::int32_t> material_of;
   std::vector<fem::Material> materials;
   const auto material = [&](const grammar::Word& behav, fem::MaterialLaw law) -> std::int32_t {
-    const std::string key = behav.value + (law == fem::MaterialLaw::neo_hookean ? "|neoh_" : "");
+    const std::string key = behav.value + "|" + std::to_string(static_cast<int>(law));
     auto it = material_of.find(key);
     if (it != material_of.end()) return it->second;
     if (!files.bulk_behav) return -1;
+    const bool plastic = law == fem::MaterialLaw::j2_plasticity;
     for (const grammar::BulkLaw& card : files.bulk_behav->laws) {
       if (card.nickname.value != behav.value) continue;
-      if (card.law_type.value != "ELAS" || card.density_field) return -1;
+      if (card.law_type.value != (plastic ? "ELAS_PLAS" : "ELAS") || card.density_field) return -1;
       fem::Material m;
       m.law = law;
       m.density = card.density.value;
-      for (const grammar::BulkBlock& block : card.blocks)
+      bool plasticity_read = false;
+      for (const grammar::BulkBlock& block : card.blocks) {
         if (block.kind == grammar::BulkBlockKind::elas && !block.lines.empty() && !block.lines[0].field &&
             block.lines[0].values.size() >= 2) {
           m.young = block.lines[0].values[0].value;
           m.poisson = block.lines[0].values[1].value;
         }
-      if (!(m.young > 0.0)) return -1;
+        // PLAS: a von Mises criterion, isotropic hardening only (LMGC90's BULK_NL_ISO reads but
+        // ignores kinematic hardening and viscoplasticity: a case asking for them is refused).
+        if (plastic && block.kind == grammar::BulkBlockKind::plas && block.options.size() >= 2 &&
+            block.options[0].value == "Von-Mises" && !block.lines.empty() && !block.lines[0].field) {
+          const std::string& isoh = block.options[1].value;
+          const auto& v = block.lines[0].values;
+          const bool others_none = (block.options.size() < 3 || block.options[2].value == "none") &&
+                                   (block.options.size() < 4 || block.options[3].value == "none");
+          m.plasticity.hardening = isoh == "Swift"    ? fem::Hardening::swift
+                                   : isoh == "linear" ? fem::Hardening::linear
+                                                      : fem::Hardening::hollomon;
+          const std::size_t needed = isoh == "Swift" ? 3 : 2;
+          if ((isoh == "Swift" || isoh == "linear" || isoh == "Hollomon") && v.size() >= needed &&
+              others_none) {
+            for (std::size_t k = 0; k < needed; ++k) m.plasticity.coefficients[k] = v[k].value;
+            plasticity_read = true;
+          }
+        }
+      }
+      if (!(m.young > 0.0) || (plastic && !plasticity_read)) return -1;
       const auto id = static_cast<std::int32_t>(materials.size());
       materials.push_back(m);
       material_of.emplace(key, id);
@@ -183,14 +227,18 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
         element.nodes[k] = static_cast<std::int32_t>(n - 1);
       }
       const bool large = large_strain[model.nickname.value];
-      element.material = material(reference->behav,
-                                  large ? fem::MaterialLaw::neo_hookean : fem::MaterialLaw::linear_elastic);
+      const fem::MaterialLaw law = !large                                   ? fem::MaterialLaw::linear_elastic
+                                   : own_large_strain[model.nickname.value] ? fem::MaterialLaw::j2_plasticity
+                                                                            : fem::MaterialLaw::neo_hookean;
+      element.material = material(reference->behav, law);
       if (element.material < 0)
         return refuse(
             bulk_path, reference->behav.span,
             "bulk behaviour '" + reference->behav.value +
-                "' is not an ELAS law with a density, a Young's modulus and a Poisson's ratio: lmgc runs "
-                "linear isotropic elasticity only for now");
+                "' is not what its model needs: an ELAS law with a density, a Young's modulus and a "
+                "Poisson's "
+                "ratio (an ELAS_PLAS law with a von Mises criterion and linear, Swift or Hollomon isotropic "
+                "hardening, nothing kinematic or viscous, for LMGC90's own large-strain material)");
       const grammar::ModelOption* mstrg = option(model, "mstrg");
       const bool lump = mstrg && mstrg->value.value == "lump_";  // anything else: consistent (mailx-2d.md §3)
       if (any && lump != lumped)

@@ -3,7 +3,8 @@
 // (../shared/.../reference_lmgc90/):
 // - 1Q4-traction: one Q4xxx, total Lagrangian, MatLib's neo-Hookean material, stretched by driven
 //   velocities through 10000 steps;
-// - mur: nine Q4P0x blocks in contact on a rigid JONCx (below).
+// - mur: nine Q4P0x blocks in contact on a rigid JONCx (below);
+// - braudel and taylor: LMGC90's own J2 plasticity on Q4P0x (below).
 //
 // Tolerance: 1e-6 of the largest value of each file (the figure for a deterministic case).
 // Both codes run the same formulas in another order. 1Q4-traction measured: DOF 0 (every printed digit
@@ -141,6 +142,33 @@ TEST(MailxLargeStrainExample, MurRunsToItsEndAndAgreesWithLmgc90) {
   EXPECT_EQ(ours.size(), 1500u);
   EXPECT_EQ(ours, iterations_and_contacts(read_file(reference / "POSTPRO" / "SOLVER_INFORMATIONS.DAT")));
   print(worst);
+}
+
+// braudel (plane strain) and taylor (axisymmetric, 216 elements, 2000 steps): LMGC90's own large-strain
+// material, finite-strain J2 plasticity with Swift and linear hardening on Q4P0x (the mean-dilatation
+// pressure), updated Lagrangian. Measured: braudel DOF and GPV identical, taylor DOF 4.2e-14, GPV
+// 2.2e-9 of their scales; braudel's Dep and Fint EVOLUTION (LMGC90's reported internal force included).
+TEST(MailxLargeStrainExample, BraudelRunsToItsEndAndAgreesWithLmgc90) {
+  LMGC_REQUIRE_SHARED();
+  if (!fs::exists(tool_path("lmgc-run"))) GTEST_SKIP() << "this build has no Python module (lmgc-run)";
+  fs::path dir;
+  std::map<std::string, double> worst = run_and_compare("braudel", 3, dir);
+  const fs::path reference = examples_dir() / "mecaMAILx_2D" / "braudel" / "reference_lmgc90";
+  for (const char* name : {"Dep_0000001.DAT", "Dep_0000002.DAT", "Fint_0000001.DAT", "Fint_0000002.DAT"}) {
+    const double d =
+        relative_difference(read_file(dir / "POSTPRO" / name), read_file(reference / "POSTPRO" / name));
+    EXPECT_GE(d, 0.0) << name;
+    EXPECT_LE(d, 1e-6) << name;
+    worst[std::string(name).substr(0, 3)] = std::max(worst[std::string(name).substr(0, 3)], d);
+  }
+  print(worst);
+}
+
+TEST(MailxLargeStrainExample, TaylorRunsToItsEndAndAgreesWithLmgc90) {
+  LMGC_REQUIRE_SHARED();
+  if (!fs::exists(tool_path("lmgc-run"))) GTEST_SKIP() << "this build has no Python module (lmgc-run)";
+  fs::path dir;
+  print(run_and_compare("taylor", 16, dir));
 }
 
 }  // namespace
