@@ -180,6 +180,27 @@ def mailx_model_neo_hookean(model, element):
             "                      mstrg  lump_\n                      cplth  no___\n")
 
 
+def mailx_model_j2(model):
+    """MODELS.DAT: one Q4P0x model of LMGC90's own large-strain material (updated Lagrangian)."""
+    return (f"$model  mdlty  finel  eleop  value\n {model}\n        MECAx  Q4P0x  isext  no___\n"
+            "                      kine_  large\n                      form_  UpdtL\n"
+            "                      mstrg  lump_\n")
+
+
+def elas_plas_bulk(name, density, young, poisson, hardening, coefficients):
+    """BULK_BEHAV.DAT with one ELAS_PLAS law, von Mises, isotropic hardening 'linear' (SIG0, K___) or
+    'Swift' (C0__, EPS0, n___)."""
+    labels = {"linear": ("SIG0", "K___"), "Swift": ("C0__", "EPS0", "n___")}[hardening]
+    values = "  ".join(f"{label}={real(v)}" for label, v in zip(labels, coefficients))
+    pad = " " * 40
+    return (f"$gravy\n                   grv1={real(0.0)}  grv2={real(0.0)}  grv3={real(0.0)}\n\n"
+            f"$behav  lawty\n {name}  ELAS_PLAS                       Umas={real(density)}\n"
+            f"{pad}elas: standard\n{pad}ani_: isotropic\n"
+            f"{pad}EYng={real(young)}  EPss={real(poisson)}\n"
+            f"{pad}crit: Von-Mises\n{pad}isoh: {hardening}\n{pad}{values}\n"
+            f"{pad}cinh: none\n{pad}visc: none\n")
+
+
 def elas_bulk(name, density, young, poisson, gravity=(0.0, 0.0)):
     """BULK_BEHAV.DAT with one ELAS law."""
     return (f"$gravy\n                   grv1={real(gravity[0])}  grv2={real(gravity[1])}  grv3={real(0.0)}\n\n"

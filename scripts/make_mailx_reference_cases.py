@@ -21,6 +21,9 @@ in <case>/lmgc90_reference/ (DOF.LAST, GPV.LAST): the files the tests compare lm
   and the final state against LMGC90's.
 - mailx_rotated_at_rest: the same square at rest, rotated by 90° in DOF.INI: its stresses stay at
   round-off (frame invariance), against LMGC90 too.
+- mailx_j2_traction_linear, mailx_j2_traction_swift: the square of 2 × 2 Q4P0x with LMGC90's own
+  J2 plasticity (linear and Swift hardening) stretched by 20 % in plane strain: at every plastic
+  Gauss point q = σ_y(p), and against LMGC90.
 - mailx_hertz_cylinder: an elastic half-cylinder (T3xxx, plane strain) pressed by a line load on a
   rigid JONCx, frictionless CLJCx contacts: the contact half-width and the peak pressure against
   Hertz's (compared with the closed form, not run by LMGC90 here).
@@ -179,7 +182,7 @@ chipy.Finalize()
 """
 
 
-def square_case(folder, script_text, dof_ini=None):
+def square_case(folder, script_text, dof_ini=None, material=None):
     """The unit square of 2 × 2 Q4xxx (E = 1e6 Pa, ν = 0.3, ρ = 1 kg/m², plane strain, MatLib's
     neo-Hookean), its bottom held vertically (the corner (0, 0) also horizontally) and its top pulled
     up at 0.5 m/s, unless dof_ini holds it at rest elsewhere."""
@@ -187,6 +190,9 @@ def square_case(folder, script_text, dof_ini=None):
     files = {"BODIES.DAT": w.mailx_bodies(nodes, elements, "Q4xxx", "M2DNL", "rubbr"),
              "MODELS.DAT": w.mailx_model_neo_hookean("M2DNL", "Q4xxx"),
              "BULK_BEHAV.DAT": w.elas_bulk("rubbr", 1.0, 1e6, 0.3)}
+    if material is not None:  # (hardening, coefficients): LMGC90's own J2 plasticity on Q4P0x
+        files["MODELS.DAT"] = w.mailx_model_j2("M2DNL")
+        files["BULK_BEHAV.DAT"] = w.elas_plas_bulk("rubbr", 1.0, 1e6, 0.3, *material)
     if dof_ini is None:
         driven = {}
         for k, (x, y, _) in enumerate(nodes):
@@ -223,6 +229,14 @@ def rotated_at_rest(folder):
     square_case(folder, newton_script(
         "# The square at rest, rotated by 90 degrees: no stress (frame invariance).",
         0.05, 0.5, 0.5, 0.05, 0.05, 20, 9999999, 1e-10), dof_ini=dof_ini)
+
+
+def j2_traction(hardening, coefficients):
+    def make(folder):
+        square_case(folder, newton_script(
+            f"# The square of Q4P0x (J2 plasticity, {hardening} hardening) stretched by 20 % in 20 steps.",
+            0.02, 1.0, 0.4, 0.02, 0.02, 20, 9999999, 1e-10), material=(hardening, coefficients))
+    return make
 
 
 def patch_q4(folder):
@@ -401,6 +415,8 @@ def main():
              "mailx_glued_blocks": glued_blocks,
              "mailx_neo_hookean_stretch": neo_hookean_stretch, "mailx_adaptive_stretch": adaptive_stretch,
              "mailx_rotated_at_rest": rotated_at_rest,
+             "mailx_j2_traction_linear": j2_traction("linear", (2e3, 1e4)),
+             "mailx_j2_traction_swift": j2_traction("Swift", (1e4, 0.01, 0.2)),
              "mailx_hertz_cylinder": hertz_cylinder}
     for name, make in cases.items():
         folder = os.path.join(ROOT, "reference_cases", name)

@@ -237,3 +237,52 @@ TEST(MailxLargeStrainCases, InvertedElementIsNamedAndTheStepIsRedoneSmaller) {
 
 }  // namespace
 }  // namespace lmgc::test
+
+namespace lmgc::test {
+namespace {
+
+// reference_cases/mailx_j2_traction_{linear,swift}: LMGC90's own J2 plasticity on Q4P0x stretched by
+// 20 % in plane strain. Every Gauss point of GPV.LAST is on or inside its yield surface: q = σ_y(p) to
+// 1.5e-7 where it yielded in the last step (half a unit of q's 7th printed digit, 6.8e-8, plus p's
+// through σ_y', up to 4.7e-8; the return mapping stops at 1e-10), q < σ_y(p) elsewhere; the body has yielded
+// (p > 1 %); steps, DOF.LAST and GPV.LAST as LMGC90 2025 wrote them.
+void expect_on_the_yield_surface(const std::string& name, double (*yield)(double)) {
+  const fs::path dir = run_case(name);
+  if (dir.empty()) GTEST_SKIP() << "this build has no Python module (lmgc-run)";
+  const grammar::GpvFile gpv = gauss_point_values(dir);
+  ASSERT_EQ(gpv.bodies.size(), 1u);
+  int on_surface = 0;
+  double largest_p = 0.0;
+  for (const grammar::GpvElement& e : gpv.bodies[0].elements) {
+    const auto& lines = e.models.at(0).lines;
+    ASSERT_EQ(lines.size(), 12u);  // 4 points × (σ, zero strain, 6 internal variables)
+    for (std::size_t g = 0; g < 4; ++g) {
+      const auto& internal = lines[3 * g + 2];
+      ASSERT_EQ(internal.size(), 6u);
+      const double p = internal[4].value, q = internal[5].value, sigma_y = yield(p);
+      largest_p = std::max(largest_p, p);
+      EXPECT_LE(q, sigma_y * (1.0 + 1.5e-7)) << name << " point " << g;
+      if (q >= sigma_y * (1.0 - 1.5e-7)) ++on_surface;
+    }
+  }
+  EXPECT_GT(largest_p, 0.01);
+  EXPECT_GT(on_surface, 0);
+  std::printf("%s: %d of 16 points on the yield surface, largest p %.4f\n", name.c_str(), on_surface,
+              largest_p);
+  steps_log(name, dir);
+  const fs::path reference = fs::path(LMGC_SOURCE_DIR) / "reference_cases" / name / "lmgc90_reference";
+  for (const char* file : {"DOF.LAST", "GPV.LAST"})
+    EXPECT_EQ(read_file(dir / "OUTBOX" / file), read_file(reference / file)) << name << ": " << file;
+}
+
+TEST(MailxLargeStrainCases, J2TractionWithLinearHardeningStaysOnItsYieldSurface) {
+  expect_on_the_yield_surface("mailx_j2_traction_linear", [](double p) { return 2e3 + 1e4 * p; });
+}
+
+TEST(MailxLargeStrainCases, J2TractionWithSwiftHardeningStaysOnItsYieldSurface) {
+  expect_on_the_yield_surface("mailx_j2_traction_swift",
+                              [](double p) { return 1e4 * std::pow(0.01 + p, 0.2); });
+}
+
+}  // namespace
+}  // namespace lmgc::test
