@@ -208,7 +208,6 @@ struct Session::Run {
   virtual bool has_meshes() const = 0;
   virtual std::string gpv_text() const = 0;
   virtual void set_rayleigh(double alpha, double beta) = 0;
-  virtual bool has_large_strain() const = 0;
   virtual void compute_bulk() = 0;  // ComputeBulk in a step: large-strain bodies at their iterate
   // mecaMAILx_ComputeResidueNorm (0 without deformable bodies).
   virtual double residue_norm() = 0;
@@ -343,13 +342,6 @@ struct DimensionRun final : Session::Run {
       return grammar::write_gpv(solver::gauss_point_values_file(scene.deformable, state.step, state.time));
     else
       return {};
-  }
-  bool has_large_strain() const override {
-    if constexpr (T::kDimension == 2) {
-      for (const auto& body : scene.deformable.states)
-        if (body.large_strain) return true;
-    }
-    return false;
   }
   double residue_norm() override {
     if constexpr (T::kDimension == 2)
@@ -769,8 +761,9 @@ void Session::stage(std::string_view name) {
   Run& r = running(name);
   // ComputeBulk computes the element stiffnesses and internal forces: lmgc's linear bodies keep
   // their stiffness and compute the forces in ComputeFreeVelocity, so the call may come before the
-  // time loop (as LMGC90's linear scripts make it) and more than once in a step; it tells only that
-  // the stiffness exists (Rayleigh damping's βK needs it).
+  // time loop (as LMGC90's linear scripts make it) and more than once in a step; it tells that the
+  // stiffness exists (Rayleigh damping's βK needs it) and, in a step, computes the large-strain
+  // bodies' forces and tangents at their iterate.
   // A Newton iteration (LMGC90's loop of ComputeBulk ... ComputeDof inside a step) starts again when
   // ComputeBulk or ComputeFreeVelocity comes after the step's ComputeDof: the iteration's stages may
   // then run once more; each iteration starts from the velocity the previous one ended with.
@@ -871,6 +864,11 @@ void Session::stage(std::string_view name) {
   }
 }
 
+void Session::abandon_step(Run& r) {
+  r.restore_step_begin();
+  r.in_step = false;
+}
+
 void Session::report_inverted(Run& r) {
   if (r.inverted_reported) return;
   const std::string where = r.inverted();
@@ -879,8 +877,7 @@ void Session::report_inverted(Run& r) {
   const std::string what =
       "step " + std::to_string(r.step()) + " (t = " + std::to_string(r.time()) + "): " + where;
   if (!newton_active_) {
-    r.restore_step_begin();
-    r.in_step = false;
+    abandon_step(r);
     r.stopped = what;
     fail(ErrorKind::non_finite,
          what +
@@ -964,8 +961,7 @@ int Session::newton_compute_time_step() {
         "): the Newton loop did not converge in " + std::to_string(newton_.max_iterations) +
         " iterations and the time step cannot be cut below NewtonRaphson_SetMinTimeStep (" +
         std::to_string(newton_.min_step) + ")";
-    r.restore_step_begin();
-    r.in_step = false;
+    abandon_step(r);
     write_last_dof();
     write_last_gpv();
     r.stopped = what;
@@ -976,10 +972,7 @@ int Session::newton_compute_time_step() {
     warn("step " + std::to_string(r.step()) +
          ": the next time step would be below NewtonRaphson_SetMinTimeStep: "
          "the run stops after this step, as LMGC90's does");
-  if (next.state == NewtonRaphson::redo) {
-    r.restore_step_begin();
-    r.in_step = false;
-  }
+  if (next.state == NewtonRaphson::redo) abandon_step(r);
   if (next.h > 0.0 && next.h != h) pending_time_step_ = next.h;
   return next.state;
 }

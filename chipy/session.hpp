@@ -166,6 +166,8 @@ class Session {
   // An element inverted in the step's last evaluation: a warning inside a Newton loop (the loop
   // diverges and the step is redone), otherwise the run stops naming it.
   void report_inverted(Run& r);
+  // The step in progress ends without UpdateStep (redone, or the run stops): back to its beginning.
+  void abandon_step(Run& r);
   void end_run_files();
   void warn(const std::string& message) const;
 

@@ -96,9 +96,22 @@ bool for_each_point(const MeshBody& body, const MeshElement& element, const Elem
   return true;
 }
 
-}  // namespace
-
-namespace {
+// Adds an element's force (and stiffness, when triplets are wanted) to the body's at its nodes' dofs.
+template <int N>
+void scatter(const MeshElement& element, const Eigen::Matrix<double, 2 * N, 1>& fe,
+             const Eigen::Matrix<double, 2 * N, 2 * N>& ke, Eigen::VectorXd& internal,
+             std::vector<Eigen::Triplet<double>>* triplets) {
+  for (int a = 0; a < N; ++a)
+    for (int i = 0; i < 2; ++i) {
+      const int row = element.nodes[static_cast<std::size_t>(a)] * 2 + i;
+      internal(row) += fe(2 * a + i);
+      if (triplets)
+        for (int c = 0; c < N; ++c)
+          for (int j = 0; j < 2; ++j)
+            triplets->emplace_back(row, element.nodes[static_cast<std::size_t>(c)] * 2 + j,
+                                   ke(2 * a + i, 2 * c + j));
+    }
+}
 
 // A Q4P0x element of LMGC90's own J2 plasticity: its force, tangent triplets and history.
 bool j2_forces(const MeshBody& body, std::size_t e, const Eigen::VectorXd& displacement,
@@ -128,16 +141,8 @@ bool j2_forces(const MeshBody& body, std::size_t e, const Eigen::VectorXd& displ
     inverted = {e, point, failure == J2Failure::return_mapping};
     return false;
   }
+  scatter<4>(element, result.force, result.stiffness, internal, triplets);
   for (int a = 0; a < 4; ++a) {
-    const int row_node = element.nodes[static_cast<std::size_t>(a)];
-    for (int i = 0; i < 2; ++i) {
-      internal(row_node * 2 + i) += result.force(2 * a + i);
-      if (triplets)
-        for (int b = 0; b < 4; ++b)
-          for (int j = 0; j < 2; ++j)
-            triplets->emplace_back(row_node * 2 + i, element.nodes[static_cast<std::size_t>(b)] * 2 + j,
-                                   result.stiffness(2 * a + i, 2 * b + j));
-    }
     const std::size_t at = e * 4 + static_cast<std::size_t>(a);
     if (history.end)
       for (int k = 0; k < kJ2Internal; ++k)
@@ -232,16 +237,7 @@ bool large_strain_forces(const MeshBody& body, const Eigen::VectorXd& displaceme
               return true;
             });
         if (!points_ok) return false;
-        for (int a = 0; a < N; ++a)
-          for (int i = 0; i < 2; ++i) {
-            const int row = element.nodes[static_cast<std::size_t>(a)] * 2 + i;
-            internal(row) += fe(2 * a + i);
-            if (tangent)
-              for (int c = 0; c < N; ++c)
-                for (int j = 0; j < 2; ++j)
-                  triplets.emplace_back(row, element.nodes[static_cast<std::size_t>(c)] * 2 + j,
-                                        ke(2 * a + i, 2 * c + j));
-          }
+        scatter<N>(element, fe, ke, internal, tangent ? &triplets : nullptr);
         return true;
       }
     });

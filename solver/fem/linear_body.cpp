@@ -76,18 +76,19 @@ bool LinearThetaScheme::prepare(const LinearBodyMatrices& matrices, double h, do
                                 double rayleigh_alpha, double rayleigh_beta,
                                 std::span<const std::int32_t> driven_dofs) {
   return prepare(
-      matrices, h, theta,
+      matrices.mass, matrices.stiffness, h, theta,
       Eigen::SparseMatrix<double>(rayleigh_alpha * matrices.mass + rayleigh_beta * matrices.stiffness),
       driven_dofs);
 }
 
-bool LinearThetaScheme::prepare(const LinearBodyMatrices& matrices, double h, double theta,
+bool LinearThetaScheme::prepare(const Eigen::SparseMatrix<double>& mass,
+                                const Eigen::SparseMatrix<double>& stiffness, double h, double theta,
                                 const Eigen::SparseMatrix<double>& damping,
                                 std::span<const std::int32_t> driven_dofs) {
   h_ = h;
   theta_ = theta;
-  stiffness_ = matrices.stiffness;
-  mass_ = matrices.mass;
+  stiffness_ = stiffness;
+  mass_ = mass;
   damping_ = damping.size() ? damping : Eigen::SparseMatrix<double>(mass_.rows(), mass_.cols());
   iteration_ = mass_ + theta * h * damping_ + (theta * h) * (theta * h) * stiffness_;
   const auto n = static_cast<std::int32_t>(iteration_.rows());

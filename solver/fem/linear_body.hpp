@@ -76,9 +76,10 @@ class LinearThetaScheme {
   // positive definite on the free dofs (a body free to move rigidly without mass, ...).
   bool prepare(const LinearBodyMatrices& matrices, double h, double theta, double rayleigh_alpha,
                double rayleigh_beta, std::span<const std::int32_t> driven_dofs);
-  // The same with the damping matrix C given (empty: none).
-  bool prepare(const LinearBodyMatrices& matrices, double h, double theta,
-               const Eigen::SparseMatrix<double>& damping, std::span<const std::int32_t> driven_dofs);
+  // The same with the stiffness (a tangent) and the damping matrix C given (empty: none).
+  bool prepare(const Eigen::SparseMatrix<double>& mass, const Eigen::SparseMatrix<double>& stiffness,
+               double h, double theta, const Eigen::SparseMatrix<double>& damping,
+               std::span<const std::int32_t> driven_dofs);
   // V_free for the step from the state at its beginning and the external force (averaged over it).
   void free_velocity(const Eigen::VectorXd& x_begin, const Eigen::VectorXd& v_begin,
                      const Eigen::VectorXd& f_ext, std::span<const DrivenVelocity> driven,

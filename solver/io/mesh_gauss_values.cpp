@@ -155,6 +155,36 @@ void element_mean_strain_stress(const fem::MeshBody& body, const Eigen::VectorXd
     }
 }
 
+namespace {
+
+// A body with J2 plasticity (LMGC90's own large-strain material): per point its stored Cauchy stress
+// (xx, yy, xy, zz), a strain line LMGC90 never fills (zeros), the 6 internal variables.
+grammar::GpvBody plastic_point_values(const fem::MeshBody& body, const MeshBodyState& s, int body_number) {
+  grammar::GpvBody out;
+  out.number = body_number;
+  for (std::size_t e = 0; e < body.elements.size(); ++e) {
+    grammar::GpvElement written;
+    written.type = grammar::Word{std::string(fem::element_entry(body.elements[e].kind).body_name)};
+    written.number = static_cast<std::int64_t>(e + 1);
+    grammar::GpvModelBlock block;
+    block.model = grammar::Word{std::string("MECAx")};
+    for (std::size_t p = e * 4; p < e * 4 + 4; ++p) {
+      block.lines.emplace_back();
+      for (std::size_t k = 0; k < 4; ++k)
+        block.lines.back().push_back(grammar::Real{s.point_stress[p * 4 + k]});
+      block.lines.emplace_back(4, grammar::Real{0.0});
+      block.lines.emplace_back();
+      for (std::size_t k = 0; k < static_cast<std::size_t>(fem::kJ2Internal); ++k)
+        block.lines.back().push_back(grammar::Real{s.history[p * fem::kJ2Internal + k]});
+    }
+    written.models.push_back(std::move(block));
+    out.elements.push_back(std::move(written));
+  }
+  return out;
+}
+
+}  // namespace
+
 grammar::GpvFile gauss_point_values_file(const DeformableBodies& bodies, long step, double time) {
   grammar::GpvFile file;
   file.step = grammar::Integer{step};
@@ -162,26 +192,9 @@ grammar::GpvFile gauss_point_values_file(const DeformableBodies& bodies, long st
   for (std::size_t b = 0; b < bodies.states.size(); ++b) {
     const MeshBodyState& s = bodies.states[b];
     const fem::MeshBody& mesh = bodies.meshes.bodies[b];
-    grammar::GpvBody written =
-        gauss_point_values(mesh, bodies.meshes.matlib[b], s.x, static_cast<int>(b + 1));
-    if (!s.history.empty()) {
-      // J2 plasticity (LMGC90's own large-strain material): per point the Cauchy stress (xx, yy, xy,
-      // zz), a strain line LMGC90 never fills (zeros), the 6 internal variables.
-      for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
-        auto& lines = written.elements[e].models[0].lines;
-        lines.clear();
-        for (std::size_t p = e * 4; p < e * 4 + 4; ++p) {
-          lines.emplace_back();
-          for (std::size_t k = 0; k < 4; ++k)
-            lines.back().push_back(grammar::Real{s.point_stress[p * 4 + k]});
-          lines.emplace_back(4, grammar::Real{0.0});
-          lines.emplace_back();
-          for (std::size_t k = 0; k < static_cast<std::size_t>(fem::kJ2Internal); ++k)
-            lines.back().push_back(grammar::Real{s.history[p * fem::kJ2Internal + k]});
-        }
-      }
-    }
-    file.bodies.push_back(std::move(written));
+    const int number = static_cast<int>(b + 1);
+    file.bodies.push_back(s.history.empty() ? gauss_point_values(mesh, bodies.meshes.matlib[b], s.x, number)
+                                            : plastic_point_values(mesh, s, number));
   }
   return file;
 }

@@ -169,10 +169,7 @@ void free_velocity_large_strain(DeformableBodies& d, std::size_t b, const StepCo
   }
   s.bulk_current = false;  // the next iteration has another iterate
   const double h = step.h, theta = step.theta;
-  fem::LinearBodyMatrices tangent;
-  tangent.mass = s.matrices.mass;
-  tangent.stiffness = s.bulk_tangent;
-  if (!s.scheme.prepare(tangent, h, theta, s.damping, s.velocity_driven)) singular(b);
+  if (!s.scheme.prepare(s.matrices.mass, s.bulk_tangent, h, theta, s.damping, s.velocity_driven)) singular(b);
   s.prepared_h = 0.0;  // a linear K̂ is not kept
   s.contact_compliance.resize(0, 0);
   s.compliance_row.clear();

@@ -1,6 +1,8 @@
 #pragma once
 // Running lmgc-solve on an LMGC90 example the way LMGC90's reference run was made: the literal
 // parameters of its command.py as reference_lmgc90/RUN.md records them.
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -17,6 +19,33 @@
 #include "tests/support/shared_data.hpp"
 
 namespace lmgc::test {
+
+// The numbers of a file LMGC90 writes (mantissa with a D or E exponent), in order.
+inline std::vector<double> fortran_numbers(const std::string& text) {
+  static const std::regex number(R"([-+]?\d*\.\d+[DE][-+]\d+)");
+  std::vector<double> out;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it) {
+    std::string t = it->str();
+    for (char& ch : t)
+      if (ch == 'D') ch = 'E';
+    out.push_back(std::stod(t));
+  }
+  return out;
+}
+
+// reference_cases/<name> (its DATBOX and command.py) run by lmgc-run in scratch_dir(tag): the run's
+// folder, or an empty path when the build has no lmgc-run. The run must exit 0.
+inline std::filesystem::path run_reference_case(const std::string& name, const std::string& tag) {
+  namespace fs = std::filesystem;
+  if (!fs::exists(tool_path("lmgc-run"))) return {};
+  const fs::path source = fs::path(LMGC_SOURCE_DIR) / "reference_cases" / name;
+  const fs::path dir = scratch_dir(tag);
+  for (const char* entry : {"DATBOX", "command.py"})
+    fs::copy(source / entry, dir / entry, fs::copy_options::recursive);
+  const ToolRun run = run_tool_both_streams("lmgc-run", "'" + dir.string() + "' --quiet");
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  return dir;
+}
 
 // The literal assignments of command.py, as RUN.md lists them ("`dt = 0.0005`, `nb_steps = ...`").
 inline std::map<std::string, std::string> script_parameters(const std::filesystem::path& case_dir) {

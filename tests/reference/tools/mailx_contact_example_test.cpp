@@ -14,6 +14,7 @@
 #include <regex>
 #include <sstream>
 
+#include "tests/support/lmgc90_reference_runs.hpp"
 #include "tests/support/run_tool.hpp"
 #include "tests/support/shared_data.hpp"
 
@@ -21,18 +22,6 @@ namespace lmgc::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::vector<double> fortran_numbers(const std::string& text) {
-  static const std::regex number(R"([-+]?\d*\.\d+[DE][-+]\d+)");
-  std::vector<double> out;
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it) {
-    std::string t = it->str();
-    for (char& ch : t)
-      if (ch == 'D') ch = 'E';
-    out.push_back(std::stod(t));
-  }
-  return out;
-}
 
 // Interactions per module ("$icdan  CLALp ...").
 std::map<std::string, int> interaction_counts(const std::string& text) {

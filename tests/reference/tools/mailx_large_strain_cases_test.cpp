@@ -8,9 +8,9 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <regex>
 
 #include "grammar/gpv/parser.hpp"
+#include "tests/support/lmgc90_reference_runs.hpp"
 #include "tests/support/run_tool.hpp"
 #include "tests/support/shared_data.hpp"
 
@@ -20,32 +20,14 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path run_case(const std::string& name) {
-  if (!fs::exists(tool_path("lmgc-run"))) return {};
-  const fs::path source = fs::path(LMGC_SOURCE_DIR) / "reference_cases" / name;
-  const fs::path dir = scratch_dir("mailx_" + name);
-  for (const char* entry : {"DATBOX", "command.py"})
-    fs::copy(source / entry, dir / entry, fs::copy_options::recursive);
-  const ToolRun run = run_tool_both_streams("lmgc-run", "'" + dir.string() + "' --quiet");
-  EXPECT_EQ(run.exit_code, 0) << run.output;
-  return dir;
-}
-
-std::vector<double> numbers(const std::string& text) {
-  static const std::regex number(R"([-+]?\d*\.\d+D[-+]\d+)");
-  std::vector<double> out;
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it) {
-    std::string t = it->str();
-    t[t.find('D')] = 'E';
-    out.push_back(std::stod(t));
-  }
-  return out;
+  return run_reference_case(name, "mailx_" + name);
 }
 
 // The largest difference between our file and LMGC90's, over `scale`; -1 when the counts differ.
 double difference_to_lmgc90(const std::string& name, const fs::path& dir, const char* file, double scale) {
   const fs::path reference = fs::path(LMGC_SOURCE_DIR) / "reference_cases" / name / "lmgc90_reference";
-  const std::vector<double> ours = numbers(read_file(dir / "OUTBOX" / file)),
-                            theirs = numbers(read_file(reference / file));
+  const std::vector<double> ours = fortran_numbers(read_file(dir / "OUTBOX" / file)),
+                            theirs = fortran_numbers(read_file(reference / file));
   if (ours.empty() || ours.size() != theirs.size()) return -1.0;
   double d = 0.0;
   for (std::size_t k = 0; k < ours.size(); ++k) d = std::max(d, std::abs(ours[k] - theirs[k]));

@@ -15,9 +15,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
-#include <regex>
 #include <sstream>
 
+#include "tests/support/gzip.hpp"
+#include "tests/support/lmgc90_reference_runs.hpp"
 #include "tests/support/run_tool.hpp"
 #include "tests/support/shared_data.hpp"
 
@@ -26,31 +27,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<double> numbers(const std::string& text) {
-  static const std::regex number(R"([-+]?\d*\.\d+[DE][-+]\d+)");
-  std::vector<double> out;
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it) {
-    std::string t = it->str();
-    for (char& ch : t)
-      if (ch == 'D') ch = 'E';
-    out.push_back(std::stod(t));
-  }
-  return out;
-}
-
-std::string gunzip(const fs::path& path) {
-  std::string text;
-  FILE* pipe = popen(("gzip -dc '" + path.string() + "'").c_str(), "r");
-  if (!pipe) return text;
-  char buffer[65536];
-  for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) text.append(buffer, n);
-  pclose(pipe);
-  return text;
-}
-
 // The largest difference over the file's largest value; -1 when the counts differ.
 double relative_difference(const std::string& ours_text, const std::string& theirs_text) {
-  const std::vector<double> ours = numbers(ours_text), theirs = numbers(theirs_text);
+  const std::vector<double> ours = fortran_numbers(ours_text), theirs = fortran_numbers(theirs_text);
   if (ours.size() != theirs.size()) return -1.0;
   double scale = 0.0, difference = 0.0;
   for (double v : theirs) scale = std::max(scale, std::abs(v));
@@ -115,7 +94,7 @@ TEST(MailxLargeStrainExample, OneQ4TractionRunsToItsEndAndAgreesWithLmgc90) {
   for (const char* name : {"Dep_0000001.DAT", "Dep_0000002.DAT", "Fint_0000001.DAT", "Fint_0000002.DAT"}) {
     const fs::path plain = reference / "POSTPRO" / name,
                    zipped = reference / "POSTPRO" / (std::string(name) + ".gz");
-    const std::string theirs = fs::exists(plain) ? read_file(plain) : gunzip(zipped);
+    const std::string theirs = read_maybe_gzip(fs::exists(plain) ? plain : zipped);
     ASSERT_FALSE(theirs.empty()) << name;
     const std::string ours = read_file(dir / "POSTPRO" / name);
     EXPECT_EQ(std::count(ours.begin(), ours.end(), '\n'), 10000) << name;

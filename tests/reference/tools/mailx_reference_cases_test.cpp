@@ -19,14 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path run_case(const std::string& name) {
-  if (!fs::exists(tool_path("lmgc-run"))) return {};
-  const fs::path source = fs::path(LMGC_SOURCE_DIR) / "reference_cases" / name;
-  const fs::path dir = scratch_dir("mailx_" + name);
-  for (const char* entry : {"DATBOX", "command.py"})
-    fs::copy(source / entry, dir / entry, fs::copy_options::recursive);
-  const ToolRun run = run_tool_both_streams("lmgc-run", "'" + dir.string() + "' --quiet");
-  EXPECT_EQ(run.exit_code, 0) << run.output;
-  return dir;
+  return run_reference_case(name, "mailx_" + name);
 }
 
 void expect_lmgc90_files(const std::string& name, const fs::path& dir) {
