@@ -209,15 +209,28 @@ def elas_bulk(name, density, young, poisson, gravity=(0.0, 0.0)):
             f"                                        EYng={real(young)}  EPss={real(poisson)}\n")
 
 
-def mailx_driven(velocities):
-    """DRV_DOF.DAT of MAILx body 1: {node: [vx or None, vy or None]} constant imposed velocities."""
-    out = "$bdyty\n MAILx      1\n$model\n MECAx\n"
+def mailx_driven(velocities, body=1):
+    """DRV_DOF.DAT of one MAILx body: {node: [v or None per component]} imposed velocities, each a
+    constant or a tuple (CT, AMP, OMEGA, PHI): CT + AMP cos(OMEGA t + PHI)."""
+    out = f"$bdyty\n MAILx{body:7d}\n$model\n MECAx\n"
     for node in sorted(velocities):
         out += f"$nodty\n NO2xx{node:7d}\n{TEMPLATE}\n"
         for c, v in enumerate(velocities[node]):
             if v is not None:
-                out += f" vlocy{c + 1:7d} {real(v)} {real(0.0)} {real(0.0)} {real(0.0)} {real(1.0)} {real(0.0)}\n"
+                ct, amp, omega, phi = v if isinstance(v, tuple) else (v, 0.0, 0.0, 0.0)
+                out += (f" vlocy{c + 1:7d} {real(ct)} {real(amp)} {real(omega)} {real(phi)} {real(1.0)}"
+                        f" {real(0.0)}\n")
     return out + "$$$$$$\n"
+
+
+def tact_law(nickname, law, rows):
+    """A TACT_BEHAV.DAT '$behav' card: rows of (label, value) pairs, the first beside the law's name,
+    the others on continuation lines."""
+    lines = []
+    for k, row in enumerate(rows):
+        values = "  ".join(f"{label:<4}={real(v)}" for label, v in row)
+        lines.append((f" {nickname}  {law:<30}  " if k == 0 else " " * 40) + values)
+    return "$behav  lawty\n" + "\n".join(lines) + "\n"
 
 
 def clxxx(rank, color, noda, nodb, apab):

@@ -28,6 +28,10 @@ in <case>/lmgc90_reference/ (DOF.LAST, GPV.LAST): the files the tests compare lm
   rigid JONCx, frictionless CLJCx contacts: the contact half-width and the peak pressure against
   Hertz's (compared with the closed form, not run by LMGC90 here).
 
+- mailx_mac_czm_blocks, mailx_mal_czm_blocks, mailx_gap_mohr_blocks, mailx_gap_wet_blocks: two elastic
+  blocks bonded at their interface (CLALp) by MAC_CZM, MAL_CZM, GAP_MOHR_DS_CLB or GAP_WET_DS_CLB,
+  pressed, then pulled apart and sheared by the upper block's top: against LMGC90.
+
 Usage: scripts/make_mailx_reference_cases.py [--lmgc90 /work/lmgc90/build]
 """
 import argparse
@@ -342,6 +346,43 @@ def glued_blocks(folder):
                    "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": w.mailx_driven(clamp), "TACT_BEHAV.DAT": tact}, text)
 
 
+def cohesive_blocks(law, rows, steps=400):
+    """Two elastic blocks of 4 × 2 Q4xxx, one on the other, bonded at their interface by the 2D
+    cohesive law `law` on CLALp pairs (the upper block's bottom edges, two CLxxx points each, on the
+    lower block's top ALpxx). The lower block's bottom is clamped; the upper block's top nodes move
+    at vx = 2.5 mm/s and vy = 5 − 10 cos(2πt/0.6) mm/s: the interface is pressed first, then opened
+    and sheared."""
+    def make(folder):
+        nx, ny, length, height = 4, 2, 0.4, 0.1
+        lower_nodes, elements = w.mailx_rectangle(nx, ny, length, height, "Q4xxx")
+        upper_nodes = [(x, y + height, b) for x, y, b in lower_nodes]
+        bottom = [i + 1 for i in range(nx + 1)]
+        top = [ny * (nx + 1) + i + 1 for i in range(nx + 1)]
+        lower = w.mailx_bodies(lower_nodes, elements, "Q4xxx", "M2DQ4", "rock_")[:-len("$$$$$$\n")] + "$tacty\n"
+        lower += w.alpxx(1, "LOWER", top)
+        upper = w.mailx_bodies(upper_nodes, elements, "Q4xxx", "M2DQ4", "rock_").replace(" MAILx      1", " MAILx      2", 1)
+        upper = upper[:-len("$$$$$$\n")] + "$tacty\n"
+        rank = 0
+        for i in range(nx, 0, -1):  # right to left along the bottom: clockwise
+            for apab in (0.25, 0.75):
+                rank += 1
+                upper += w.clxxx(rank, "UPPER", bottom[i], bottom[i - 1], apab)
+        bodies = lower + "$$$$$$\n" + upper + "$$$$$$\n"
+        bulk = w.elas_bulk("rock_", 2500.0, 1e7, 0.25)
+        omega = 2.0 * math.pi / 0.6
+        driven = (w.mailx_driven({n: [0.0, 0.0] for n in bottom}, body=1) +
+                  w.mailx_driven({n: [2.5e-3, (5e-3, -1e-2, omega, 0.0)] for n in top}, body=2))
+        tact = (w.tact_law("czm01", law, rows) + "\n"
+                "$seety\n cdbdy  cdtac  cdcol  behav  anbdy  antac  ancol       alert\n"
+                f" MAILx  CLxxx  UPPER  czm01  MAILx  ALpxx  LOWER      {w.real(0.005)}\n")
+        text = contact_script(
+            f"# Two elastic blocks bonded by {law} (CLALp), pressed, then pulled apart and sheared.",
+            "1e-3", "0.5", steps, "1e-10", 400)
+        write(folder, {"BODIES.DAT": bodies, "MODELS.DAT": w.mailx_model("M2DQ4", "Q4xxx", lumped=True),
+                       "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": driven, "TACT_BEHAV.DAT": tact}, text)
+    return make
+
+
 HERTZ = {"radius": 0.1, "young": 1e8, "poisson": 0.3, "load": 86300.0}
 
 
@@ -417,7 +458,18 @@ def main():
              "mailx_rotated_at_rest": rotated_at_rest,
              "mailx_j2_traction_linear": j2_traction("linear", (2e3, 1e4)),
              "mailx_j2_traction_swift": j2_traction("Swift", (1e4, 0.01, 0.2)),
-             "mailx_hertz_cylinder": hertz_cylinder}
+             "mailx_hertz_cylinder": hertz_cylinder,
+             "mailx_mac_czm_blocks": cohesive_blocks(
+                 "MAC_CZM", [[("dfrc", 0.3), ("sfrc", 0.5)], [("cn", 1e9), ("ct", 5e8)],
+                             [("visc", 0.0), ("dupr", 2.0)]]),
+             "mailx_mal_czm_blocks": cohesive_blocks(
+                 "MAL_CZM", [[("dfrc", 0.3), ("sfrc", 0.5)], [("cn", 1e9), ("ct", 5e8)],
+                             [("s1", 4e4), ("s2", 2e4)], [("G1", 6.0), ("G2", 6.0)]]),
+             "mailx_gap_mohr_blocks": cohesive_blocks(
+                 "GAP_MOHR_DS_CLB", [[("cohn", 4e4), ("coht", 2e4)], [("dfrc", 0.3), ("sfrc", 0.5)]]),
+             "mailx_gap_wet_blocks": cohesive_blocks(
+                 "GAP_WET_DS_CLB", [[("cohn", 2e2), ("coht", 1e2)], [("Wthk", 2e-4)],
+                                    [("dfrc", 0.3), ("sfrc", 0.5)]])}
     for name, make in cases.items():
         folder = os.path.join(ROOT, "reference_cases", name)
         make(folder)

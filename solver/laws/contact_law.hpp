@@ -12,8 +12,10 @@
 #include "solver/laws/elastic_repell_clb.hpp"
 #include "solver/laws/elastic_rod.hpp"
 #include "solver/laws/elastic_wire.hpp"
+#include "solver/laws/gap_mohr_ds_clb.hpp"
 #include "solver/laws/gap_sgr_clb.hpp"
 #include "solver/laws/gap_sgr_ds_clb.hpp"
+#include "solver/laws/gap_wet_ds_clb.hpp"
 #include "solver/laws/iqs_clb.hpp"
 #include "solver/laws/iqs_clb_g0.hpp"
 #include "solver/laws/iqs_ds_clb.hpp"
@@ -21,6 +23,8 @@
 #include "solver/laws/iqs_mohr_ds_clb.hpp"
 #include "solver/laws/iqs_wet_ds_clb.hpp"
 #include "solver/laws/law_forms.hpp"
+#include "solver/laws/mac_czm.hpp"
+#include "solver/laws/mal_czm.hpp"
 #include "solver/laws/md_jkrs.hpp"
 #include "solver/laws/rst_clb.hpp"
 #include "solver/laws/rst_ds_clb.hpp"
@@ -29,12 +33,19 @@
 
 namespace lmgc::solver {
 
-using ContactLaw = std::variant<IqsClb, IqsDsClb, IqsClbG0, RstClb, RstDsClb, GapSgrClb, GapSgrDsClb,
-                                VelSgrClb, VelSgrDsClb, ElasticRepellClb, IqsMohrDsClb, IqsWetDsClb,
-                                IqsMacCzm, CoupledDof, NoNlgsBranch, ElasticRod, ElasticWire>;
+using ContactLaw =
+    std::variant<IqsClb, IqsDsClb, IqsClbG0, RstClb, RstDsClb, GapSgrClb, GapSgrDsClb, VelSgrClb, VelSgrDsClb,
+                 ElasticRepellClb, IqsMohrDsClb, IqsWetDsClb, IqsMacCzm, CoupledDof, NoNlgsBranch, ElasticRod,
+                 ElasticWire, MacCzm, MalCzm, GapMohrDsClb, GapWetDsClb>;
 
 // Keyword of a law as TACT_BEHAV.DAT spells it.
 std::string_view law_keyword(const ContactLaw& law);
+
+// Whether the law's cohesion acts in a wet halo and its statuses take their W form (IQS_WET_DS_CLB,
+// GAP_WET_DS_CLB): a contact of such a law keeps its status when its reaction is 0.
+inline bool is_wet_law(const ContactLaw& law) {
+  return std::holds_alternative<IqsWetDsClb>(law) || std::holds_alternative<GapWetDsClb>(law);
+}
 
 // Number of internal variables LMGC90 stores per interaction for this law (2D).
 int law_internal_count(const ContactLaw& law);

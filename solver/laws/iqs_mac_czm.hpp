@@ -3,7 +3,7 @@
 // friction dfric/sfric, stiffnesses cn, ct, viscosity visco and fracture energy dupre of the damage
 // β. Internals (2D): L, δt, δn, β, TPSini; (3D): L, δt, δn, δs, β, TPSini (state-and-outputs.md
 // §1.4.4). 2D and 3D.
-#include "solver/laws/law_forms.hpp"
+#include "solver/laws/cohesive_zone.hpp"
 
 namespace lmgc::solver {
 
@@ -17,71 +17,30 @@ struct IqsMacCzm {
       {"ct", &IqsMacCzm::ct},       {"visco", &IqsMacCzm::visco}, {"dupre", &IqsMacCzm::dupre}};
 };
 
-// 2D: the local problem of damage β (iter_CZM :mod_tact_behav, get_fric_CZM): while β > 1e-12 the
-// linear traction β² C δ_end on the length L, as an impulse over the step; friction × (1 − β).
-// internal[5] holds the β in use (LMGC90's taz(1)): the law writes five internals, so it is not
-// written out.
-inline void use_beta(const IqsMacCzm& law, LocalProblem2D& c, double beta, double h) {
-  c.internal[5] = beta;
-  c.mu = (is_sliding(c.status_begin) ? law.dfric : law.sfric) * (1.0 - beta);
-  c.cohesive = beta > 1e-12;
-  if (c.cohesive) {
-    const double b2 = beta * beta, length = c.internal[0];
-    c.cohesive_slope = Eigen::Vector2d(-length * b2 * h * h * law.ct, -length * b2 * h * h * law.cn);
-    c.cohesive_shift_t = -length * b2 * h * law.ct * c.internal[1];
-  } else {
-    c.cohesive_slope.setZero();
-    c.cohesive_shift_t = 0.0;
-  }
-}
-
-// updt_CZM with the jumps δ + h u, from the step's starting β: taken when it does not grow and the
-// stored energy exceeds w (§3.5). False when not taken.
-inline bool damaged_beta(const IqsMacCzm& law, const std::array<double, 6>& internal,
-                         const Eigen::Vector2d& u, double h, double& beta) {
-  const double dt = internal[1] + h * u(0), dn = internal[2] + h * u(1);
-  const double beta_start = internal[3];
-  const double energy = law.ct * (dt * dt) + law.cn * (dn > 0.0 ? dn * dn : 0.0);
-  beta = (h * law.dupre + beta_start * law.visco) / (law.visco + h * energy);
-  if (beta < 1e-12) beta = 0.0;
-  return beta <= beta_start && law.dupre <= beta_start * energy;
-}
-
+// 2D (cohesive_zone.hpp): β² C, the IQS normal part; L the pair's contact length.
 inline void prepare(const IqsMacCzm& law, LocalProblem2D& c, const LawStep& step) {
-  // At the run's first preparation with interactions (mod_nlgs prep :2313-2330) nknow becomes Cnnow,
-  // and init_CZM makes the interface sound (β = 1) if that is step 1; any other contact keeps its
-  // internals (β = 0 for one created later: broken from the start).
-  if (step.first_preparation) {
-    if (step.first_step) c.internal = {0.0, 0.0, 0.0, 1.0, -99.0, 0.0};
-    if (c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Cnnow;
-  }
-  c.internal[0] = c.length;
+  start_damage(c, step);
+  c.internal[0] = iqs_cohesive_length(c);
   c.internal[2] = positive(c.gap_begin);
   iqs_form(c, step.h);
-  use_beta(law, c, c.internal[3], step.h);
+  use_damage(c, c.internal[3], c.internal[3] * c.internal[3], law.cn, law.ct, law.dfric, law.sfric, step.h);
 }
 
 // As in 3D: β evaluated again at each convergence check (updt_CZM(.false.) at i_check in mod_nlgs)
 // from the check's velocity; the sweeps after it use it. True when the local problem changed.
 inline bool update_at_check(const IqsMacCzm& law, LocalProblem2D& c, const Eigen::Vector2d& u,
                             const LawStep& step) {
-  double beta = 0.0;
-  if (!damaged_beta(law, c.internal, u, step.h, beta) || beta == c.internal[5]) return false;
-  use_beta(law, c, beta, step.h);
+  double beta = c.internal[5];
+  mac_damage(law.cn, law.ct, law.visco, law.dupre, c.internal, u, step.h, beta);
+  if (beta == c.internal[5]) return false;
+  use_damage(c, beta, beta * beta, law.cn, law.ct, law.dfric, law.sfric, step.h);
   return true;
 }
 
-// Damage (§3.5) at the end of the step: β from the final velocity when taken, else the checks' β;
-// the jumps δ += h u; TPSini at first damage.
 inline void finish(const IqsMacCzm& law, Interaction2D& c, LawState2D& s, const LawStep& step) {
-  const double h = step.h;
-  double beta = 0.0;
-  const bool taken = damaged_beta(law, s.internal, c.u, h, beta);
-  s.internal[1] += h * c.u(0);
-  s.internal[2] += h * c.u(1);
-  s.internal[3] = taken ? beta : s.internal[5];
-  s.internal[5] = 0.0;
-  if (s.internal[3] < 1.0 && s.internal[4] < 0.0) s.internal[4] = step.time;
+  store_damage(s, c.u, step, [&](double& taz) {
+    mac_damage(law.cn, law.ct, law.visco, law.dupre, s.internal, c.u, step.h, taz);
+  });
 }
 
 // 3D: the local problem of damage β (iter_CZM_3D :4509-4560, get_fric_CZM :5858-5898): while

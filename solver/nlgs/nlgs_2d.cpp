@@ -399,8 +399,7 @@ struct Nlgs2D {
       k.inverse = signorini_coulomb_reciprocals_2d(k.wtt(), k.wtn(), k.wnn(), k.mu);
       // The flags tested below from these locals: read back from `l`, whose three bytes were just
       // stored one by one, they would be loaded as one word that has to wait for the stores.
-      const bool glued = std::holds_alternative<CoupledDof>(law),
-                 wet = std::holds_alternative<IqsWetDsClb>(law);
+      const bool glued = std::holds_alternative<CoupledDof>(law), wet = is_wet_law(law);
       LawTerms2D l;
       l.glued = glued;
       l.wet = wet;

@@ -143,6 +143,8 @@ struct CoupledNlgs2D {
     sides.resize(count);
     free_velocity.resize(count);
     final_status.assign(count, ContactStatus::noctc);
+    post_velocity.assign(count, Vector2d::Zero());
+    solved_in_post.assign(count, 0);
     schedule.assign(count, OpenContactSchedule{});
     order.resize(count);
     std::iota(order.begin(), order.end(), 0u);
@@ -150,7 +152,8 @@ struct CoupledNlgs2D {
     internal_is_length.clear();
     for (const NamedLaw& l : scene.laws) {
       any_update_at_check |= updates_at_check(l.law);
-      internal_is_length.push_back(first_internal_is_length(l.law));
+      // Not the cohesive zones': their prepare sets their length (cohesive_zone.hpp).
+      internal_is_length.push_back(first_internal_is_length(l.law) && law_internal_count(l.law) <= 1);
     }
     double q2 = 0.0;
     for (std::size_t a = 0; a < count; ++a) {
@@ -276,7 +279,7 @@ struct CoupledNlgs2D {
     }
     const LocalSolution2D s = solve_signorini_coulomb_2d(p.WW, v, p.mu);
     r = s.r + p.correction;
-    const bool wet = std::holds_alternative<IqsWetDsClb>(law);
+    const bool wet = is_wet_law(law);
     status = wet && !p.correction.isZero(0.0) ? wet_status(s.status) : s.status;
   }
 
@@ -330,7 +333,17 @@ struct CoupledNlgs2D {
       if (std::fabs(r(1)) < 1e-24) r(1) = 0.0;
       p.r = r;
       reaction[a] = r;
-      if (post) final_status[a] = status;
+      if (post) {
+        final_status[a] = status;
+        // LMGC90's i_post: the contact's velocity from its new reaction and the free velocity it was
+        // solved with (the reactions of the contacts after it in the sweep are still the previous
+        // ones): what Vloc_Rloc reports and the laws' end-of-step update reads.
+        Vector2d u = uf + p.W * r;
+        if (std::fabs(u(0)) < 1e-24) u(0) = 0.0;
+        if (std::fabs(u(1)) < 1e-24) u(1) = 0.0;
+        post_velocity[a] = u;
+        solved_in_post[a] = 1;
+      }
       if (!post) schedule[a].restart_if(r(0) != 0.0 || r(1) != 0.0);
     }
     if (!post) {
@@ -439,8 +452,8 @@ struct CoupledNlgs2D {
       if (!p.r.isZero(0.0)) ++result.active;
       Interaction2D& c = contacts[a];
       c = p;
-      c.u = uf + p.W * p.r;
-      const bool wet_or_cohesive = std::holds_alternative<IqsWetDsClb>(law_of(a)) || p.cohesive;
+      c.u = solved_in_post[a] ? post_velocity[a] : uf + p.W * p.r;
+      const bool wet_or_cohesive = is_wet_law(law_of(a)) || p.cohesive;
       c.status = (p.r.isZero(0.0) && !wet_or_cohesive) ? ContactStatus::noctc : final_status[a];
       finish_step_2d(law_of(a), c, keeps_law_state ? law_states[a] : unused, law_step.h, law_step.time);
     }
@@ -469,6 +482,8 @@ struct CoupledNlgs2D {
   std::vector<Matrix2d> adjacent_block;  // velocity of the row's contact per unit reaction of the other
   std::vector<Vector2d> reaction;        // the contacts' reactions, as problems[a].r, compact for the sweeps
   std::vector<ContactStatus> final_status;
+  std::vector<Vector2d> post_velocity;
+  std::vector<std::uint8_t> solved_in_post;
   std::vector<OpenContactSchedule> schedule;
   std::vector<std::uint32_t> order;
   std::vector<std::uint8_t> internal_is_length;  // per law: first_internal_is_length

@@ -170,5 +170,21 @@ TEST(MailxReferenceCases, GluedBlocksWriteLmgc90sFiles) {
   expect_lmgc90_contact_files("mailx_glued_blocks", "CLALp");
 }
 
+// The cohesive laws of deformable pairs on two bonded blocks (CLALp) pressed, then pulled apart and
+// sheared, 400 steps (README.md of each): DOF.LAST within 1e-9 of its largest value or byte for
+// byte, Vloc_Rloc.LAST (statuses, internals: L, jumps, β, TPSini) interaction for interaction.
+TEST(MailxReferenceCases, MacCzmBlocksDamageAsLmgc90s) {
+  expect_lmgc90_contact_files("mailx_mac_czm_blocks", "CLALp", false);
+}
+TEST(MailxReferenceCases, MalCzmBlocksDamageAsLmgc90s) {
+  expect_lmgc90_contact_files("mailx_mal_czm_blocks", "CLALp");
+}
+TEST(MailxReferenceCases, GapMohrDsClbBlocksBreakAsLmgc90s) {
+  expect_lmgc90_contact_files("mailx_gap_mohr_blocks", "CLALp");
+}
+TEST(MailxReferenceCases, GapWetDsClbBlocksSeparateAsLmgc90s) {
+  expect_lmgc90_contact_files("mailx_gap_wet_blocks", "CLALp", false);
+}
+
 }  // namespace
 }  // namespace lmgc::test

@@ -457,6 +457,99 @@ TEST(IqsMacCzm, ThreeDimensionalBetaIsReEvaluatedAtEachCheckFromTheStepsStart) {
   EXPECT_EQ(d.state.cohesive_slope, Eigen::Vector3d::Zero());
 }
 
+// The GAP cohesive zones of deformable pairs: the normal free velocity is γ/h even when penetrated
+// (IQS_MAC_CZM: its positive part), the stored normal jump is γ, and L is the CLxxx point's length on
+// CLALp and CLJCx, LMGC90's 0.35 on PLALp and DKALp.
+TEST(MacCzm, HasAGapNormalPartAndTheLengthOfItsPair) {
+  const MacCzm law{0.3, 0.4, 2e6, 1e6, 0.0, 10.0};
+  LocalProblem2D c = contact_2d(-1e-4);
+  c.family = PairFamily2D::CLALp;
+  c.length = 0.05;
+  prepare_law(law, c, LawStep{h, h, true, true});
+  EXPECT_DOUBLE_EQ(c.covfree(1), -1e-4 / h);
+  EXPECT_EQ(c.internal[2], -1e-4);
+  EXPECT_EQ(c.internal[0], 0.05);
+  EXPECT_EQ(c.internal[3], 1.0);
+  EXPECT_DOUBLE_EQ(c.cohesive_slope(1), -0.05 * h * h * 2e6);  // β² = 1
+  LocalProblem2D d = contact_2d(-1e-4);
+  d.family = PairFamily2D::PLALp;
+  prepare_law(law, d, LawStep{h, h, true, true});
+  EXPECT_EQ(d.internal[0], 0.35);
+  LocalProblem2D i = contact_2d(-1e-4);
+  prepare_law(IqsMacCzm{0.3, 0.4, 2e6, 1e6, 0.0, 10.0}, i, LawStep{h, h, true, true});
+  EXPECT_EQ(i.covfree(1), 0.0);
+}
+
+// MAL_CZM's traction is β C δ (β, not β²), and its β follows the bilinear-softening envelope: 1 up to
+// dc = S1/cn in pure opening, then (dc/d)(1 − ((d − dc)/dt)²), dt = 1.5 (G1 G2 − ½ dc² G2 cn)/(dc G2 cn),
+// 0 past dc + dt; never growing back.
+TEST(MalCzm, DamagesAlongItsBilinearEnvelopeWithALinearStiffnessInBeta) {
+  const double cn = 1e9, ct = 5e8, s1 = 4e4, s2 = 2e4, g = 6.0;
+  const MalCzm law{0.3, 0.5, cn, ct, s1, s2, g, g};
+  LocalProblem2D c = contact_2d(0.0);
+  c.family = PairFamily2D::CLALp;
+  c.length = 0.05;
+  prepare_law(law, c, LawStep{h, h, true, true});
+  const double dc = s1 / cn, dt = 1.5 * (g * g - 0.5 * dc * dc * g * cn) / (dc * g * cn);
+  EXPECT_FALSE(update_law_at_check(law, c, Eigen::Vector2d(0.0, 0.9 * dc / h), LawStep{h, h, false, false}));
+  const double d = dc + 0.5 * dt;
+  ASSERT_TRUE(update_law_at_check(law, c, Eigen::Vector2d(0.0, d / h), LawStep{h, h, false, false}));
+  const double beta = (dc / d) * (1.0 - 0.25);
+  EXPECT_NEAR(c.internal[5], beta, 1e-12);
+  EXPECT_NEAR(c.cohesive_slope(1), -0.05 * beta * h * h * cn, 1e-12 * 0.05 * h * h * cn);
+  c.u = Eigen::Vector2d(0.0, (dc + 1.01 * dt) / h);
+  finish_law(law, c, LawStep{h, 0.25, false, false});
+  EXPECT_EQ(c.internal[3], 0.0);   // broken
+  EXPECT_EQ(c.internal[4], 0.25);  // TPSini
+  c.gap_begin = 0.0;
+  prepare_law(law, c, LawStep{h, 2 * h, false, false});
+  EXPECT_FALSE(c.cohesive);
+  EXPECT_EQ(c.mu, 0.5);  // sticking friction × (1 − β)
+}
+
+// GAP_MOHR_DS_CLB is IQS_MOHR_DS_CLB's cohesion with the GAP normal part.
+TEST(GapMohrDsClb, IsCohesiveFromTheFirstStepWithAGapNormalPart) {
+  const GapMohrDsClb law{1e4, 5e3, 0.3, 0.5};
+  LocalProblem2D c = contact_2d(-2e-5);
+  c.length = 0.05;
+  prepare_law(law, c, LawStep{h, h, true, true});
+  EXPECT_EQ(c.status_begin, ContactStatus::Mstck);
+  EXPECT_DOUBLE_EQ(c.correction(1), -1e4 * 0.05 * h);
+  EXPECT_DOUBLE_EQ(c.covfree(1), -1e4 * 0.05 * h * c.WW(1, 1) - 2e-5 / h);
+  EXPECT_DOUBLE_EQ(c.mu, 0.5);  // cohet / cohen
+  c.status = ContactStatus::stick;
+  finish_law(law, c, LawStep{h, h, true, true});
+  EXPECT_EQ(c.status, ContactStatus::Mstck);
+  LocalProblem2D later = contact_2d(-2e-5);
+  prepare_law(law, later, LawStep{h, 2 * h, false, false});
+  EXPECT_EQ(later.correction(1), 0.0);  // created after step 1: never cohesive
+}
+
+// GAP_WET_DS_CLB: cohesion in the halo with a GAP normal part; out of it the status is kept, and a
+// contact that began the step wet ends it in a W status (LMGC90's writes Wnctc for a wet contact
+// that has left the halo).
+TEST(GapWetDsClb, StaysWetOnceWettedAndHasAGapNormalPart) {
+  const GapWetDsClb law{200.0, 100.0, 2e-4, 0.3, 0.5};
+  LocalProblem2D c = contact_2d(-1e-5, ContactStatus::noctc);
+  prepare_law(law, c, LawStep{h, h, false, false});
+  EXPECT_EQ(c.status_begin, ContactStatus::Wnctc);
+  EXPECT_DOUBLE_EQ(c.correction(1), -200.0 * h);
+  EXPECT_DOUBLE_EQ(c.covfree(1), -200.0 * h * c.WW(1, 1) - 1e-5 / h);
+  LocalProblem2D out = contact_2d(1e-3, ContactStatus::Wstck);
+  prepare_law(law, out, LawStep{h, h, false, false});
+  EXPECT_EQ(out.status_begin, ContactStatus::Wstck);  // IQS_WET_DS_CLB would force noctc
+  EXPECT_EQ(out.correction(1), 0.0);
+  EXPECT_DOUBLE_EQ(out.covfree(1), 1e-3 / h);
+  out.status = ContactStatus::noctc;
+  finish_law(law, out, LawStep{h, h, false, false});
+  EXPECT_EQ(out.status, ContactStatus::Wnctc);
+  LocalProblem2D dry = contact_2d(1e-3, ContactStatus::noctc);
+  prepare_law(law, dry, LawStep{h, h, false, false});
+  dry.status = ContactStatus::noctc;
+  finish_law(law, dry, LawStep{h, h, false, false});
+  EXPECT_EQ(dry.status, ContactStatus::noctc);
+}
+
 TEST(ElasticWire, IsATensionOnlySpringOnTheReferenceLength) {
   const ElasticWire law{2000.0, 0.1};
   Contact3D c = contact_3d(1.3);
