@@ -32,6 +32,11 @@ in <case>/lmgc90_reference/ (DOF.LAST, GPV.LAST): the files the tests compare lm
   blocks bonded at their interface (CLALp) by MAC_CZM, MAL_CZM, GAP_MOHR_DS_CLB or GAP_WET_DS_CLB,
   pressed, then pulled apart and sheared by the upper block's top: against LMGC90.
 
+- mailx_glued_points: two elastic blocks side by side glued node to node by COUPLED_DOF on P2P2L pairs
+  of coinciding PT2DL points, bent by gravity: against LMGC90.
+- mailx_disk_on_diskl: a rigid DISKx landing and sliding on the DISKL arcs of an elastic block
+  (DKDKL): against LMGC90.
+
 Usage: scripts/make_mailx_reference_cases.py [--lmgc90 /work/lmgc90/build]
 """
 import argparse
@@ -383,6 +388,74 @@ def cohesive_blocks(law, rows, steps=400):
     return make
 
 
+def pt2dl(rank, color, noda, nodb, apab, plus=False):
+    """A MAILx '$tacty' PT2DL line: the point at apab from noda on (noda, nodb)."""
+    return f"{'+' if plus else ' '}PT2DL{rank:7d}  color  {color}  noda={noda:5d}  nodb={nodb:5d}  apab={w.real(apab)}\n"
+
+
+def glued_points(folder):
+    """Two elastic blocks side by side whose facing edges share their nodes' positions, glued node to
+    node by COUPLED_DOF on P2P2L pairs of PT2DL points; the left block's left edge clamped, a tilted
+    gravity bends the pair."""
+    nx, ny, length, height = 4, 2, 0.2, 0.1
+    left_nodes, elements = w.mailx_rectangle(nx, ny, length, height, "Q4xxx")
+    right_nodes = [(x + length, y, b) for x, y, b in left_nodes]
+    clamp = {k + 1: [0.0, 0.0] for k, (x, y, _) in enumerate(left_nodes) if x == 0.0}
+    right_edge = [j * (nx + 1) + nx + 1 for j in range(ny + 1)]  # bottom to top
+    left_edge = [j * (nx + 1) + 1 for j in range(ny + 1)]
+    def points(edge, color):
+        out = ""
+        for k, node in enumerate(edge):  # one point per node: apab 0 on its edge, 1 for the last
+            other, apab = (edge[k + 1], 0.0) if k + 1 < len(edge) else (edge[k - 1], 0.0)
+            out += pt2dl(k + 1, color, node, other, apab)
+        return out
+    left = w.mailx_bodies(left_nodes, elements, "Q4xxx", "M2DQ4", "rubbr")[:-len("$$$$$$\n")] + "$tacty\n"
+    left += points(right_edge, "LEFTx")
+    right = w.mailx_bodies(right_nodes, elements, "Q4xxx", "M2DQ4", "rubbr").replace(" MAILx      1", " MAILx      2", 1)
+    right = right[:-len("$$$$$$\n")] + "$tacty\n" + points(left_edge, "RIGHT")
+    bodies = left + "$$$$$$\n" + right + "$$$$$$\n"
+    bulk = w.elas_bulk("rubbr", 1000.0, 1e6, 0.3, gravity=(2.0, -9.81))
+    tact = ("$behav  lawty\n glued  COUPLED_DOF\n\n"
+            "$seety\n cdbdy  cdtac  cdcol  behav  anbdy  antac  ancol       alert\n"
+            f" MAILx  PT2DL  LEFTx  glued  MAILx  PT2DL  RIGHT      {w.real(0.01)}\n")
+    text = contact_script(
+        "# Two elastic blocks glued node to node (COUPLED_DOF on P2P2L pairs of PT2DL), bent by gravity.",
+        "1e-3", "0.5", 150, "1e-10", 400)
+    write(folder, {"BODIES.DAT": bodies, "MODELS.DAT": w.mailx_model("M2DQ4", "Q4xxx", lumped=True),
+                   "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": w.mailx_driven(clamp), "TACT_BEHAV.DAT": tact}, text)
+
+
+def diskl(rank, color, noda, nodb, apab, height, half_chord):
+    """A MAILx '$tacty' DISKL line: the disk through the arc of sagitta `height` and half chord
+    `half_chord` over the point at apab on the edge (noda, nodb), bulging to the edge's left."""
+    return (f" DISKL{rank:7d}  color  {color}  noda={noda:5d}  nodb={nodb:5d}  apab={w.real(apab)}"
+            f"  bdyr={w.real(height)}  brpm={w.real(half_chord)}\n")
+
+
+def disk_on_diskl(folder):
+    """A rigid DISKx landing and rolling on the arcs (DISKL) carried by the top edges of an elastic
+    block (DKDKL), under a tilted gravity."""
+    nx, ny, length, height = 4, 1, 0.4, 0.1
+    nodes, elements = w.mailx_rectangle(nx, ny, length, height, "Q4xxx")
+    clamp = {k + 1: [0.0, 0.0] for k, (x, y, _) in enumerate(nodes) if y == 0.0}
+    top = [ny * (nx + 1) + i + 1 for i in range(nx + 1)]  # left to right: the arcs bulge upwards
+    bodies = w.mailx_bodies(nodes, elements, "Q4xxx", "M2DQ4", "rubbr")[:-len("$$$$$$\n")] + "$tacty\n"
+    for k in range(1, 3):
+        bodies += diskl(k, "ARCSx", top[k], top[k + 1], 0.5, 0.04, 0.05)
+    radius = 0.04
+    bodies += "$$$$$$\n" + w.rbdy2(1, "steel", 0.14, height + 0.04 + radius + 2e-3, 0.0, w.disk(radius, "DISKS"))
+    bulk = w.elas_bulk("rubbr", 1000.0, 1e7, 0.3, gravity=(2.0, -9.81)) + (
+        f"\n$behav  lawty\n steel  RIGID                           Umas={w.real(7800.0)}\n")
+    tact = (f"$behav  lawty\n iqsc0  IQS_CLB                         fric={w.real(0.1)}\n\n"
+            "$seety\n cdbdy  cdtac  cdcol  behav  anbdy  antac  ancol       alert\n"
+            f" RBDY2  DISKx  DISKS  iqsc0  MAILx  DISKL  ARCSx      {w.real(0.01)}\n")
+    text = contact_script(
+        "# A rigid disk landing and rolling on the arcs (DISKL) of an elastic block (DKDKL), tilted gravity.",
+        "1e-3", "0.5", 300, "1e-10", 400)
+    write(folder, {"BODIES.DAT": bodies, "MODELS.DAT": w.mailx_model("M2DQ4", "Q4xxx", lumped=True),
+                   "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": w.mailx_driven(clamp), "TACT_BEHAV.DAT": tact}, text)
+
+
 HERTZ = {"radius": 0.1, "young": 1e8, "poisson": 0.3, "load": 86300.0}
 
 
@@ -459,6 +532,7 @@ def main():
              "mailx_j2_traction_linear": j2_traction("linear", (2e3, 1e4)),
              "mailx_j2_traction_swift": j2_traction("Swift", (1e4, 0.01, 0.2)),
              "mailx_hertz_cylinder": hertz_cylinder,
+             "mailx_glued_points": glued_points, "mailx_disk_on_diskl": disk_on_diskl,
              "mailx_mac_czm_blocks": cohesive_blocks(
                  "MAC_CZM", [[("dfrc", 0.3), ("sfrc", 0.5)], [("cn", 1e9), ("ct", 5e8)],
                              [("visc", 0.0), ("dupr", 2.0)]]),

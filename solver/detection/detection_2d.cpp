@@ -588,8 +588,10 @@ void detect_contacts_2d(const Scene2D& scene, const VisibilityIndex2D& index,
         break;
       case PairFamily2D::CLALp:
       case PairFamily2D::CLJCx:
+      case PairFamily2D::P2P2L:
       case PairFamily2D::PLALp:
       case PairFamily2D::DKALp:
+      case PairFamily2D::DKDKL:
         break;  // a side on a mesh: mesh_detection_2d.hpp
     }
     // Fine tests that keep a contact (docs/lmgc90-facts/rigid-2d.md §3.3).

@@ -110,7 +110,8 @@ VectorXd mesh_detection_coordinates(const Scene2D& scene, std::size_t mesh, doub
 }
 
 void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> body_coordinates,
-                             std::span<const VectorXd> node_coordinates, LargeArray<Interaction2D>& out) {
+                             std::span<const VectorXd> node_coordinates, PointPairs2D& point_pairs,
+                             LargeArray<Interaction2D>& out) {
   const DeformableBodies& d = scene.deformable;
   const std::vector<MeshContactor>& tactors = d.meshes.contactors;
   const auto driven = fully_driven_nodes(scene);
@@ -120,10 +121,6 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
     return table[static_cast<std::size_t>(cd_colour) * colours + static_cast<std::size_t>(an_colour)];
   };
   const RigidBodies2D& b = scene.bodies;
-  const auto mesh_velocity = [&](const Interaction2D& c, int side) {
-    const MeshSide2D s = mesh_side(scene, c, side);
-    return mesh_side_velocity(s, d.states[static_cast<std::size_t>(s.mesh)].v_begin);
-  };
   const auto mesh_side_driven = [&](const Interaction2D& c, int side) {
     const MeshSide2D s = mesh_side(scene, c, side);
     for (int k = 0; k < 2; ++k)
@@ -149,8 +146,14 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
   // mesh, (v + ω × lever) on a rigid body.
   const auto side_velocity_begin = [&](const Interaction2D& c, int side) {
     if (side_on_mesh(c.family, side)) {
-      const Vector2d v = mesh_velocity(c, side);
-      return Vector2d(v.dot(c.tangent()), v.dot(c.normal));
+      const MeshSideRows rows = mesh_side_rows(scene, c, side);
+      const VectorXd& v = d.states[static_cast<std::size_t>(rows.side.mesh)].v_begin;
+      Vector2d u = Vector2d::Zero();
+      for (std::size_t k = 0; k < 2; ++k)
+        for (std::size_t e = 0; e < 4; ++e)
+          u(static_cast<Eigen::Index>(k)) +=
+              rows.velocity[k][e] * v(2 * rows.side.nodes[e / 2] + static_cast<Eigen::Index>(e % 2));
+      return u;
     }
     const Vector3d& v =
         b.velocity_begin[static_cast<std::size_t>(side == 0 ? c.candidate_body : c.antagonist_body)];
@@ -358,6 +361,52 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
     }
   }
 
+  // P2P2L (mod_P2P2L): the pairs of PT2DL points made at the first detection, every step; the normal
+  // from the antagonist's point to the candidate's, the gap their distance.
+  if (scene.plan.families[static_cast<std::size_t>(PairFamily2D::P2P2L)]) {
+    const auto point_of = [&](const MeshContactor& pt) {
+      const VectorXd& x = node_coordinates[static_cast<std::size_t>(pt.mesh)];
+      return Vector2d((1.0 - pt.apab) * node_at(x, pt.nodes[0]) + pt.apab * node_at(x, pt.nodes[1]));
+    };
+    if (!point_pairs.made) {
+      // Every two PT2DL, the candidate the first in the case's order; the see table read both ways.
+      const std::vector<std::int32_t> rows = see.table("PT2DL", "PT2DL");
+      for (std::size_t i = 0; i < tactors.size(); ++i) {
+        if (tactors[i].shape != MeshContactorShape::point) continue;
+        for (std::size_t j = i + 1; j < tactors.size(); ++j) {
+          if (tactors[j].shape != MeshContactorShape::point) continue;
+          const std::int32_t forward = row_in(rows, see.mesh_colour(i), see.mesh_colour(j));
+          const std::int32_t backward = row_in(rows, see.mesh_colour(j), see.mesh_colour(i));
+          const std::int32_t row =
+              forward < 0 ? backward : (backward < 0 ? forward : std::min(forward, backward));
+          if (row < 0) continue;
+          const double distance = (point_of(tactors[i]) - point_of(tactors[j])).norm();
+          if (distance > scene.visibility[static_cast<std::size_t>(row)].alert) continue;
+          point_pairs.pairs.push_back(
+              PointPair2D{static_cast<std::int32_t>(i), static_cast<std::int32_t>(j), row, distance < 1e-20});
+        }
+      }
+      point_pairs.made = true;
+    }
+    for (const PointPair2D& pair : point_pairs.pairs) {
+      const MeshContactor& cd = tactors[static_cast<std::size_t>(pair.candidate)];
+      const MeshContactor& an = tactors[static_cast<std::size_t>(pair.antagonist)];
+      const Vector2d xc = point_of(cd), xa = point_of(an);
+      const double distance = (xc - xa).norm();
+      Frame f;
+      if (pair.glued)
+        f = Frame{0.0, Vector2d(0.0, 1.0), 0.5 * (xc + xa), 0.0};
+      else
+        f = Frame{distance, (xc - xa) / distance, 0.5 * (xc + xa), 0.0};
+      Interaction2D* c = add(PairFamily2D::P2P2L, pair.candidate, pair.antagonist, pair.row, f);
+      c->candidate_body = cd.mesh;
+      c->antagonist_body = an.mesh;
+      c->lever_candidate = Vector2d(1.0 - cd.apab, cd.apab);
+      c->lever_antagonist = Vector2d(1.0 - an.apab, an.apab);
+      relative_velocity_begin(*c);
+    }
+  }
+
   // PLALp (mod_PLALp: mailx-2d-contact.md §6): ALpxx, segment, polygon, vertex.
   if (scene.plan.families[static_cast<std::size_t>(PairFamily2D::PLALp)]) {
     const std::vector<std::int32_t> rows = see.table("POLYG", "ALpxx");
@@ -473,6 +522,47 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
           c->lever_antagonist = probe.lever_antagonist;
           relative_velocity_begin(*c);
         }
+      }
+    }
+  }
+
+  // DKDKL (mod_DKDKL): a rigid DISKx against each DISKL it sees, within the alert; the normal from the
+  // DISKL's centre to the disk's, the point on the disk.
+  if (scene.plan.families[static_cast<std::size_t>(PairFamily2D::DKDKL)]) {
+    const std::vector<std::int32_t> rows = see.table("DISKx", "DISKL");
+    for (std::size_t k = 0; k < scene.contactors.size(); ++k) {
+      const Contactor2D& dk = scene.contactors[k];
+      if (dk.shape != ContactorShape2D::disk || !b.visible[static_cast<std::size_t>(dk.body)]) continue;
+      const Vector3d& q = body_coordinates[static_cast<std::size_t>(dk.body)];
+      const double cs = std::cos(q.z()), sn = std::sin(q.z());
+      const Vector2d centre = q.head<2>() + Vector2d(cs * dk.shift.x() - sn * dk.shift.y(),
+                                                     sn * dk.shift.x() + cs * dk.shift.y());
+      for (std::size_t l = 0; l < tactors.size(); ++l) {
+        const MeshContactor& dl = tactors[l];
+        if (dl.shape != MeshContactorShape::disk) continue;
+        const std::int32_t row = row_in(rows, see.rigid_colour(k), see.mesh_colour(l));
+        if (row < 0) continue;
+        const double alert = scene.visibility[static_cast<std::size_t>(row)].alert;
+        // get_coorTT_DISKL: the centre r − h behind the edge's point, on the edge's left.
+        const VectorXd& x = node_coordinates[static_cast<std::size_t>(dl.mesh)];
+        const Vector2d a = node_at(x, dl.nodes[0]), bb = node_at(x, dl.nodes[1]);
+        const double radius = dl.disk_radius();
+        const Vector2d an_centre =
+            (1.0 - dl.apab) * a + dl.apab * bb - (radius - dl.arc_height) * left_normal(a, bb);
+        const Vector2d between = centre - an_centre;
+        const double distance = between.norm();
+        const double gap = distance - (dk.radius + radius);
+        if (gap > alert) continue;
+        const Vector2d n = between / distance;
+        Interaction2D* c = add(PairFamily2D::DKDKL, static_cast<std::int32_t>(k),
+                               static_cast<std::int32_t>(l), row, Frame{gap, n, centre - dk.radius * n, 0.0});
+        c->candidate_body = dk.body;
+        c->antagonist_body = dl.mesh;
+        const Vector2d lever = c->point - q.head<2>();
+        c->lever_candidate = Vector2d(cross_2d(lever, c->tangent()), cross_2d(lever, c->normal));
+        c->lever_antagonist = bb - a;  // the edge: mesh_side_rows builds the DISKL's maps from it
+        c->length = dk.radius * radius / (dk.radius + radius);
+        relative_velocity_begin(*c);
       }
     }
   }

@@ -88,6 +88,52 @@ void fill_scene_input(const case_folder::CaseFiles& files, SceneInput& input) {
   input.drv_dof_path = datbox_path(files, "DRV_DOF.DAT");
 }
 
+// Two PT2DL points of a P2P2L row that coincide are glued (mod_P2P2L compute_contact: a fixed frame,
+// gap 0), which LMGC90 accepts only with COUPLED_DOF (or TEX_SOL, which lmgc does not run): it stops
+// on any other law. Tested on the initial configuration (reference nodes + DOF.INI's X), where the
+// run's first detection makes the pairs.
+bool glued_points_have_a_glue(const case_folder::CaseFiles& files, const Scene2D& scene,
+                              grammar::DiagnosticSink& sink) {
+  const std::vector<MeshContactor>& tactors = scene.deformable.meshes.contactors;
+  const auto point = [&](const MeshContactor& t) {
+    const fem::MeshBody& body = scene.deformable.meshes.bodies[static_cast<std::size_t>(t.mesh)];
+    const Eigen::VectorXd& x = scene.deformable.states[static_cast<std::size_t>(t.mesh)].x_begin;
+    const auto at = [&](std::int32_t n) {
+      const auto i = static_cast<std::size_t>(2 * n);
+      return Eigen::Vector2d(body.coordinates[i] + x(static_cast<Eigen::Index>(i)),
+                             body.coordinates[i + 1] + x(static_cast<Eigen::Index>(i + 1)));
+    };
+    return Eigen::Vector2d((1.0 - t.apab) * at(t.nodes[0]) + t.apab * at(t.nodes[1]));
+  };
+  for (const Visibility2D& v : scene.visibility) {
+    if (v.family != PairFamily2D::P2P2L ||
+        std::holds_alternative<CoupledDof>(scene.laws[static_cast<std::size_t>(v.law)].law))
+      continue;
+    for (std::size_t i = 0; i < tactors.size(); ++i)
+      for (std::size_t j = i + 1; j < tactors.size(); ++j) {
+        const MeshContactor &a = tactors[i], &b = tactors[j];
+        if (a.shape != MeshContactorShape::point || b.shape != MeshContactorShape::point) continue;
+        const bool seen = (a.color == v.candidate_color && b.color == v.antagonist_color) ||
+                          (b.color == v.candidate_color && a.color == v.antagonist_color);
+        if (!seen || (point(a) - point(b)).norm() >= 1e-20) continue;
+        grammar::SourceSpan row_span{};
+        for (const grammar::SeeEntry& see : files.tact_behav->sees)
+          if (see.law_nickname.value == v.law_nickname &&
+              grammar::see_name(see.candidate_contactor.value) == "PT2DL")
+            row_span = see.law_nickname.span;
+        sink.report("L4003", grammar::Location{datbox_path(files, "TACT_BEHAV.DAT"), row_span},
+                    "PT2DL " + std::to_string(a.rank) + " of MAILx " + std::to_string(a.mesh + 1) +
+                        " and PT2DL " + std::to_string(b.rank) + " of MAILx " + std::to_string(b.mesh + 1) +
+                        " coincide: a P2P2L pair of coinciding points is glued, and LMGC90 glues them "
+                        "only with COUPLED_DOF; their law " +
+                        v.law_nickname + " is " +
+                        std::string(law_keyword(scene.laws[static_cast<std::size_t>(v.law)].law)));
+        return false;
+      }
+  }
+  return true;
+}
+
 }  // namespace
 
 bool prepare_run_2d(const case_folder::CaseFiles& files, Scene2D& scene, RunOutputs2D& outputs,
@@ -101,7 +147,7 @@ bool prepare_run_2d(const case_folder::CaseFiles& files, Scene2D& scene, RunOutp
           "body is RBDY3");
       return false;
     }
-  // Contact with deformable bodies: the pairs CLALp, CLJCx, PLALp and DKALp are run; a visibility row
+  // Contact with deformable bodies: every 2D pair with a mesh side is run; a visibility row
   // that names a MAILx body with another pair refuses the case.
   // A row between contactor types the case does not both have never makes a contact (not refused).
   std::set<std::string> contactor_types;
@@ -119,11 +165,12 @@ bool prepare_run_2d(const case_folder::CaseFiles& files, Scene2D& scene, RunOutp
                                    grammar::see_name(see.antagonist_contactor.value), family) &&
           is_mesh_family(family))
         continue;
-      sink.report(
-          "L4003", grammar::Location{datbox_path(files, "TACT_BEHAV.DAT"), see.candidate_body.span},
-          "contact with deformable (MAILx) bodies is run by lmgc for the pairs CLALp, CLJCx, PLALp and DKALp "
-          "only; this visibility row pairs " +
-              see.candidate_contactor.value + " and " + see.antagonist_contactor.value);
+      sink.report("L4003", grammar::Location{datbox_path(files, "TACT_BEHAV.DAT"), see.candidate_body.span},
+                  "contact with deformable (MAILx) bodies is run by lmgc for the pairs CLALp, CLJCx, P2P2L, "
+                  "PLALp, DKALp "
+                  "and DKDKL "
+                  "only; this visibility row pairs " +
+                      see.candidate_contactor.value + " and " + see.antagonist_contactor.value);
       return false;
     }
   SceneInput2D input;
@@ -132,6 +179,7 @@ bool prepare_run_2d(const case_folder::CaseFiles& files, Scene2D& scene, RunOutp
     input.gravity = Eigen::Vector2d(files.bulk_behav->gravity[0].value, files.bulk_behav->gravity[1].value);
   if (!build_scene_2d(input, scene, sink)) return false;
   if (!build_deformable_bodies(files, hypothesis, scene.deformable, sink)) return false;
+  if (!glued_points_have_a_glue(files, scene, sink)) return false;
 
   outputs.case_dir = files.case_dir;
   if (files.dof_ini) {

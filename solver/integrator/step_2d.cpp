@@ -84,7 +84,7 @@ void select_prox_tactors(Scene2D& scene, RunState2D& state) {
     std::vector<Eigen::VectorXd> nodes(scene.deformable.states.size());
     for (std::size_t m = 0; m < nodes.size(); ++m)
       nodes[m] = mesh_detection_coordinates(scene, m, state.theta, state.h);
-    detect_mesh_contacts_2d(scene, coordinates, nodes, state.contacts);
+    detect_mesh_contacts_2d(scene, coordinates, nodes, state.point_pairs, state.contacts);
   }
   state.law_states.clear();
   if (scene_keeps_law_state_2d(scene)) state.law_states.resize(state.contacts.size());

@@ -157,9 +157,10 @@ bool Postpro2D::write(const Scene2D& scene, const RunState2D& state, const NlgsR
         double sum_begin = 0, sum_end = 0, max_begin = 0, max_end = 0;
         std::size_t n = 0;
         for (const Interaction2D& k : state.contacts) {
-          // mailx-2d-contact.md §10: nor PLALp.
+          // mailx-2d-contact.md §10: nor PLALp, P2P2L, DKDKL.
           if (k.family == PairFamily2D::DKPLx || k.family == PairFamily2D::PTPT2 ||
-              k.family == PairFamily2D::PLALp)
+              k.family == PairFamily2D::PLALp || k.family == PairFamily2D::P2P2L ||
+              k.family == PairFamily2D::DKDKL)
             continue;
           const double gb = std::min(0.0, k.gap_begin), ge = std::min(0.0, k.gap_begin + h * k.u(1));
           sum_begin -= gb;

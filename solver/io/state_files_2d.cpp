@@ -79,10 +79,10 @@ grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& 
   for (std::size_t k = 0; k < scene.contactors.size(); ++k) serial[k] = ++per_type[scene.contactors[k].type];
   // Modules in the alphabetical order of LMGC90's writer; inside one, by candidate contactor
   // (PLPLx: in detection order).
-  constexpr PairFamily2D kWriteOrder[] = {PairFamily2D::CLALp, PairFamily2D::CLJCx, PairFamily2D::DKALp,
-                                          PairFamily2D::DKDKx, PairFamily2D::DKJCx, PairFamily2D::DKKDx,
-                                          PairFamily2D::DKPLx, PairFamily2D::PLALp, PairFamily2D::PLJCx,
-                                          PairFamily2D::PLPLx, PairFamily2D::PTPT2};
+  constexpr PairFamily2D kWriteOrder[] = {
+      PairFamily2D::CLALp, PairFamily2D::CLJCx, PairFamily2D::DKALp, PairFamily2D::DKDKL, PairFamily2D::DKDKx,
+      PairFamily2D::DKJCx, PairFamily2D::DKKDx, PairFamily2D::DKPLx, PairFamily2D::P2P2L, PairFamily2D::PLALp,
+      PairFamily2D::PLJCx, PairFamily2D::PLPLx, PairFamily2D::PTPT2};
   // Mesh contactors (CLxxx, ALpxx) by their MAILx body, rank in it and serial among their type.
   const std::vector<MeshContactor>& mesh_tactors = scene.deformable.meshes.contactors;
   const auto mesh_body = [&](std::int32_t t) {
@@ -148,6 +148,20 @@ grammar::VlocRlocFile vloc_rloc_file_2d(const Scene2D& scene, const RunState2D& 
                           mesh_rank(c.antagonist),
                           Integer{c.antagonist_segment},
                           Integer{iadj[m]}};
+          break;
+        case PairFamily2D::P2P2L:
+          // mod_P2P2L write_out_Vloc_Rloc: each point's body and rank in it; the last column (titled
+          // iadj) the antagonist's serial among the PT2DL.
+          out.words = {Word{"MAILx"}, Word{"PT2DL"}, Word{law}, Word{"MAILx"}, Word{"PT2DL"}, Word{status}};
+          out.integers = {mesh_body(c.candidate), mesh_rank(c.candidate), mesh_body(c.antagonist),
+                          mesh_rank(c.antagonist),
+                          Integer{mesh_tactors[static_cast<std::size_t>(c.antagonist)].serial}};
+          break;
+        case PairFamily2D::DKDKL:
+          // mod_DKDKL write_out_Vloc_Rloc: the last column the DISKL's serial.
+          out.words = {Word{"RBDY2"}, Word{"DISKx"}, Word{law}, Word{"MAILx"}, Word{"DISKL"}, Word{status}};
+          out.integers = {cd_body, cd_rank, mesh_body(c.antagonist), mesh_rank(c.antagonist),
+                          Integer{mesh_tactors[static_cast<std::size_t>(c.antagonist)].serial}};
           break;
         case PairFamily2D::PLALp:
           out.words = {Word{"RBDY2"}, Word{cd.type}, Word{"CDVER"}, Word{law},
@@ -269,6 +283,10 @@ WarmStart2D warm_start_2d(const grammar::VlocRlocFile& file, const Scene2D& scen
       family = PairFamily2D::PLALp;
     else if (t == "DKALp")
       family = PairFamily2D::DKALp;
+    else if (t == "P2P2L")
+      family = PairFamily2D::P2P2L;
+    else if (t == "DKDKL")
+      family = PairFamily2D::DKDKL;
     else
       continue;
     const bool vertex =

@@ -13,10 +13,11 @@ namespace lmgc::solver {
 inline constexpr double kCohesiveBetaTolerance = 1e-12;
 
 // The length L a 2D cohesive law multiplies its tractions by (mod_nlgs prep_nlgs): the pair's contact
-// length for the IQS laws (on DKDKx, DKJCx, PLPLx, PLJCx); for the laws of deformable pairs, the
-// CLxxx point's share of its edge on CLALp and CLJCx, and LMGC90's fixed 0.35 on PLALp and DKALp.
+// length for the IQS laws (on DKDKx, DKJCx, PLPLx, PLJCx; LMGC90's fixed 0.05 on DKDKL); for the laws
+// of deformable pairs, the CLxxx point's share of its edge on CLALp and CLJCx, and LMGC90's fixed 0.35
+// on PLALp and DKALp.
 inline double iqs_cohesive_length(const Interaction2D& c) {
-  return c.length;
+  return c.family == PairFamily2D::DKDKL ? 0.05 : c.length;
 }
 inline double gap_cohesive_length(const Interaction2D& c) {
   return c.family == PairFamily2D::CLALp || c.family == PairFamily2D::CLJCx ? c.length : 0.35;

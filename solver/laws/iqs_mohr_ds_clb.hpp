@@ -3,7 +3,7 @@
 // (contact-laws.md §3.2). 2D: cohesion c × the contact length. 3D (mod_nlgs_3D :1466-1520,
 // :4547-4552): cohesive (Mstck) only from step 1 (Nstep = 1, as in 2D), cohesion c × the family's
 // contact surface, added only while the local status is not noctc.
-#include "solver/laws/law_forms.hpp"
+#include "solver/laws/cohesive_zone.hpp"
 
 namespace lmgc::solver {
 
@@ -25,7 +25,7 @@ inline void prepare(const IqsMohrDsClb& law, LocalProblem2D& c, const LawStep& s
   if (step.first_step && c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Mstck;
   iqs_form(c, step.h);
   if (c.status_begin == ContactStatus::Mstck) {
-    add_cohesion(c, law.cohen * c.length, step.h);
+    add_cohesion(c, law.cohen * iqs_cohesive_length(c), step.h);
     c.mu = law.cohesive_friction();
   } else {
     c.mu = static_dynamic(law.dfric, law.sfric, c.status_begin);

@@ -168,7 +168,7 @@ bool build_scene_2d(const SceneInput2D& in, Scene2D& scene, grammar::DiagnosticS
         !contactor_types.count(std::string(grammar::see_name(see.antagonist_contactor.value))))
       continue;
     // Rows between RBDY2 bodies, and rows with a MAILx side whose pair has a mesh family
-    // (CLALp, CLJCx, PLALp, DKALp); prepare_run_2d refuses the other MAILx rows.
+    // (CLALp, CLJCx, P2P2L, PLALp, DKALp, DKDKL); prepare_run_2d refuses the other MAILx rows.
     const bool rigid = see.candidate_body.value == "RBDY2" && see.antagonist_body.value == "RBDY2";
     PairFamily2D mesh_family;
     if (!rigid &&

@@ -11,8 +11,9 @@
 namespace lmgc::solver {
 
 // 2D interaction families, in the order LMGC90 sweeps them (numerics.md §4 step 2: DKDKx, DKKDx,
-// DKJCx, DKPLx, PTPT2, PLPLx, PLJCx, CLALp, CLJCx, ..., PLALp, DKALp). The first seven join rigid bodies
-// (solver/detection/detection_2d.hpp); the others have a side on a mesh (mesh_contact_2d.hpp).
+// DKJCx, DKPLx, PTPT2, PLPLx, PLJCx, CLALp, CLJCx, P2P2L, PLALp, DKALp, DKDKL; mod_nlgs prep_nlgs). The first
+// seven join rigid bodies (solver/detection/detection_2d.hpp); the others have a side on a mesh
+// (mesh_contact_2d.hpp).
 enum class PairFamily2D : std::uint8_t {
   DKDKx,
   DKKDx,
@@ -23,8 +24,10 @@ enum class PairFamily2D : std::uint8_t {
   PLJCx,
   CLALp,
   CLJCx,
+  P2P2L,
   PLALp,
-  DKALp
+  DKALp,
+  DKDKL
 };
 
 // The family's name: its interaction module, as the contactor-pair table and Vloc_Rloc files name it.
@@ -48,29 +51,35 @@ constexpr std::string_view pair_family_name(PairFamily2D family) {
       return "CLALp";
     case PairFamily2D::CLJCx:
       return "CLJCx";
+    case PairFamily2D::P2P2L:
+      return "P2P2L";
     case PairFamily2D::PLALp:
       return "PLALp";
     case PairFamily2D::DKALp:
       return "DKALp";
+    case PairFamily2D::DKDKL:
+      return "DKDKL";
   }
   return "";
 }
-inline constexpr int kPairFamily2DCount = 11;
-static_assert(static_cast<int>(PairFamily2D::DKALp) + 1 == kPairFamily2DCount);
+inline constexpr int kPairFamily2DCount = 13;
+static_assert(static_cast<int>(PairFamily2D::DKDKL) + 1 == kPairFamily2DCount);
 // The families between rigid bodies: PairFamily2D's first seven.
 inline constexpr int kRigidPairFamily2DCount = 7;
 static_assert(static_cast<int>(PairFamily2D::PLJCx) + 1 == kRigidPairFamily2DCount);
 
 // Whether the candidate (side 0) or the antagonist (side 1) of a family is a mesh contactor
-// (CLxxx, ALpxx: Scene2D::mesh_contactors) rather than a rigid one (Scene2D::contactors).
+// (CLxxx, ALpxx, PT2DL, DISKL: Scene2D::mesh_contactors) rather than a rigid one (Scene2D::contactors).
 constexpr bool side_on_mesh(PairFamily2D family, int side) {
   switch (family) {
     case PairFamily2D::CLALp:
+    case PairFamily2D::P2P2L:
       return true;
     case PairFamily2D::CLJCx:
       return side == 0;
     case PairFamily2D::PLALp:
     case PairFamily2D::DKALp:
+    case PairFamily2D::DKDKL:
       return side == 1;
     default:
       return false;

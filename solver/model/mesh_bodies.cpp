@@ -15,7 +15,7 @@ const grammar::ModelOption* option(const grammar::Model& model, std::string_view
 }  // namespace
 
 bool runs_mesh_contactor_2d(std::string_view type) {
-  return type == "CLxxx" || type == "ALpxx";
+  return type == "CLxxx" || type == "ALpxx" || type == "PT2DL" || type == "DISKL";
 }
 
 bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypothesis, MeshBodies& out,
@@ -268,10 +268,22 @@ bool build_mesh_bodies(const case_folder::CaseFiles& files, fem::Hypothesis hypo
       if (!runs_mesh_contactor_2d(c.type) || dimension != 2) {
         return refuse(
             bodies_path, t.type.span,
-            "contactor " + c.type + " on a MAILx body is not run by lmgc yet (CLxxx and ALpxx in 2D are)");
+            "contactor " + c.type +
+                " on a MAILx body is not run by lmgc yet (CLxxx, ALpxx, PT2DL and DISKL in 2D are)");
       }
-      c.shape = c.type == "CLxxx" ? MeshContactorShape::candidate_point : MeshContactorShape::polyline;
-      if (c.type == "CLxxx") c.apab = t.values.empty() ? 0.0 : t.values.front().value;
+      c.shape = c.type == "CLxxx"   ? MeshContactorShape::candidate_point
+                : c.type == "PT2DL" ? MeshContactorShape::point
+                : c.type == "DISKL" ? MeshContactorShape::disk
+                                    : MeshContactorShape::polyline;
+      if (c.shape != MeshContactorShape::polyline) c.apab = t.values.empty() ? 0.0 : t.values.front().value;
+      if (c.shape == MeshContactorShape::disk) {
+        c.arc_height = t.values.size() > 1 ? t.values[1].value : 0.0;
+        c.arc_half_chord = t.values.size() > 2 ? t.values[2].value : 0.0;
+        // LMGC90 divides by the sagitta (get_radius_DISKL); a flat or inward arc is no disk.
+        if (!(c.arc_height > 0.0))
+          return refuse(bodies_path, t.type.span,
+                        "DISKL needs a positive arc height bdyr (its radius is (bdyr² + brpm²)/(2 bdyr))");
+      }
       std::vector<const grammar::Integer*> nodes;
       for (const grammar::Integer& n : t.nodes) nodes.push_back(&n);
       for (const grammar::ContactorContinuation& more : t.continuations) {

@@ -4,6 +4,7 @@
 #include "solver/detection/detection_2d.hpp"
 #include "solver/model/interaction_2d.hpp"
 #include "solver/model/large_array.hpp"
+#include "solver/model/mesh_contact_2d.hpp"
 #include "solver/model/step_context.hpp"
 #include "solver/nlgs/quick_scramble.hpp"
 
@@ -22,7 +23,8 @@ struct RunState2D : StepContext {
   bool contacts_stored = false;
   bool laws_initialized = false;  // a step with interactions has been solved (LawStep::first_step)
   VisibilityIndex2D visibility;
-  QuickScramble scramble;  // the sweep order's random lists, step after step
+  PointPairs2D point_pairs;  // P2P2L's, made at the first detection
+  QuickScramble scramble;    // the sweep order's random lists, step after step
 };
 
 }  // namespace lmgc::solver

@@ -23,40 +23,43 @@ using Eigen::Vector3d;
 
 // One side of a contact as the blocks see it: the body it moves and, per local component (t, n),
 // the coefficients of H on that body's dofs. A rigid body: (t_x, t_y, ℓ×t) on (vx, vy, ω); a mesh:
-// the weights times the direction on the four dofs of the side's two nodes, which index rows of the
-// body's condensed compliance.
+// the rows of mesh_side_rows on the four dofs of the side's two nodes, which index rows of the body's
+// condensed compliance. `h` maps velocities to the side's local velocity, `hr` the contact's impulse
+// to the body's: the same rows but for a DISKL.
 struct Side {
   bool mesh = false;
   bool moves = false;  // a rigid body with an inverse mass, or a mesh
   std::int32_t body = 0;
-  std::array<std::int32_t, 4> rows{};        // mesh: rows of contact_compliance of (a_x, a_y, b_x, b_y)
-  std::array<std::int32_t, 4> dofs{};        // mesh: the dofs themselves
-  std::array<std::array<double, 4>, 2> h{};  // [component][entry]; rigid: 3 entries
+  std::array<std::int32_t, 4> rows{};         // mesh: rows of contact_compliance of (a_x, a_y, b_x, b_y)
+  std::array<std::int32_t, 4> dofs{};         // mesh: the dofs themselves
+  std::array<std::array<double, 4>, 2> h{};   // [component][entry]; rigid: 3 entries
+  std::array<std::array<double, 4>, 2> hr{};  // the same for the impulse
 };
 
 Side side_of(const Scene2D& scene, const Interaction2D& c, int side) {
   Side s;
   const Vector2d t = c.tangent(), n = c.normal;
   if (side_on_mesh(c.family, side)) {
-    const MeshSide2D m = mesh_side(scene, c, side);
-    const MeshBodyState& state = scene.deformable.states[static_cast<std::size_t>(m.mesh)];
+    const MeshSideRows m = mesh_side_rows(scene, c, side);
+    const MeshBodyState& state = scene.deformable.states[static_cast<std::size_t>(m.side.mesh)];
     s.mesh = true;
     s.moves = true;
-    s.body = m.mesh;
+    s.body = m.side.mesh;
     for (int k = 0; k < 2; ++k)
       for (int d = 0; d < 2; ++d) {
         const std::size_t e = static_cast<std::size_t>(2 * k + d);
-        s.dofs[e] = 2 * m.nodes[static_cast<std::size_t>(k)] + d;
+        s.dofs[e] = 2 * m.side.nodes[static_cast<std::size_t>(k)] + d;
         s.rows[e] = state.compliance_row[static_cast<std::size_t>(s.dofs[e])];
-        s.h[0][e] = m.weights(k) * t(d);
-        s.h[1][e] = m.weights(k) * n(d);
       }
+    s.h = m.velocity;
+    s.hr = m.reaction;
   } else {
     s.body = side == 0 ? c.candidate_body : c.antagonist_body;
     s.moves = !scene.bodies.inverse_mass[static_cast<std::size_t>(s.body)].isZero(0.0);
     const Vector2d& lever = side == 0 ? c.lever_candidate : c.lever_antagonist;
     s.h[0] = {t.x(), t.y(), lever(0), 0.0};
     s.h[1] = {n.x(), n.y(), lever(1), 0.0};
+    s.hr = s.h;
   }
   return s;
 }
@@ -77,7 +80,7 @@ Matrix2d side_block(const Scene2D& scene, const Side& a, const Side& b) {
         for (std::size_t p = 0; p < 4; ++p)
           for (std::size_t q = 0; q < 4; ++q)
             w += a.h[static_cast<std::size_t>(k)][p] * C(a.rows[p], b.rows[q]) *
-                 b.h[static_cast<std::size_t>(l)][q];
+                 b.hr[static_cast<std::size_t>(l)][q];
         W(k, l) = w;
       }
   } else {
@@ -87,7 +90,7 @@ Matrix2d side_block(const Scene2D& scene, const Side& a, const Side& b) {
         double w = 0.0;
         for (std::size_t p = 0; p < 3; ++p)
           w += a.h[static_cast<std::size_t>(k)][p] * m(static_cast<Eigen::Index>(p)) *
-               b.h[static_cast<std::size_t>(l)][p];
+               b.hr[static_cast<std::size_t>(l)][p];
         W(k, l) = w;
       }
   }
@@ -429,11 +432,11 @@ struct CoupledNlgs2D {
           Eigen::VectorXd& impulse =
               scene.deformable.states[static_cast<std::size_t>(side.body)].contact_impulse;
           for (std::size_t e = 0; e < 4; ++e)
-            impulse(side.dofs[e]) += sign * (side.h[0][e] * r(0) + side.h[1][e] * r(1));
+            impulse(side.dofs[e]) += sign * (side.hr[0][e] * r(0) + side.hr[1][e] * r(1));
         } else {
           Vector3d& impulse = b.impulse[static_cast<std::size_t>(side.body)];
           for (std::size_t e = 0; e < 3; ++e)
-            impulse(static_cast<Eigen::Index>(e)) += sign * (side.h[0][e] * r(0) + side.h[1][e] * r(1));
+            impulse(static_cast<Eigen::Index>(e)) += sign * (side.hr[0][e] * r(0) + side.hr[1][e] * r(1));
         }
       }
     }

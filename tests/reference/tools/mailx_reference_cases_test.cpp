@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <sstream>
 
 #include "grammar/gpv/parser.hpp"
@@ -184,6 +185,66 @@ TEST(MailxReferenceCases, GapMohrDsClbBlocksBreakAsLmgc90s) {
 }
 TEST(MailxReferenceCases, GapWetDsClbBlocksSeparateAsLmgc90s) {
   expect_lmgc90_contact_files("mailx_gap_wet_blocks", "CLALp", false);
+}
+
+// mailx_glued_points: two blocks glued node to node by COUPLED_DOF on P2P2L pairs of coinciding
+// PT2DL points, 150 steps.
+TEST(MailxReferenceCases, BlocksGluedNodeToNodeWriteLmgc90sFiles) {
+  expect_lmgc90_contact_files("mailx_glued_points", "P2P2L");
+}
+
+// The same case in the layout LMGC90's pre writes ('+PT2DL' lines, each its own point) runs the same.
+TEST(MailxReferenceCases, PlusPt2dlLinesAreEachTheirOwnPoint) {
+  const fs::path dir = run_reference_case("mailx_glued_points", "mailx_glued_points_plain");
+  if (dir.empty()) GTEST_SKIP() << "this build has no Python module (lmgc-run)";
+  const fs::path plus = scratch_dir("mailx_glued_points_plus");
+  for (const char* entry : {"DATBOX", "command.py"})
+    fs::copy(fs::path(LMGC_SOURCE_DIR) / "reference_cases" / "mailx_glued_points" / entry, plus / entry,
+             fs::copy_options::recursive);
+  std::istringstream in(read_file(plus / "DATBOX" / "BODIES.DAT"));
+  std::string bodies, line;
+  bool first_of_body = true;
+  int continued = 0;
+  while (std::getline(in, line)) {
+    if (line.rfind(" MAILx", 0) == 0) first_of_body = true;
+    if (line.rfind(" PT2DL", 0) == 0) {
+      if (!first_of_body) line[0] = '+', ++continued;
+      first_of_body = false;
+    }
+    bodies += line + "\n";
+  }
+  EXPECT_EQ(continued, 4);
+  std::ofstream(plus / "DATBOX" / "BODIES.DAT") << bodies;
+  const ToolRun run = run_tool_both_streams("lmgc-run", "'" + plus.string() + "' --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(read_file(plus / "OUTBOX" / "DOF.LAST") == read_file(dir / "OUTBOX" / "DOF.LAST"));
+  EXPECT_TRUE(read_file(plus / "OUTBOX" / "Vloc_Rloc.LAST") == read_file(dir / "OUTBOX" / "Vloc_Rloc.LAST"));
+}
+
+// Coinciding points of a P2P2L row are glued, which LMGC90 does only with COUPLED_DOF: another law is
+// refused before the run, naming the points and the law.
+TEST(MailxReferenceCases, CoincidingPointsWithAnotherLawThanCoupledDofAreRefused) {
+  if (!fs::exists(tool_path("lmgc-run"))) GTEST_SKIP() << "this build has no Python module (lmgc-run)";
+  const fs::path dir = scratch_dir("mailx_glued_points_iqs");
+  for (const char* entry : {"DATBOX", "command.py"})
+    fs::copy(fs::path(LMGC_SOURCE_DIR) / "reference_cases" / "mailx_glued_points" / entry, dir / entry,
+             fs::copy_options::recursive);
+  std::string tact = read_file(dir / "DATBOX" / "TACT_BEHAV.DAT");
+  const std::string glue = " glued  COUPLED_DOF";
+  ASSERT_NE(tact.find(glue), std::string::npos);
+  tact.replace(tact.find(glue), glue.size(), " glued  IQS_CLB                         fric= 0.3000000D+00");
+  std::ofstream(dir / "DATBOX" / "TACT_BEHAV.DAT") << tact;
+  const ToolRun run = run_tool_both_streams("lmgc-run", "'" + dir.string() + "'");
+  EXPECT_NE(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("L4003"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("only with COUPLED_DOF"), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(dir / "OUTBOX" / "DOF.LAST"));
+}
+
+// mailx_disk_on_diskl: a rigid disk landing and sliding on the DISKL arcs of an elastic block
+// (DKDKL, mod_DISKL's velocity and reaction maps), 300 steps.
+TEST(MailxReferenceCases, DiskOnTheArcsOfABlockWritesLmgc90sFiles) {
+  expect_lmgc90_contact_files("mailx_disk_on_diskl", "DKDKL");
 }
 
 }  // namespace

@@ -41,7 +41,12 @@ TEST(PairFamilies, Every2DFamilyIsAPairOfTheTable) {
   EXPECT_FALSE(pair_family_of("CLxxx", "JONCx", family));  // a mesh family: mesh_detection_2d.hpp
   EXPECT_TRUE(contactor_pair_family_2d("CLxxx", "JONCx", family));
   EXPECT_EQ(family, PairFamily2D::CLJCx);
-  EXPECT_FALSE(contactor_pair_family_2d("PT2DL", "PT2DL", family));  // P2P2L: not run yet
+  EXPECT_TRUE(contactor_pair_family_2d("PT2DL", "PT2DL", family));
+  EXPECT_EQ(family, PairFamily2D::P2P2L);
+  EXPECT_TRUE(contactor_pair_family_2d("DISKx", "DISKL", family));
+  EXPECT_EQ(family, PairFamily2D::DKDKL);
+  EXPECT_TRUE(side_on_mesh(PairFamily2D::DKDKL, 1));
+  EXPECT_FALSE(side_on_mesh(PairFamily2D::DKDKL, 0));
 }
 
 TEST(PairFamilies, Every3DFamilyIsAPairOfTheTable) {
