@@ -394,8 +394,9 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
       const Vector2d xc = point_of(cd), xa = point_of(an);
       const double distance = (xc - xa).norm();
       Frame f;
-      if (pair.glued)
-        f = Frame{0.0, Vector2d(0.0, 1.0), 0.5 * (xc + xa), 0.0};
+      // Glued, or two points that have met (LMGC90 divides by their zero distance there): e_y.
+      if (pair.glued || distance < 1e-20)
+        f = Frame{pair.glued ? 0.0 : distance, Vector2d(0.0, 1.0), 0.5 * (xc + xa), 0.0};
       else
         f = Frame{distance, (xc - xa) / distance, 0.5 * (xc + xa), 0.0};
       Interaction2D* c = add(PairFamily2D::P2P2L, pair.candidate, pair.antagonist, pair.row, f);
@@ -553,7 +554,8 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
         const double distance = between.norm();
         const double gap = distance - (dk.radius + radius);
         if (gap > alert) continue;
-        const Vector2d n = between / distance;
+        // Concentric (LMGC90 divides by the zero distance there): e_y.
+        const Vector2d n = distance > 0.0 ? Vector2d(between / distance) : Vector2d(0.0, 1.0);
         Interaction2D* c = add(PairFamily2D::DKDKL, static_cast<std::int32_t>(k),
                                static_cast<std::int32_t>(l), row, Frame{gap, n, centre - dk.radius * n, 0.0});
         c->candidate_body = dk.body;

@@ -174,6 +174,17 @@ void SceneBuilder2D::add_candidate_point(int mesh, int a, int b, double apab, co
   add_mesh_contactor(scene_, std::move(c));
 }
 
+void SceneBuilder2D::add_point(int mesh, int a, int b, double apab, const std::string& color) {
+  MeshContactor c;
+  c.shape = MeshContactorShape::point;
+  c.type = "PT2DL";
+  c.color = color;
+  c.mesh = mesh;
+  c.nodes = {a, b};
+  c.apab = apab;
+  add_mesh_contactor(scene_, std::move(c));
+}
+
 void SceneBuilder2D::add_polyline(int mesh, const std::vector<int>& nodes, const std::string& color) {
   MeshContactor c;
   c.shape = MeshContactorShape::polyline;

@@ -30,6 +30,8 @@ class SceneBuilder2D {
   int add_mesh(const fem::MeshBody& mesh);
   void add_candidate_point(int mesh, int a, int b, double apab, const std::string& color = "MESHx");
   void add_polyline(int mesh, const std::vector<int>& nodes, const std::string& color = "MESHx");
+  // A PT2DL point on (a, b) at apab from a (P2P2L's side).
+  void add_point(int mesh, int a, int b, double apab, const std::string& color = "MESHx");
 
   const Scene2D& scene() const { return scene_; }  // as built so far
 

@@ -470,6 +470,16 @@ def ALpxx_PushPreconNodes():
 
 
 @_export
+def PT2DL_PushPreconNodes():
+    """See mecaMAILx_SetPreconAllBodies."""
+
+
+@_export
+def DISKL_PushPreconNodes():
+    """See mecaMAILx_SetPreconAllBodies."""
+
+
+@_export
 def AssembleMechanicalLHS():
     """lmgc assembles and factorises the iteration matrix M + θhC + (θh)²K itself in ComputeFreeVelocity:
     once while h and θ stay for a linear body, at every Newton iteration (from the tangent) for a

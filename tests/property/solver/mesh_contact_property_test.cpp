@@ -5,6 +5,8 @@
 //   of the relative velocity read from the bodies' end-of-step velocities (V = V_free + K̂⁻¹ I for a
 //   mesh, a full solve) is at the solver's tolerance; so the W blocks built from each mesh's condensed
 //   compliance are the bodies' response.
+// - Two blocks glued node to node (COUPLED_DOF on P2P2L pairs of coinciding PT2DL points) move as the
+//   one mesh they make together: the glue's exact solution is that mesh's.
 // - With θ = 1 and IQS_CLB, contact without initial overlap never creates energy: the discrete energy
 //   ½VᵀMV + ½XᵀKX − Fᵀ_gravity X of the meshes plus the rigid bodies' never grows (the contacts' work
 //   r·u_end is ≤ 0, the scheme's own dissipation −½ΔVᵀMΔV − ½ΔXᵀKΔX too).
@@ -218,6 +220,75 @@ RC_GTEST_PROP(MeshContact, IqsClbWithoutInitialOverlapNeverCreatesEnergyWithThet
     const double after = energy(s.scene);
     RC_ASSERT(after <= before + 1e-9 * scale);
     before = after;
+  }
+}
+
+// Two blocks of uniform cells dx × dy side by side, glued at their common edge, against the one block
+// they make: with the same random initial velocity field (a rotation, a shear and a stretch) and no
+// load, every node moves as its twin of the single mesh, to the NLGS's tolerance, for any θ.
+RC_GTEST_PROP(MeshContact, BlocksGluedNodeToNodeMoveAsTheMeshTheyMakeTogether, ()) {
+  const fem::Material material{in_range(1e6, 1e7), in_range(0.0, 0.45), 1000.0};
+  const int nx_left = *rc::gen::inRange(1, 4), nx_right = *rc::gen::inRange(1, 4),
+            ny = *rc::gen::inRange(1, 4);
+  const double dx = in_range(0.05, 0.2), height = in_range(0.1, 0.4), w_left = nx_left * dx;
+  const double spin = in_range(-2.0, 2.0), shear = in_range(-2.0, 2.0), stretch = in_range(-2.0, 2.0);
+  const auto velocity = [&](double x, double y) {
+    return Vector2d(-spin * y + shear * y + stretch * x, spin * x - 0.5 * stretch * y);
+  };
+  const auto start_moving = [&](Scene2D& scene) {
+    for (std::size_t m = 0; m < scene.deformable.states.size(); ++m) {
+      const fem::MeshBody& mesh = scene.deformable.meshes.bodies[m];
+      for (std::size_t n = 0; n < mesh.nodes(); ++n)
+        scene.deformable.states[m].v_begin.segment<2>(static_cast<Eigen::Index>(2 * n)) =
+            velocity(mesh.coordinates[2 * n], mesh.coordinates[2 * n + 1]);
+    }
+  };
+  SceneBuilder2D glued;
+  glued.add_law("glued", CoupledDof{});
+  const int left = glued.add_mesh(block(0.0, 0.0, w_left, height, nx_left, ny, material));
+  const int right = glued.add_mesh(block(w_left, 0.0, nx_right * dx, height, nx_right, ny, material));
+  for (int j = 0; j <= ny; ++j) {
+    const double y = height * j / ny, other = height * (j == 0 ? 1 : j - 1) / ny;
+    const fem::MeshBody& l = glued.scene().deformable.meshes.bodies[static_cast<std::size_t>(left)];
+    const fem::MeshBody& r = glued.scene().deformable.meshes.bodies[static_cast<std::size_t>(right)];
+    glued.add_point(left, node_at(l, w_left, y), node_at(l, w_left, other), 0.0, "LEFTx");
+    glued.add_point(right, node_at(r, w_left, y), node_at(r, w_left, other), 0.0, "RIGHT");
+  }
+  glued.see("PT2DL", "LEFTx", "glued", "PT2DL", "RIGHT", 1e-3);
+  Scene2D two = glued.build();
+  SceneBuilder2D single;
+  single.add_mesh(block(0.0, 0.0, (nx_left + nx_right) * dx, height, nx_left + nx_right, ny, material));
+  Scene2D one = single.build();
+  start_moving(two);
+  start_moving(one);
+  const double theta = in_range(0.5, 1.0);
+  RunState2D state_two = start(two, theta), state_one = start(one, theta);
+  NlgsOptions options;
+  options.tolerance = 1e-13;
+  options.gs_it1 = 50;
+  options.gs_it2 = 2000;
+  options.residual_target = 1e-13;
+  const fem::MeshBody& merged = one.deformable.meshes.bodies[0];
+  double scale = 0.0;
+  for (std::size_t n = 0; n < merged.nodes(); ++n)
+    scale = std::max(scale, velocity(merged.coordinates[2 * n], merged.coordinates[2 * n + 1]).norm());
+  for (int step = 0; step < 20; ++step) {
+    const NlgsResult result = step_2d(two, state_two, options);
+    step_2d(one, state_one, options);
+    RC_ASSERT(result.converged);
+    RC_ASSERT(state_two.contacts.size() == static_cast<std::size_t>(ny + 1));
+    for (std::size_t m = 0; m < 2; ++m) {
+      const fem::MeshBody& mesh = two.deformable.meshes.bodies[m];
+      const MeshBodyState& s = two.deformable.states[m];
+      for (std::size_t n = 0; n < mesh.nodes(); ++n) {
+        const std::int32_t twin = node_at(merged, mesh.coordinates[2 * n], mesh.coordinates[2 * n + 1]);
+        RC_ASSERT(twin >= 0);
+        const auto i = static_cast<Eigen::Index>(2 * n), k = static_cast<Eigen::Index>(2 * twin);
+        RC_ASSERT((s.v.segment<2>(i) - one.deformable.states[0].v.segment<2>(k)).norm() <= 1e-8 * scale);
+        RC_ASSERT((s.x.segment<2>(i) - one.deformable.states[0].x.segment<2>(k)).norm() <=
+                  1e-8 * scale * 1e-3 * (step + 1));
+      }
+    }
   }
 }
 
