@@ -241,6 +241,26 @@ void check_geometry(const CaseFiles& files, grammar::DiagnosticSink& sink) {
                fmt::format("CLxxx {} of {}: apab is {}; it must be in [0, 1]",
                            &c - body.contactors.data() + 1, owner, c.values[0].value));
     }
+    // A PT2DL point lies on its edge; a DISKL's edge has two points and its arc a positive sagitta
+    // (LMGC90 divides by |ab| and by bdyr: mod_DISKL get_radius_DISKL).
+    for (const auto& c : body.contactors) {
+      if (c.type.value != "PT2DL" && c.type.value != "DISKL") continue;
+      const auto rank = &c - body.contactors.data() + 1;
+      if (!c.values.empty() && !(c.values[0].value >= 0.0 && c.values[0].value <= 1.0))
+        report("L3018", c.values[0].span,
+               fmt::format("{} {} of {}: apab is {}; it must be in [0, 1]", c.type.value, rank, owner,
+                           c.values[0].value));
+      if (c.type.value != "DISKL") continue;
+      if (c.nodes.size() >= 2 && (c.nodes[0].value == c.nodes[1].value ||
+                                  node_position(c.nodes[0].value) == node_position(c.nodes[1].value)))
+        report("L3018", c.nodes[1].span,
+               fmt::format("DISKL {} of {}: nodes {} and {} are one point", rank, owner, c.nodes[0].value,
+                           c.nodes[1].value));
+      if (c.values.size() >= 2 && !(c.values[1].value > 0.0))
+        report("L3018", c.values[1].span,
+               fmt::format("DISKL {} of {}: bdyr (the arc's sagitta) is {}; it must be > 0", rank, owner,
+                           c.values[1].value));
+    }
     // Two elements on the same nodes: the mesh counts that matter twice (stiffness and mass).
     std::map<std::vector<std::int64_t>, std::size_t> seen;
     for (std::size_t k = 0; k < body.elements.size(); ++k) {

@@ -91,7 +91,7 @@ void fill_scene_input(const case_folder::CaseFiles& files, SceneInput& input) {
 // Two PT2DL points of a P2P2L row that coincide are glued (mod_P2P2L compute_contact: a fixed frame,
 // gap 0), which LMGC90 accepts only with COUPLED_DOF (or TEX_SOL, which lmgc does not run): it stops
 // on any other law. Tested on the initial configuration (reference nodes + DOF.INI's X), where the
-// run's first detection makes the pairs.
+// run's first detection makes the pairs (lmgc-check's L2018 tests the reference positions).
 bool glued_points_have_a_glue(const case_folder::CaseFiles& files, const Scene2D& scene,
                               grammar::DiagnosticSink& sink) {
   const std::vector<MeshContactor>& tactors = scene.deformable.meshes.contactors;
@@ -121,7 +121,7 @@ bool glued_points_have_a_glue(const case_folder::CaseFiles& files, const Scene2D
           if (see.law_nickname.value == v.law_nickname &&
               grammar::see_name(see.candidate_contactor.value) == "PT2DL")
             row_span = see.law_nickname.span;
-        sink.report("L4003", grammar::Location{datbox_path(files, "TACT_BEHAV.DAT"), row_span},
+        sink.report("L2018", grammar::Location{datbox_path(files, "TACT_BEHAV.DAT"), row_span},
                     "PT2DL " + std::to_string(a.rank) + " of MAILx " + std::to_string(a.mesh + 1) +
                         " and PT2DL " + std::to_string(b.rank) + " of MAILx " + std::to_string(b.mesh + 1) +
                         " coincide: a P2P2L pair of coinciding points is glued, and LMGC90 glues them "

@@ -222,7 +222,7 @@ TEST(MailxReferenceCases, PlusPt2dlLinesAreEachTheirOwnPoint) {
 }
 
 // Coinciding points of a P2P2L row are glued, which LMGC90 does only with COUPLED_DOF: another law is
-// refused before the run, naming the points and the law.
+// an error (L2018 at the row's law) before the run.
 TEST(MailxReferenceCases, CoincidingPointsWithAnotherLawThanCoupledDofAreRefused) {
   if (!fs::exists(tool_path("lmgc-run"))) GTEST_SKIP() << "this build has no Python module (lmgc-run)";
   const fs::path dir = scratch_dir("mailx_glued_points_iqs");
@@ -236,9 +236,27 @@ TEST(MailxReferenceCases, CoincidingPointsWithAnotherLawThanCoupledDofAreRefused
   std::ofstream(dir / "DATBOX" / "TACT_BEHAV.DAT") << tact;
   const ToolRun run = run_tool_both_streams("lmgc-run", "'" + dir.string() + "'");
   EXPECT_NE(run.exit_code, 0) << run.output;
-  EXPECT_NE(run.output.find("L4003"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("error[L2018]"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("TACT_BEHAV.DAT:6:23"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("only with COUPLED_DOF"), std::string::npos) << run.output;
   EXPECT_FALSE(fs::exists(dir / "OUTBOX" / "DOF.LAST"));
+}
+
+// A DISKL whose arc has no sagitta has no disk (LMGC90 divides by bdyr): lmgc-check's L3018 at the value.
+TEST(MailxReferenceCases, DisklWithoutSagittaIsADegenerateContactor) {
+  const fs::path dir = scratch_dir("mailx_disk_on_diskl_flat");
+  for (const char* entry : {"DATBOX", "command.py"})
+    fs::copy(fs::path(LMGC_SOURCE_DIR) / "reference_cases" / "mailx_disk_on_diskl" / entry, dir / entry,
+             fs::copy_options::recursive);
+  std::string bodies = read_file(dir / "DATBOX" / "BODIES.DAT");
+  const std::string arc = "bdyr= 0.4000000D-01";
+  ASSERT_NE(bodies.find(arc), std::string::npos);
+  bodies.replace(bodies.find(arc), arc.size(), "bdyr= 0.0000000D+00");
+  std::ofstream(dir / "DATBOX" / "BODIES.DAT") << bodies;
+  const ToolRun run = run_tool_both_streams("lmgc-check", "'" + dir.string() + "'");
+  EXPECT_NE(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("error[L3018]"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("bdyr (the arc's sagitta) is 0"), std::string::npos) << run.output;
 }
 
 // mailx_disk_on_diskl: a rigid disk landing and sliding on the DISKL arcs of an elastic block
