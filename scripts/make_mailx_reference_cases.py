@@ -519,6 +519,41 @@ def hertz_cylinder(folder):
                    "BULK_BEHAV.DAT": bulk, "DRV_DOF.DAT": driven, "TACT_BEHAV.DAT": tact}, text)
 
 
+# Cases also restarted from LMGC90's last files (DOF.LAST, Vloc_Rloc.LAST and a GPV.INI of their step)
+# for RESTART_STEPS more steps: the warm start reads their interactions and internals back.
+RESTARTED = ("mailx_mac_czm_blocks", "mailx_disk_on_diskl", "mailx_glued_points")
+RESTART_STEPS = 50
+
+
+def restart_folder(folder, reference, into):
+    """`folder`'s DATBOX and command.py in `into`, starting from `reference`'s DOF.LAST and
+    Vloc_Rloc.LAST, for RESTART_STEPS steps."""
+    shutil.rmtree(into, ignore_errors=True)
+    os.makedirs(into)
+    shutil.copytree(os.path.join(folder, "DATBOX"), os.path.join(into, "DATBOX"))
+    shutil.copy(os.path.join(reference, "DOF.LAST"), os.path.join(into, "DATBOX", "DOF.INI"))
+    shutil.copy(os.path.join(reference, "Vloc_Rloc.LAST"), os.path.join(into, "DATBOX", "Vloc_Rloc.INI"))
+    with open(os.path.join(reference, "DOF.LAST")) as f:
+        header = "".join(f.readlines()[:6]).replace("! DOF", "! GPV")
+    with open(os.path.join(into, "DATBOX", "GPV.INI"), "w") as f:
+        f.write(header)
+    with open(os.path.join(folder, "command.py")) as f:
+        text = f.read()
+    with open(os.path.join(into, "command.py"), "w") as f:
+        f.write("\n".join(f"nb_steps = {RESTART_STEPS}" if line.startswith("nb_steps = ") else line
+                          for line in text.split("\n")))
+
+
+def restart(work, reference, lmgc90):
+    into = work + "_restart"
+    restart_folder(work, reference, into)
+    subprocess.run([sys.executable, "command.py"], cwd=into, check=True, stdout=subprocess.DEVNULL,
+                   env=dict(os.environ, PYTHONPATH=lmgc90, OMP_NUM_THREADS="1"))
+    os.makedirs(os.path.join(reference, "restart"), exist_ok=True)
+    for f in ("DOF.LAST", "Vloc_Rloc.LAST"):
+        shutil.copy(os.path.join(into, "OUTBOX", f), os.path.join(reference, "restart", f))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--lmgc90", default=None, help="LMGC90's build folder (pylmgc90 inside)")
@@ -565,6 +600,9 @@ def main():
             if f.startswith(("Dep_", "Fint_")):
                 shutil.copy(os.path.join(work, "POSTPRO", f), reference)
         print(f"{name}: LMGC90's DOF.LAST and GPV.LAST stored in {reference}")
+        if name in RESTARTED:
+            restart(work, reference, args.lmgc90)
+
     return 0
 
 

@@ -113,11 +113,46 @@ namespace {
 // A case with contacts against LMGC90's files: DOF.LAST byte for byte (or within 1e-9 of its largest
 // value), Vloc_Rloc.LAST interaction for interaction (the same words and integers, every value within
 // the tolerance of the file's largest): the cases' README.md say why.
+void expect_contact_files_as(const fs::path& dir, const fs::path& reference, const std::string& name,
+                             const std::string& family, bool dof_bytes, double vloc_tolerance);
+
 void expect_lmgc90_contact_files(const std::string& name, const std::string& family, bool dof_bytes = true,
                                  double vloc_tolerance = 1e-9) {
   const fs::path dir = run_case(name);
   if (dir.empty()) GTEST_SKIP() << "this build has no Python module (lmgc-run)";
   const fs::path reference = fs::path(LMGC_SOURCE_DIR) / "reference_cases" / name / "lmgc90_reference";
+  expect_contact_files_as(dir, reference, name, family, dof_bytes, vloc_tolerance);
+}
+
+// The case restarted from LMGC90's last files (DOF.LAST, Vloc_Rloc.LAST as the INI files, a GPV.INI of
+// their step) for 50 steps, against LMGC90's own restart (lmgc90_reference/restart/,
+// scripts/make_mailx_reference_cases.py): the warm start reads the interactions and internals back.
+void expect_lmgc90_restart_files(const std::string& name, const std::string& family) {
+  if (!fs::exists(tool_path("lmgc-run"))) GTEST_SKIP() << "this build has no Python module (lmgc-run)";
+  const fs::path source = fs::path(LMGC_SOURCE_DIR) / "reference_cases" / name;
+  const fs::path reference = source / "lmgc90_reference";
+  const fs::path dir = scratch_dir(name + "_restart");
+  fs::copy(source / "DATBOX", dir / "DATBOX", fs::copy_options::recursive);
+  fs::copy_file(reference / "DOF.LAST", dir / "DATBOX" / "DOF.INI", fs::copy_options::overwrite_existing);
+  fs::copy_file(reference / "Vloc_Rloc.LAST", dir / "DATBOX" / "Vloc_Rloc.INI",
+                fs::copy_options::overwrite_existing);
+  std::istringstream dof(read_file(reference / "DOF.LAST"));
+  std::string header, line;
+  for (int k = 0; k < 6 && std::getline(dof, line); ++k) header += line + "\n";
+  header.replace(header.find("! DOF"), 5, "! GPV");
+  std::ofstream(dir / "DATBOX" / "GPV.INI") << header;
+  std::istringstream script(read_file(source / "command.py"));
+  std::string text;
+  while (std::getline(script, line))
+    text += (line.rfind("nb_steps = ", 0) == 0 ? "nb_steps = 50" : line) + "\n";
+  std::ofstream(dir / "command.py") << text;
+  const ToolRun run = run_tool_both_streams("lmgc-run", "'" + dir.string() + "' --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  expect_contact_files_as(dir, reference / "restart", name, family, true, 1e-9);
+}
+
+void expect_contact_files_as(const fs::path& dir, const fs::path& reference, const std::string& name,
+                             const std::string& family, bool dof_bytes, double vloc_tolerance) {
   if (dof_bytes) {
     EXPECT_TRUE(read_file(dir / "OUTBOX" / "DOF.LAST") == read_file(reference / "DOF.LAST")) << name;
   } else {
@@ -240,6 +275,16 @@ TEST(MailxReferenceCases, CoincidingPointsWithAnotherLawThanCoupledDofAreRefused
   EXPECT_NE(run.output.find("TACT_BEHAV.DAT:6:23"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("only with COUPLED_DOF"), std::string::npos) << run.output;
   EXPECT_FALSE(fs::exists(dir / "OUTBOX" / "DOF.LAST"));
+}
+
+TEST(MailxReferenceCases, MacCzmBlocksRestartFromLmgc90sFilesAsLmgc90Does) {
+  expect_lmgc90_restart_files("mailx_mac_czm_blocks", "CLALp");
+}
+TEST(MailxReferenceCases, GluedPointsRestartFromLmgc90sFilesAsLmgc90Does) {
+  expect_lmgc90_restart_files("mailx_glued_points", "P2P2L");
+}
+TEST(MailxReferenceCases, DiskOnDisklRestartsFromLmgc90sFilesAsLmgc90Does) {
+  expect_lmgc90_restart_files("mailx_disk_on_diskl", "DKDKL");
 }
 
 // A DISKL whose arc has no sagitta has no disk (LMGC90 divides by bdyr): lmgc-check's L3018 at the value.
