@@ -6,7 +6,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
 #include <span>
 #include <unordered_map>
 #include <unordered_set>
@@ -347,51 +346,6 @@ void check_models_and_behaviours(const CaseFiles& files, grammar::DiagnosticSink
   }
 }
 
-// L2018 on a P2P2L row: two of its PT2DL points that coincide are glued (a fixed frame, gap 0), which
-// LMGC90 does only under COUPLED_DOF or TEX_SOL; under another law compute_contact_P2P2L stops.
-// Tested on the points' reference positions.
-void check_glued_points(const CaseFiles& files, const grammar::SeeEntry& see, const grammar::TactLaw& law,
-                        grammar::DiagnosticSink& sink) {
-  struct Point {
-    std::string colour;
-    std::array<double, 2> at;
-    grammar::SourceSpan span;
-  };
-  std::vector<Point> points;
-  for (const auto& body : files.bodies->bodies) {
-    if (body.type != grammar::BodyType::mailx) continue;
-    const auto node = [&](std::int64_t n, std::size_t k) {
-      if (n < 1 || static_cast<std::size_t>(n) > body.nodes.size()) return 0.0;
-      const auto& c = body.nodes[static_cast<std::size_t>(n - 1)].coordinates;
-      return k < c.size() ? c[k].value : 0.0;
-    };
-    for (const auto& c : body.contactors) {
-      if (c.type.value != "PT2DL" || c.nodes.size() < 2 || c.values.empty()) continue;
-      const double apab = c.values[0].value;
-      Point p{c.color.value, {}, c.type.span};
-      for (std::size_t k = 0; k < 2; ++k)
-        p.at[k] = (1.0 - apab) * node(c.nodes[0].value, k) + apab * node(c.nodes[1].value, k);
-      points.push_back(std::move(p));
-    }
-  }
-  const std::string& cd = see.candidate_colour.value;
-  const std::string& an = see.antagonist_colour.value;
-  for (std::size_t i = 0; i < points.size(); ++i)
-    for (std::size_t j = i + 1; j < points.size(); ++j) {
-      const Point &a = points[i], &b = points[j];
-      if (!((a.colour == cd && b.colour == an) || (a.colour == an && b.colour == cd))) continue;
-      if (std::hypot(a.at[0] - b.at[0], a.at[1] - b.at[1]) >= 1e-20) continue;
-      report_related(sink, "L2018", Location{datbox_path(files, "TACT_BEHAV.DAT"), see.law_nickname.span},
-                     fmt::format("law '{}' ({}) on P2P2L points that coincide: such points are glued, "
-                                 "which LMGC90 does only with COUPLED_DOF (compute_contact_P2P2L stops)",
-                                 law.nickname.value, law.keyword.value),
-                     {{Location{datbox_path(files, "BODIES.DAT"), a.span}, "this PT2DL"},
-                      {Location{datbox_path(files, "BODIES.DAT"), b.span}, "and this one are at one place"}},
-                     "use COUPLED_DOF for glued points");
-      return;
-    }
-}
-
 // L2018: the law of a visibility row must exist in the case's dimension and serve the row's
 // interaction family.
 void check_law_families(const CaseFiles& files, grammar::DiagnosticSink& sink) {
@@ -425,9 +379,8 @@ void check_law_families(const CaseFiles& files, grammar::DiagnosticSink& sink) {
     const InteractionFamily* family =
         find_interaction_family(see.candidate_contactor.value, see.antagonist_contactor.value);
     if (!family) continue;  // L2014
-    if (family->interaction == "P2P2L" && law.keyword.value != "COUPLED_DOF" &&
-        law.keyword.value != "TEX_SOL")
-      check_glued_points(files, see, law, sink);
+    // P2P2L points that coincide under another law than COUPLED_DOF: the solver's L2018
+    // (case_input.cpp glued_points_have_a_glue), which lmgc-check reports too.
     for (const LawFamilies& rule : kLawFamilies) {
       if (rule.law != law.keyword.value || rule.dimension != dimension) continue;
       if (std::find(rule.families.begin(), rule.families.end(), family->interaction) != rule.families.end())

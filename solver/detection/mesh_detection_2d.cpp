@@ -99,6 +99,12 @@ double candidate_point_length(const Scene2D& scene, const MeshContactor& cl, con
   return length;
 }
 
+// A rigid disk's centre: its body's position q plus its offset turned by the body's angle.
+Vector2d disk_centre(const Contactor2D& dk, const Vector3d& q) {
+  const double cs = std::cos(q.z()), sn = std::sin(q.z());
+  return q.head<2>() + Vector2d(cs * dk.shift.x() - sn * dk.shift.y(), sn * dk.shift.x() + cs * dk.shift.y());
+}
+
 }  // namespace
 
 VectorXd mesh_detection_coordinates(const Scene2D& scene, std::size_t mesh, double theta, double h) {
@@ -147,13 +153,7 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
   const auto side_velocity_begin = [&](const Interaction2D& c, int side) {
     if (side_on_mesh(c.family, side)) {
       const MeshSideRows rows = mesh_side_rows(scene, c, side);
-      const VectorXd& v = d.states[static_cast<std::size_t>(rows.side.mesh)].v_begin;
-      Vector2d u = Vector2d::Zero();
-      for (std::size_t k = 0; k < 2; ++k)
-        for (std::size_t e = 0; e < 4; ++e)
-          u(static_cast<Eigen::Index>(k)) +=
-              rows.velocity[k][e] * v(2 * rows.side.nodes[e / 2] + static_cast<Eigen::Index>(e % 2));
-      return u;
+      return mesh_side_local_velocity(rows, d.states[static_cast<std::size_t>(rows.side.mesh)].v_begin);
     }
     const Vector3d& v =
         b.velocity_begin[static_cast<std::size_t>(side == 0 ? c.candidate_body : c.antagonist_body)];
@@ -473,9 +473,7 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
       const Contactor2D& dk = scene.contactors[k];
       if (dk.shape != ContactorShape2D::disk || !b.visible[static_cast<std::size_t>(dk.body)]) continue;
       const Vector3d& q = body_coordinates[static_cast<std::size_t>(dk.body)];
-      const double cs = std::cos(q.z()), sn = std::sin(q.z());
-      const Vector2d centre = q.head<2>() + Vector2d(cs * dk.shift.x() - sn * dk.shift.y(),
-                                                     sn * dk.shift.x() + cs * dk.shift.y());
+      const Vector2d centre = disk_centre(dk, q);
       for (std::size_t ial = 0; ial < tactors.size(); ++ial) {
         const MeshContactor& al = tactors[ial];
         if (al.shape != MeshContactorShape::polyline) continue;
@@ -535,9 +533,7 @@ void detect_mesh_contacts_2d(const Scene2D& scene, std::span<const Vector3d> bod
       const Contactor2D& dk = scene.contactors[k];
       if (dk.shape != ContactorShape2D::disk || !b.visible[static_cast<std::size_t>(dk.body)]) continue;
       const Vector3d& q = body_coordinates[static_cast<std::size_t>(dk.body)];
-      const double cs = std::cos(q.z()), sn = std::sin(q.z());
-      const Vector2d centre = q.head<2>() + Vector2d(cs * dk.shift.x() - sn * dk.shift.y(),
-                                                     sn * dk.shift.x() + cs * dk.shift.y());
+      const Vector2d centre = disk_centre(dk, q);
       for (std::size_t l = 0; l < tactors.size(); ++l) {
         const MeshContactor& dl = tactors[l];
         if (dl.shape != MeshContactorShape::disk) continue;

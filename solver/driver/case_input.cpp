@@ -91,7 +91,7 @@ void fill_scene_input(const case_folder::CaseFiles& files, SceneInput& input) {
 // Two PT2DL points of a P2P2L row that coincide are glued (mod_P2P2L compute_contact: a fixed frame,
 // gap 0), which LMGC90 accepts only with COUPLED_DOF (or TEX_SOL, which lmgc does not run): it stops
 // on any other law. Tested on the initial configuration (reference nodes + DOF.INI's X), where the
-// run's first detection makes the pairs (lmgc-check's L2018 tests the reference positions).
+// run's first detection makes the pairs. lmgc-check reports it too (report_solver_support).
 bool glued_points_have_a_glue(const case_folder::CaseFiles& files, const Scene2D& scene,
                               grammar::DiagnosticSink& sink) {
   const std::vector<MeshContactor>& tactors = scene.deformable.meshes.contactors;
@@ -237,7 +237,9 @@ void report_solver_support(const case_folder::CaseFiles& files, grammar::Diagnos
   }
   for (const grammar::Diagnostic& d : scratch.items())
     // L3011: an element the validation does not examine (T6, Q8, H8) inverted at a Gauss point.
-    if (d.code == "L4001" || d.code == "L4002" || d.code == "L4003" || d.code == "L4004" || d.code == "L3011")
+    // L2018: P2P2L points that coincide under another law than COUPLED_DOF (glued_points_have_a_glue).
+    if (d.code == "L4001" || d.code == "L4002" || d.code == "L4003" || d.code == "L4004" ||
+        d.code == "L3011" || d.code == "L2018")
       sink.report(d);
 }
 

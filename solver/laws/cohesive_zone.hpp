@@ -23,20 +23,23 @@ inline double gap_cohesive_length(const Interaction2D& c) {
   return c.family == PairFamily2D::CLALp || c.family == PairFamily2D::CLJCx ? c.length : 0.35;
 }
 
-// The 2D local problem of damage β (iter_CZM): while β > tol the linear traction −L s(β) h C δ_end
-// as an impulse, s(β) = β² (MAC) or β (MAL), δ_end = δ_begin + h uu (the normal δ_begin is folded
-// into uu by the normal free velocity); friction × (1 − β) either way (get_fric_CZM, power 1).
-// internal[5] holds the β in use (LMGC90's taz(1)).
-inline void use_damage(LocalProblem2D& c, double beta, double stiffness_of_beta, double cn, double ct,
-                       double dfric, double sfric, double h) {
+// A 2D cohesive-zone law (MAC_CZM, IQS_MAC_CZM, MAL_CZM) has dfric, sfric, cn, ct, its traction's
+// factor `stiffness(β)` (β² for MAC's, β for MAL's) and its updt_CZM `damage(internal, u, h, taz)`,
+// which updates the working β taz from the jumps δ + h u.
+//
+// The local problem of damage β (iter_CZM): while β > tol the linear traction −L s(β) h C δ_end as an
+// impulse, δ_end = δ_begin + h uu (the normal δ_begin is folded into uu by the normal free velocity);
+// friction × (1 − β) either way (get_fric_CZM, power 1). internal[5] holds the β in use (LMGC90's
+// taz(1)).
+template <class Law>
+void use_damage(const Law& law, LocalProblem2D& c, double beta, double h) {
   c.internal[5] = beta;
-  c.mu = (is_sliding(c.status_begin) ? dfric : sfric) * (1.0 - beta);
+  c.mu = (is_sliding(c.status_begin) ? law.dfric : law.sfric) * (1.0 - beta);
   c.cohesive = beta > kCohesiveBetaTolerance;
   if (c.cohesive) {
-    const double length = c.internal[0];
-    c.cohesive_slope =
-        Eigen::Vector2d(-length * stiffness_of_beta * h * h * ct, -length * stiffness_of_beta * h * h * cn);
-    c.cohesive_shift_t = -length * stiffness_of_beta * h * ct * c.internal[1];
+    const double length = c.internal[0], s = law.stiffness(beta);
+    c.cohesive_slope = Eigen::Vector2d(-length * s * h * h * law.ct, -length * s * h * h * law.cn);
+    c.cohesive_shift_t = -length * s * h * law.ct * c.internal[1];
   } else {
     c.cohesive_slope.setZero();
     c.cohesive_shift_t = 0.0;
@@ -87,23 +90,47 @@ inline void mal_damage(double cn, double ct, double s1, double s2, double g1, do
   }
 }
 
-// The run's first preparation with interactions (mod_nlgs prep): nknow becomes Cnnow, and init_CZM
-// makes the interface sound (β = 1) if that is step 1; any other contact keeps its internals (β = 0
-// for one created later: broken from the start).
-inline void start_damage(LocalProblem2D& c, const LawStep& step) {
-  if (!step.first_preparation) return;
-  if (step.first_step) c.internal = {0.0, 0.0, 0.0, 1.0, -99.0, 0.0};
-  if (c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Cnnow;
+// The step's local problem (mod_nlgs prep_nlgs). At the run's first preparation with interactions
+// nknow becomes Cnnow, and init_CZM makes the interface sound (β = 1) if that is step 1; any other
+// contact keeps its internals (β = 0 for one created later: broken from the start). Then L, and the
+// normal part: IQS ((γ)+/h, δn = (γ)+) or, with `gap_normal`, GAP (γ/h, δn = γ, which may be < 0).
+template <class Law>
+void prepare_cohesive_zone(const Law& law, LocalProblem2D& c, const LawStep& step, double length,
+                           bool gap_normal) {
+  if (step.first_preparation) {
+    if (step.first_step) c.internal = {0.0, 0.0, 0.0, 1.0, -99.0, 0.0};
+    if (c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Cnnow;
+  }
+  c.internal[0] = length;
+  if (gap_normal) {
+    c.internal[2] = c.gap_begin;
+    gap_form(c, step.h);
+  } else {
+    c.internal[2] = positive(c.gap_begin);
+    iqs_form(c, step.h);
+  }
+  use_damage(law, c, c.internal[3], step.h);
+}
+
+// β evaluated again at each convergence check (updt_CZM(.false.) at i_check in mod_nlgs) from the
+// check's velocity; the sweeps after it use it. True when the local problem changed.
+template <class Law>
+bool update_cohesive_zone(const Law& law, LocalProblem2D& c, const Eigen::Vector2d& u, const LawStep& step) {
+  double beta = c.internal[5];
+  law.damage(c.internal, u, step.h, beta);
+  if (beta == c.internal[5]) return false;
+  use_damage(law, c, beta, step.h);
+  return true;
 }
 
 // End of step (updt_CZM with store): the working β from the final velocity, the jumps δ += h u,
-// TPSini at first damage. `damage(taz)` updates the working β as the law's updt_CZM does.
-template <class Damage>
-void store_damage(LawState2D& s, const Eigen::Vector2d& u, const LawStep& step, Damage damage) {
+// TPSini at first damage.
+template <class Law>
+void finish_cohesive_zone(const Law& law, const Interaction2D& c, LawState2D& s, const LawStep& step) {
   double taz = s.internal[5];
-  damage(taz);
-  s.internal[1] += step.h * u(0);
-  s.internal[2] += step.h * u(1);
+  law.damage(s.internal, c.u, step.h, taz);
+  s.internal[1] += step.h * c.u(0);
+  s.internal[2] += step.h * c.u(1);
   s.internal[3] = taz;
   s.internal[5] = 0.0;
   if (s.internal[3] < 1.0 && s.internal[4] < 0.0) s.internal[4] = step.time;

@@ -19,19 +19,10 @@ struct GapMohrDsClb {
 };
 
 inline void prepare(const GapMohrDsClb& law, LocalProblem2D& c, const LawStep& step) {
-  if (step.first_step && c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Mstck;
-  gap_form(c, step.h);
-  if (c.status_begin == ContactStatus::Mstck) {
-    add_cohesion(c, law.cohen * c.length, step.h);
-    c.mu = law.cohesive_friction();
-  } else {
-    c.mu = static_dynamic(law.dfric, law.sfric, c.status_begin);
-  }
+  prepare_mohr(law, c, step, c.length, true);
 }
-
 inline void finish(const GapMohrDsClb&, Interaction2D& c, const LawStep&) {
-  if (c.status_begin == ContactStatus::Mstck && c.status == ContactStatus::stick)
-    c.status = ContactStatus::Mstck;
+  keep_mohr_bond(c);
 }
 
 }  // namespace lmgc::solver

@@ -3,7 +3,7 @@
 // γ ≤ Wethk with a GAP normal part; outside the halo the status is left as it was (IQS_WET_DS_CLB
 // forces noctc). Internal (2D): L, the CLxxx point's length on CLALp and CLJCx, 0 on other pairs
 // (mod_nlgs prep_nlgs, its GAP_WET_DS_CLB case). 2D.
-#include "solver/laws/law_forms.hpp"
+#include "solver/laws/iqs_wet_ds_clb.hpp"
 
 namespace lmgc::solver {
 
@@ -20,12 +20,7 @@ struct GapWetDsClb {
 };
 
 inline void prepare(const GapWetDsClb& law, LocalProblem2D& c, const LawStep& step) {
-  gap_form(c, step.h);
-  if (c.gap_begin <= law.wethk) {
-    c.status_begin = wet_status(c.status_begin);
-    add_cohesion(c, law.cohen, step.h);
-  }
-  c.mu = static_dynamic(law.dfric, law.sfric, c.status_begin);
+  prepare_wet(law, c, step, true);
 }
 
 // The end status in its W form while the step began wet (mod_nlgs solve_nlgs, the WET laws' case):

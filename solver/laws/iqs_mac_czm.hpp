@@ -15,32 +15,22 @@ struct IqsMacCzm {
   static constexpr LawParameter<IqsMacCzm> parameters[] = {
       {"dfric", &IqsMacCzm::dfric}, {"sfric", &IqsMacCzm::sfric}, {"cn", &IqsMacCzm::cn},
       {"ct", &IqsMacCzm::ct},       {"visco", &IqsMacCzm::visco}, {"dupre", &IqsMacCzm::dupre}};
+  static double stiffness(double beta) { return beta * beta; }
+  void damage(const std::array<double, 6>& internal, const Eigen::Vector2d& u, double h, double& taz) const {
+    mac_damage(cn, ct, visco, dupre, internal, u, h, taz);
+  }
 };
 
 // 2D (cohesive_zone.hpp): β² C, the IQS normal part; L the pair's contact length.
 inline void prepare(const IqsMacCzm& law, LocalProblem2D& c, const LawStep& step) {
-  start_damage(c, step);
-  c.internal[0] = iqs_cohesive_length(c);
-  c.internal[2] = positive(c.gap_begin);
-  iqs_form(c, step.h);
-  use_damage(c, c.internal[3], c.internal[3] * c.internal[3], law.cn, law.ct, law.dfric, law.sfric, step.h);
+  prepare_cohesive_zone(law, c, step, iqs_cohesive_length(c), false);
 }
-
-// As in 3D: β evaluated again at each convergence check (updt_CZM(.false.) at i_check in mod_nlgs)
-// from the check's velocity; the sweeps after it use it. True when the local problem changed.
 inline bool update_at_check(const IqsMacCzm& law, LocalProblem2D& c, const Eigen::Vector2d& u,
                             const LawStep& step) {
-  double beta = c.internal[5];
-  mac_damage(law.cn, law.ct, law.visco, law.dupre, c.internal, u, step.h, beta);
-  if (beta == c.internal[5]) return false;
-  use_damage(c, beta, beta * beta, law.cn, law.ct, law.dfric, law.sfric, step.h);
-  return true;
+  return update_cohesive_zone(law, c, u, step);
 }
-
 inline void finish(const IqsMacCzm& law, Interaction2D& c, LawState2D& s, const LawStep& step) {
-  store_damage(s, c.u, step, [&](double& taz) {
-    mac_damage(law.cn, law.ct, law.visco, law.dupre, s.internal, c.u, step.h, taz);
-  });
+  finish_cohesive_zone(law, c, s, step);
 }
 
 // 3D: the local problem of damage β (iter_CZM_3D :4509-4560, get_fric_CZM :5858-5898): while

@@ -20,16 +20,33 @@ struct IqsMohrDsClb {
   double cohesive_friction() const { return cohen > 0.0 ? cohet / cohen : sfric; }
 };
 
-inline void prepare(const IqsMohrDsClb& law, LocalProblem2D& c, const LawStep& step) {
-  // Cohesive only for the contacts of step 1 (mod_nlgs prep: `Nstep == 1 .and. nknow`).
+// 2D, IQS_MOHR_DS_CLB and GAP_MOHR_DS_CLB (cohen, cohet, dfric, sfric, cohesive_friction): cohesive
+// only for the contacts of step 1 (mod_nlgs prep: `Nstep == 1 .and. nknow`), with cohesion cohen × L;
+// the normal part IQS or, with `gap_normal`, GAP.
+template <class Law>
+void prepare_mohr(const Law& law, LocalProblem2D& c, const LawStep& step, double length, bool gap_normal) {
   if (step.first_step && c.status_begin == ContactStatus::nknow) c.status_begin = ContactStatus::Mstck;
-  iqs_form(c, step.h);
+  if (gap_normal)
+    gap_form(c, step.h);
+  else
+    iqs_form(c, step.h);
   if (c.status_begin == ContactStatus::Mstck) {
-    add_cohesion(c, law.cohen * iqs_cohesive_length(c), step.h);
+    add_cohesion(c, law.cohen * length, step.h);
     c.mu = law.cohesive_friction();
   } else {
     c.mu = static_dynamic(law.dfric, law.sfric, c.status_begin);
   }
+}
+
+// The cohesion survives only while the contact sticks.
+template <class Interaction>
+void keep_mohr_bond(Interaction& c) {
+  if (c.status_begin == ContactStatus::Mstck && c.status == ContactStatus::stick)
+    c.status = ContactStatus::Mstck;
+}
+
+inline void prepare(const IqsMohrDsClb& law, LocalProblem2D& c, const LawStep& step) {
+  prepare_mohr(law, c, step, iqs_cohesive_length(c), false);
 }
 
 inline void prepare(const IqsMohrDsClb& law, Interaction3D& c, const LawState3D& s, const LawStep& step) {
@@ -44,11 +61,9 @@ inline void prepare(const IqsMohrDsClb& law, Interaction3D& c, const LawState3D&
   }
 }
 
-// The cohesion survives only while the contact sticks.
 template <class Interaction>
 void finish(const IqsMohrDsClb&, Interaction& c, const LawStep&) {
-  if (c.status_begin == ContactStatus::Mstck && c.status == ContactStatus::stick)
-    c.status = ContactStatus::Mstck;
+  keep_mohr_bond(c);
 }
 
 }  // namespace lmgc::solver

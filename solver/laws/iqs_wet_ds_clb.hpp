@@ -17,15 +17,26 @@ struct IqsWetDsClb {
                                                              {"sfric", &IqsWetDsClb::sfric}};
 };
 
-inline void prepare(const IqsWetDsClb& law, LocalProblem2D& c, const LawStep& step) {
-  iqs_form(c, step.h);
+// 2D, IQS_WET_DS_CLB and GAP_WET_DS_CLB (cohen, wethk, dfric, sfric): inside the halo the status in
+// its W form and the cohesion cohen; outside it, IQS_WET_DS_CLB's status is noctc and GAP_WET_DS_CLB's
+// is left as it was; the normal part IQS or, with `gap_normal`, GAP.
+template <class Law>
+void prepare_wet(const Law& law, LocalProblem2D& c, const LawStep& step, bool gap_normal) {
+  if (gap_normal)
+    gap_form(c, step.h);
+  else
+    iqs_form(c, step.h);
   if (c.gap_begin <= law.wethk) {
     c.status_begin = wet_status(c.status_begin);
     add_cohesion(c, law.cohen, step.h);
-  } else {
+  } else if (!gap_normal) {
     c.status_begin = ContactStatus::noctc;
   }
   c.mu = static_dynamic(law.dfric, law.sfric, c.status_begin);
+}
+
+inline void prepare(const IqsWetDsClb& law, LocalProblem2D& c, const LawStep& step) {
+  prepare_wet(law, c, step, false);
 }
 
 inline void prepare(const IqsWetDsClb& law, Interaction3D& c, const LawStep& step) {

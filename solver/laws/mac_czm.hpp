@@ -15,29 +15,21 @@ struct MacCzm {
   static constexpr LawParameter<MacCzm> parameters[] = {{"dfric", &MacCzm::dfric}, {"sfric", &MacCzm::sfric},
                                                         {"cn", &MacCzm::cn},       {"ct", &MacCzm::ct},
                                                         {"visco", &MacCzm::visco}, {"dupre", &MacCzm::dupre}};
+  static double stiffness(double beta) { return beta * beta; }
+  void damage(const std::array<double, 6>& internal, const Eigen::Vector2d& u, double h, double& taz) const {
+    mac_damage(cn, ct, visco, dupre, internal, u, h, taz);
+  }
 };
 
 inline void prepare(const MacCzm& law, LocalProblem2D& c, const LawStep& step) {
-  start_damage(c, step);
-  c.internal[0] = gap_cohesive_length(c);
-  c.internal[2] = c.gap_begin;
-  gap_form(c, step.h);
-  use_damage(c, c.internal[3], c.internal[3] * c.internal[3], law.cn, law.ct, law.dfric, law.sfric, step.h);
+  prepare_cohesive_zone(law, c, step, gap_cohesive_length(c), true);
 }
-
 inline bool update_at_check(const MacCzm& law, LocalProblem2D& c, const Eigen::Vector2d& u,
                             const LawStep& step) {
-  double beta = c.internal[5];
-  mac_damage(law.cn, law.ct, law.visco, law.dupre, c.internal, u, step.h, beta);
-  if (beta == c.internal[5]) return false;
-  use_damage(c, beta, beta * beta, law.cn, law.ct, law.dfric, law.sfric, step.h);
-  return true;
+  return update_cohesive_zone(law, c, u, step);
 }
-
 inline void finish(const MacCzm& law, Interaction2D& c, LawState2D& s, const LawStep& step) {
-  store_damage(s, c.u, step, [&](double& taz) {
-    mac_damage(law.cn, law.ct, law.visco, law.dupre, s.internal, c.u, step.h, taz);
-  });
+  finish_cohesive_zone(law, c, s, step);
 }
 
 }  // namespace lmgc::solver

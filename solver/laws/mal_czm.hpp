@@ -16,30 +16,21 @@ struct MalCzm {
   static constexpr LawParameter<MalCzm> parameters[] = {
       {"dfric", &MalCzm::dfric}, {"sfric", &MalCzm::sfric}, {"cn", &MalCzm::cn}, {"ct", &MalCzm::ct},
       {"S1", &MalCzm::s1},       {"S2", &MalCzm::s2},       {"G1", &MalCzm::g1}, {"G2", &MalCzm::g2}};
+  static double stiffness(double beta) { return beta; }
   void damage(const std::array<double, 6>& internal, const Eigen::Vector2d& u, double h, double& taz) const {
     mal_damage(cn, ct, s1, s2, g1, g2, internal, u, h, taz);
   }
 };
 
 inline void prepare(const MalCzm& law, LocalProblem2D& c, const LawStep& step) {
-  start_damage(c, step);
-  c.internal[0] = gap_cohesive_length(c);
-  c.internal[2] = c.gap_begin;
-  gap_form(c, step.h);
-  use_damage(c, c.internal[3], c.internal[3], law.cn, law.ct, law.dfric, law.sfric, step.h);
+  prepare_cohesive_zone(law, c, step, gap_cohesive_length(c), true);
 }
-
 inline bool update_at_check(const MalCzm& law, LocalProblem2D& c, const Eigen::Vector2d& u,
                             const LawStep& step) {
-  double beta = c.internal[5];
-  law.damage(c.internal, u, step.h, beta);
-  if (beta == c.internal[5]) return false;
-  use_damage(c, beta, beta, law.cn, law.ct, law.dfric, law.sfric, step.h);
-  return true;
+  return update_cohesive_zone(law, c, u, step);
 }
-
 inline void finish(const MalCzm& law, Interaction2D& c, LawState2D& s, const LawStep& step) {
-  store_damage(s, c.u, step, [&](double& taz) { law.damage(s.internal, c.u, step.h, taz); });
+  finish_cohesive_zone(law, c, s, step);
 }
 
 }  // namespace lmgc::solver

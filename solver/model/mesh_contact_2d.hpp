@@ -110,19 +110,14 @@ inline MeshSideRows mesh_side_rows(const Scene2D& scene, const Interaction2D& c,
   return rows;
 }
 
-// The velocity of a mesh side's point from the nodal velocities v (node × 2 + component).
-inline Eigen::Vector2d mesh_side_velocity(const MeshSide2D& s, const Eigen::VectorXd& v) {
-  const auto a = static_cast<Eigen::Index>(2 * s.nodes[0]), b = static_cast<Eigen::Index>(2 * s.nodes[1]);
-  return s.weights(0) * Eigen::Vector2d(v(a), v(a + 1)) + s.weights(1) * Eigen::Vector2d(v(b), v(b + 1));
-}
-
-// Adds the force f at a mesh side's point to the nodal vector `impulse`, by the weights.
-inline void add_to_mesh_side(const MeshSide2D& s, const Eigen::Vector2d& f, Eigen::VectorXd& impulse) {
-  for (int k = 0; k < 2; ++k) {
-    const auto i = static_cast<Eigen::Index>(2 * s.nodes[static_cast<std::size_t>(k)]);
-    impulse(i) += s.weights(k) * f.x();
-    impulse(i + 1) += s.weights(k) * f.y();
-  }
+// The side's local (t, n) velocity from its mesh's nodal velocities v (node × 2 + component).
+inline Eigen::Vector2d mesh_side_local_velocity(const MeshSideRows& rows, const Eigen::VectorXd& v) {
+  Eigen::Vector2d u = Eigen::Vector2d::Zero();
+  for (std::size_t k = 0; k < 2; ++k)
+    for (std::size_t e = 0; e < 4; ++e)
+      u(static_cast<Eigen::Index>(k)) +=
+          rows.velocity[k][e] * v(2 * rows.side.nodes[e / 2] + static_cast<Eigen::Index>(e % 2));
+  return u;
 }
 
 }  // namespace lmgc::solver

@@ -161,28 +161,28 @@ void add_mesh_contactor(Scene2D& scene, MeshContactor c) {
   }
   all.push_back(std::move(c));
 }
+
+// A contactor at apab from a on the edge (a, b) of a mesh: CLxxx or PT2DL.
+MeshContactor edge_point(MeshContactorShape shape, const char* type, int mesh, int a, int b, double apab,
+                         const std::string& color) {
+  MeshContactor c;
+  c.shape = shape;
+  c.type = type;
+  c.color = color;
+  c.mesh = mesh;
+  c.nodes = {a, b};
+  c.apab = apab;
+  return c;
+}
 }  // namespace
 
 void SceneBuilder2D::add_candidate_point(int mesh, int a, int b, double apab, const std::string& color) {
-  MeshContactor c;
-  c.shape = MeshContactorShape::candidate_point;
-  c.type = "CLxxx";
-  c.color = color;
-  c.mesh = mesh;
-  c.nodes = {a, b};
-  c.apab = apab;
-  add_mesh_contactor(scene_, std::move(c));
+  add_mesh_contactor(scene_,
+                     edge_point(MeshContactorShape::candidate_point, "CLxxx", mesh, a, b, apab, color));
 }
 
 void SceneBuilder2D::add_point(int mesh, int a, int b, double apab, const std::string& color) {
-  MeshContactor c;
-  c.shape = MeshContactorShape::point;
-  c.type = "PT2DL";
-  c.color = color;
-  c.mesh = mesh;
-  c.nodes = {a, b};
-  c.apab = apab;
-  add_mesh_contactor(scene_, std::move(c));
+  add_mesh_contactor(scene_, edge_point(MeshContactorShape::point, "PT2DL", mesh, a, b, apab, color));
 }
 
 void SceneBuilder2D::add_polyline(int mesh, const std::vector<int>& nodes, const std::string& color) {

@@ -140,9 +140,9 @@ Vector2d velocity_from_bodies(const Scene2D& scene, const Interaction2D& c) {
   Vector2d side_velocity[2];
   for (int side = 0; side < 2; ++side) {
     if (side_on_mesh(c.family, side)) {
-      const MeshSide2D m = mesh_side(scene, c, side);
-      const Vector2d v = mesh_side_velocity(m, scene.deformable.states[static_cast<std::size_t>(m.mesh)].v);
-      side_velocity[side] = Vector2d(v.dot(c.tangent()), v.dot(c.normal));
+      const MeshSideRows rows = mesh_side_rows(scene, c, side);
+      side_velocity[side] =
+          mesh_side_local_velocity(rows, scene.deformable.states[static_cast<std::size_t>(rows.side.mesh)].v);
     } else {
       const Vector3d& v =
           scene.bodies.velocity[static_cast<std::size_t>(side == 0 ? c.candidate_body : c.antagonist_body)];

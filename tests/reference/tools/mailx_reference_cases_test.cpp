@@ -19,6 +19,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// reference_cases/<name>'s DATBOX and command.py in scratch_dir(tag), to edit before a run.
+fs::path copied_case(const std::string& name, const std::string& tag) {
+  const fs::path dir = scratch_dir(tag);
+  for (const char* entry : {"DATBOX", "command.py"})
+    fs::copy(fs::path(LMGC_SOURCE_DIR) / "reference_cases" / name / entry, dir / entry,
+             fs::copy_options::recursive);
+  return dir;
+}
+
 fs::path run_case(const std::string& name) {
   return run_reference_case(name, "mailx_" + name);
 }
@@ -232,10 +241,7 @@ TEST(MailxReferenceCases, BlocksGluedNodeToNodeWriteLmgc90sFiles) {
 TEST(MailxReferenceCases, PlusPt2dlLinesAreEachTheirOwnPoint) {
   const fs::path dir = run_reference_case("mailx_glued_points", "mailx_glued_points_plain");
   if (dir.empty()) GTEST_SKIP() << "this build has no Python module (lmgc-run)";
-  const fs::path plus = scratch_dir("mailx_glued_points_plus");
-  for (const char* entry : {"DATBOX", "command.py"})
-    fs::copy(fs::path(LMGC_SOURCE_DIR) / "reference_cases" / "mailx_glued_points" / entry, plus / entry,
-             fs::copy_options::recursive);
+  const fs::path plus = copied_case("mailx_glued_points", "mailx_glued_points_plus");
   std::istringstream in(read_file(plus / "DATBOX" / "BODIES.DAT"));
   std::string bodies, line;
   bool first_of_body = true;
@@ -260,10 +266,7 @@ TEST(MailxReferenceCases, PlusPt2dlLinesAreEachTheirOwnPoint) {
 // an error (L2018 at the row's law) before the run.
 TEST(MailxReferenceCases, CoincidingPointsWithAnotherLawThanCoupledDofAreRefused) {
   if (!fs::exists(tool_path("lmgc-run"))) GTEST_SKIP() << "this build has no Python module (lmgc-run)";
-  const fs::path dir = scratch_dir("mailx_glued_points_iqs");
-  for (const char* entry : {"DATBOX", "command.py"})
-    fs::copy(fs::path(LMGC_SOURCE_DIR) / "reference_cases" / "mailx_glued_points" / entry, dir / entry,
-             fs::copy_options::recursive);
+  const fs::path dir = copied_case("mailx_glued_points", "mailx_glued_points_iqs");
   std::string tact = read_file(dir / "DATBOX" / "TACT_BEHAV.DAT");
   const std::string glue = " glued  COUPLED_DOF";
   ASSERT_NE(tact.find(glue), std::string::npos);
@@ -289,10 +292,7 @@ TEST(MailxReferenceCases, DiskOnDisklRestartsFromLmgc90sFilesAsLmgc90Does) {
 
 // A DISKL whose arc has no sagitta has no disk (LMGC90 divides by bdyr): lmgc-check's L3018 at the value.
 TEST(MailxReferenceCases, DisklWithoutSagittaIsADegenerateContactor) {
-  const fs::path dir = scratch_dir("mailx_disk_on_diskl_flat");
-  for (const char* entry : {"DATBOX", "command.py"})
-    fs::copy(fs::path(LMGC_SOURCE_DIR) / "reference_cases" / "mailx_disk_on_diskl" / entry, dir / entry,
-             fs::copy_options::recursive);
+  const fs::path dir = copied_case("mailx_disk_on_diskl", "mailx_disk_on_diskl_flat");
   std::string bodies = read_file(dir / "DATBOX" / "BODIES.DAT");
   const std::string arc = "bdyr= 0.4000000D-01";
   ASSERT_NE(bodies.find(arc), std::string::npos);

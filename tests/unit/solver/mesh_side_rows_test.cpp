@@ -5,6 +5,7 @@
 // translation; on rotation they are LMGC90's own (docs/lmgc90-facts/mailx-2d-contact.md §7c).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "solver/model/mesh_contact_2d.hpp"
@@ -20,13 +21,13 @@ Scene2D scene_with(const MeshContactor& tactor) {
   return scene;
 }
 
-// The side's local velocity for the nodes' velocities va, vb.
+// The side's local velocity for the nodes' velocities va, vb (the side's nodes are 0 and 1 here, or
+// any two nodes given the same velocities).
 Vector2d side_velocity(const MeshSideRows& rows, const Vector2d& va, const Vector2d& vb) {
-  const double v[4] = {va.x(), va.y(), vb.x(), vb.y()};
-  Vector2d u = Vector2d::Zero();
-  for (std::size_t k = 0; k < 2; ++k)
-    for (std::size_t e = 0; e < 4; ++e) u(static_cast<Eigen::Index>(k)) += rows.velocity[k][e] * v[e];
-  return u;
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(2 * (std::max(rows.side.nodes[0], rows.side.nodes[1]) + 1));
+  v.segment<2>(2 * rows.side.nodes[0]) = va;
+  v.segment<2>(2 * rows.side.nodes[1]) = vb;
+  return mesh_side_local_velocity(rows, v);
 }
 
 TEST(MeshSideRows, APointsVelocityAndReactionRowsAreItsWeightsTimesTheDirection) {
